@@ -1,0 +1,187 @@
+// The project file, read once at the edge into plain validated structs.
+// Nothing past lib/project sees JSON. Units inside these structs are SI
+// (seconds, metres) except temperatures, which stay in degrees Celsius.
+#pragma once
+
+#include <array>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <variant>
+#include <vector>
+
+namespace frostwall::project {
+
+// ---- soil ------------------------------------------------------------------
+
+struct PhaseProperties {
+  std::array<double, 2> conductivity{};  // [kx, ky] W/(m K); equal when isotropic
+  double heat_capacity = 0.0;            // J/(kg K)
+  bool anisotropic() const { return conductivity[0] != conductivity[1]; }
+};
+
+struct Soil {
+  std::string name;
+  double density = 0.0;  // kg/m3
+  PhaseProperties unfrozen;
+  PhaseProperties frozen;
+  double latent_heat = 0.0;     // J per kg of soil
+  double freezing_point = 0.0;  // degC
+  double freezing_range = 0.0;  // K; latent heat released over [Tf - range, Tf]
+};
+
+// ---- temperatures that may change in time ----------------------------------
+
+// A wall temperature: constant, or [time, degC] points linear in between and
+// held constant outside the first and last point.
+struct TemperatureSchedule {
+  std::vector<std::pair<double, double>> points;  // (seconds, degC), sorted
+  double at(double t_seconds) const;
+  bool constant() const { return points.size() == 1; }
+  static TemperatureSchedule fixed(double degC) { return {{{0.0, degC}}}; }
+};
+
+// ---- boundaries of a plain geometry ------------------------------------------
+
+struct Adiabatic {};
+struct FixedTemperature {
+  TemperatureSchedule temperature;
+};
+using SideCondition = std::variant<Adiabatic, FixedTemperature>;
+
+struct Rectangle {
+  double width = 0.0;   // along x
+  double height = 0.0;  // along y
+  SideCondition left, right, top, bottom;
+};
+
+// ---- shaft layouts -----------------------------------------------------------
+
+enum class Pattern { single, three_hole, four_hole, rings, pipes };
+
+struct Ring {
+  double radius = 0.0;
+  int count = 0;
+  double offset_deg = 0.0;  // angle of the ring's first pipe
+};
+
+struct PipePosition {
+  double x = 0.0, y = 0.0;
+};
+
+struct Layout {
+  Pattern pattern = Pattern::single;
+  // single | three-hole | four-hole: the outer ring (its offset is
+  // start_angle_deg) and, for the double rings, the inner radius.
+  Ring outer_ring;
+  std::optional<double> inner_ring_radius;
+  std::vector<Ring> rings;           // pattern "rings"
+  std::vector<PipePosition> pipes;   // pattern "pipes" (measured)
+};
+
+enum class PipeModel { disc, point };
+
+struct Pipe {
+  double diameter = 0.0;  // outer diameter, m
+  TemperatureSchedule temperature;
+  PipeModel model = PipeModel::disc;
+};
+
+struct Shaft {
+  std::optional<double> excavation_radius;
+};
+
+struct ShaftSection {
+  Layout layout;
+  Shaft shaft;
+  Pipe pipe;
+  double outer_radius = 0.0;  // domain.outer_radius
+};
+
+// ---- what every project has ----------------------------------------------------
+
+struct Domain {
+  double initial_temperature = 0.0;
+  // Far field of a shaft section: fixed temperature, or nullopt = adiabatic.
+  std::optional<double> far_field_temperature;
+};
+
+enum class TimeUnit { s, h, d };
+
+struct TimeSettings {
+  double end = 0.0;                 // seconds
+  TimeUnit unit = TimeUnit::d;      // the unit the user wrote (for output)
+  std::vector<double> snapshots;    // seconds, ascending, each in (0, end]
+  double unit_seconds() const;      // 1, 3600 or 86400
+};
+
+enum class KernelKind { wendland_c2, cubic_spline };
+enum class IntegratorKind { explicit_euler, implicit };
+enum class ConductivityMean { harmonic, arithmetic };
+enum class LaplacianForm { renormalised, plain };
+
+struct Numerics {
+  std::optional<double> spacing;  // m; nullopt = frostwall chooses
+  KernelKind kernel = KernelKind::wendland_c2;
+  double smoothing_ratio = 1.3;   // h / spacing
+  IntegratorKind integrator = IntegratorKind::explicit_euler;
+  double beta = 0.1;              // explicit step: dt = beta h^2 / alpha_max
+  ConductivityMean conductivity_mean = ConductivityMean::harmonic;
+  LaplacianForm laplacian = LaplacianForm::renormalised;
+};
+
+struct Design {
+  std::optional<double> required_thickness;    // m
+  std::optional<double> max_mean_temperature;  // degC
+};
+
+struct Sensor {
+  std::string name;
+  double x = 0.0, y = 0.0;  // m; r/theta inputs are converted on reading
+};
+
+struct Output {
+  std::string directory;  // relative to the working directory
+  bool vtk = true;
+  bool full_ring = true;
+  bool report = true;
+};
+
+struct Project {
+  std::string name;
+  std::string description;
+  std::variant<ShaftSection, Rectangle> geometry;
+  Soil soil;
+  Domain domain;
+  TimeSettings time;
+  Numerics numerics;
+  Design design;
+  std::vector<Sensor> monitoring;
+  Output output;
+  // Physically implausible but computable input (latent heat above that of
+  // pure water, pipe warmer than the freezing point): printed and reported.
+  std::vector<std::string> warnings;
+};
+
+// Every problem found in a project file, one line each, in the form
+// "json.path: what is wrong". Thrown before any work is done.
+class ProjectError : public std::runtime_error {
+ public:
+  explicit ProjectError(std::vector<std::string> problems);
+  const std::vector<std::string>& problems() const { return problems_; }
+
+ private:
+  std::vector<std::string> problems_;
+};
+
+// Reads and validates a project file. Throws ProjectError (never anything
+// else for bad content; an unreadable file is also a ProjectError).
+Project load_project(const std::string& path);
+// The same from text already in memory (tests, the study command).
+Project parse_project(const std::string& json_text);
+
+// Built-in soils: "sand", "clay", "silty_clay". nullopt for other names.
+std::optional<Soil> builtin_soil(const std::string& name);
+
+}  // namespace frostwall::project
