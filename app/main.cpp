@@ -1,0 +1,82 @@
+// The frostwall command. Exit status: 0 done, 2 bad input (nothing
+// written), 1 failure during a run.
+#include <CLI/CLI.hpp>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <fmt/core.h>
+#include <iostream>
+#include <omp.h>
+#include <unistd.h>
+
+#include "project/project.hpp"
+#include "run/run_project.hpp"
+
+namespace {
+
+// Progress goes to a terminal only: quiet in CI and when piped.
+bool show_progress() { return isatty(fileno(stderr)) && std::getenv("CI") == nullptr; }
+
+std::function<void(double, double)> progress_printer(const frostwall::project::TimeSettings& time) {
+  if (!show_progress()) return {};
+  const double unit = time.unit_seconds();
+  const char* unit_name = time.unit == frostwall::project::TimeUnit::d ? "d" : (time.unit == frostwall::project::TimeUnit::h ? "h" : "s");
+  auto start = std::chrono::steady_clock::now();
+  auto last = start;
+  return [=](double t, double t_end) mutable {
+    const auto now = std::chrono::steady_clock::now();
+    if (now - last < std::chrono::milliseconds(200) && t < t_end) return;
+    last = now;
+    const double wall = std::chrono::duration<double>(now - start).count();
+    fmt::print(stderr, "\r  {:.3g} / {:.3g} {} simulated ({:3.0f} %), {:.3g} {}/s  ", t / unit, t_end / unit, unit_name,
+               100.0 * t / t_end, wall > 0 ? t / unit / wall : 0.0, unit_name);
+    if (t >= t_end) fmt::print(stderr, "\n");
+  };
+}
+
+int run_command(const std::string& file) {
+  using namespace frostwall;
+  project::Project p;
+  try {
+    p = project::load_project(file);
+  } catch (const project::ProjectError& e) {
+    for (const auto& line : e.problems()) std::cerr << line << "\n";
+    return 2;
+  }
+  for (const auto& w : p.warnings) std::cerr << "warning: " << w << "\n";
+  run::RunOptions options;
+  options.progress = progress_printer(p.time);
+  options.note = [](const std::string& s) { std::cerr << s << "\n"; };
+  try {
+    run::run_project(p, options);
+  } catch (const project::ProjectError& e) {
+    for (const auto& line : e.problems()) std::cerr << line << "\n";
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "frostwall: run failed: " << e.what() << "\n";
+    return 1;
+  }
+  std::cerr << "wrote " << p.output.directory << "\n";
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"frostwall: design of artificial ground freezing (SPH heat conduction with latent heat)"};
+  app.require_subcommand(1);
+  auto* run = app.add_subcommand("run", "run a project file and write its results");
+  std::string project_file;
+  int threads = 0;
+  run->add_option("project", project_file, "project file (JSON)")->required();
+  app.add_option("--threads", threads, "OpenMP threads (default: all cores)");
+  app.set_version_flag("--version", FROSTWALL_VERSION);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e) == 0 ? 0 : 2;
+  }
+  if (threads > 0) omp_set_num_threads(threads);
+  if (run->parsed()) return run_command(project_file);
+  return 2;
+}

@@ -1,0 +1,20 @@
+// What geometry hands to the solver: the particle cloud (free particles,
+// fixed-temperature particles, mirror planes) and the boundaries the fixed
+// particles belong to.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "sph/particle_set.hpp"
+#include "thermal/boundary.hpp"
+
+namespace frostwall::geometry {
+
+struct Scene {
+  sph::ParticleSet<2> particles;
+  std::vector<thermal::FixedTemperatureBoundary> boundaries;
+  std::vector<std::string> notes;  // e.g. spacing adjusted to fit the sides
+};
+
+}  // namespace frostwall::geometry

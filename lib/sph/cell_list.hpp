@@ -1,0 +1,92 @@
+// Cell-linked list: points binned into square cells of the search radius,
+// so a radius query looks at 3^Dim cells. Built once; particles never move.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include "sph/vec.hpp"
+
+namespace frostwall::sph {
+
+template <int Dim>
+class CellList {
+ public:
+  CellList(const std::vector<Vec<Dim>>& points, double radius) : points_(points), cell_(radius) {
+    lo_ = Vec<Dim>::Constant(0.0);
+    Vec<Dim> hi = lo_;
+    if (!points.empty()) {
+      lo_ = hi = points.front();
+      for (const auto& p : points) {
+        lo_ = lo_.cwiseMin(p);
+        hi = hi.cwiseMax(p);
+      }
+    }
+    for (int d = 0; d < Dim; ++d) dims_[d] = 1 + static_cast<long>((hi[d] - lo_[d]) / cell_);
+    long n_cells = 1;
+    for (int d = 0; d < Dim; ++d) n_cells *= dims_[d];
+    // Counting sort of point indices by cell.
+    start_.assign(n_cells + 1, 0);
+    std::vector<long> cell_of(points.size());
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      cell_of[i] = linear(coords(points[i]));
+      ++start_[cell_of[i] + 1];
+    }
+    for (long c = 0; c < n_cells; ++c) start_[c + 1] += start_[c];
+    sorted_.resize(points.size());
+    std::vector<std::uint32_t> fill(start_.begin(), start_.end() - 1);
+    for (std::size_t i = 0; i < points.size(); ++i) sorted_[fill[cell_of[i]]++] = static_cast<std::uint32_t>(i);
+  }
+
+  // Calls visit(index, distance) for every point within `radius` of x
+  // (radius must not exceed the cell size). Includes a point at x itself.
+  template <class Visit>
+  void for_each_within(const Vec<Dim>& x, double radius, Visit&& visit) const {
+    std::array<long, Dim> c;
+    for (int d = 0; d < Dim; ++d) c[d] = static_cast<long>(std::floor((x[d] - lo_[d]) / cell_));
+    const double r2 = radius * radius;
+    visit_cells(c, 0, std::array<long, Dim>{}, [&](long cell) {
+      for (std::uint32_t k = start_[cell]; k < start_[cell + 1]; ++k) {
+        const std::uint32_t j = sorted_[k];
+        const double d2 = (points_[j] - x).squaredNorm();
+        if (d2 < r2) visit(j, std::sqrt(d2));
+      }
+    });
+  }
+
+ private:
+  std::array<long, Dim> coords(const Vec<Dim>& p) const {
+    std::array<long, Dim> c;
+    for (int d = 0; d < Dim; ++d)
+      c[d] = std::clamp<long>(static_cast<long>((p[d] - lo_[d]) / cell_), 0, dims_[d] - 1);
+    return c;
+  }
+  long linear(const std::array<long, Dim>& c) const {
+    long index = 0;
+    for (int d = Dim - 1; d >= 0; --d) index = index * dims_[d] + c[d];
+    return index;
+  }
+  template <class F>
+  void visit_cells(const std::array<long, Dim>& centre, int d, std::array<long, Dim> c, F&& f) const {
+    if (d == Dim) {
+      f(linear(c));
+      return;
+    }
+    for (long o = -1; o <= 1; ++o) {
+      c[d] = centre[d] + o;
+      if (c[d] < 0 || c[d] >= dims_[d]) continue;
+      visit_cells(centre, d + 1, c, f);
+    }
+  }
+
+  const std::vector<Vec<Dim>>& points_;
+  double cell_;
+  Vec<Dim> lo_;
+  std::array<long, Dim> dims_{};
+  std::vector<std::uint32_t> start_;
+  std::vector<std::uint32_t> sorted_;
+};
+
+}  // namespace frostwall::sph

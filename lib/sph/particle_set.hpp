@@ -1,0 +1,65 @@
+// The particle cloud as geometry hands it to the solver: positions and
+// volumes, which particles are free and which hold a boundary temperature,
+// and the mirror planes that make adiabatic sides. Fields live elsewhere.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "sph/vec.hpp"
+
+namespace frostwall::sph {
+
+// A plane (line in 2-D) through `point` with unit `normal`; reflecting a
+// particle across it makes the plane adiabatic (a symmetry plane).
+template <int Dim>
+struct MirrorPlane {
+  Vec<Dim> point;
+  Vec<Dim> normal;
+  Vec<Dim> reflect(const Vec<Dim>& x) const {
+    return x - 2.0 * (x - point).dot(normal) * normal;
+  }
+  double distance(const Vec<Dim>& x) const { return std::abs((x - point).dot(normal)); }
+};
+
+// Free particles come first (indices [0, n_free)); the rest are fixed-
+// temperature particles whose boundary id indexes the model's boundaries.
+template <int Dim>
+struct ParticleSet {
+  std::vector<Vec<Dim>> position;
+  std::vector<double> volume;
+  std::vector<int> boundary;  // -1 for free particles
+  std::size_t n_free = 0;
+  std::vector<MirrorPlane<Dim>> mirrors;
+  double spacing = 0.0;  // the lattice spacing the cloud was made with
+
+  std::size_t size() const { return position.size(); }
+  bool is_free(std::size_t i) const { return i < n_free; }
+
+  void add(const Vec<Dim>& x, double v, int boundary_id) {
+    position.push_back(x);
+    volume.push_back(v);
+    boundary.push_back(boundary_id);
+  }
+  // Puts free particles first (stable), as the solver expects.
+  void order_free_first();
+};
+
+template <int Dim>
+void ParticleSet<Dim>::order_free_first() {
+  std::vector<std::size_t> order;
+  order.reserve(size());
+  for (std::size_t i = 0; i < size(); ++i)
+    if (boundary[i] < 0) order.push_back(i);
+  n_free = order.size();
+  for (std::size_t i = 0; i < size(); ++i)
+    if (boundary[i] >= 0) order.push_back(i);
+  ParticleSet sorted;
+  sorted.mirrors = mirrors;
+  sorted.spacing = spacing;
+  sorted.n_free = n_free;
+  for (std::size_t i : order) sorted.add(position[i], volume[i], boundary[i]);
+  *this = std::move(sorted);
+}
+
+}  // namespace frostwall::sph

@@ -1,0 +1,12 @@
+// Points and vectors of the particle cloud. Dim is 2 today; the engine is
+// written against Vec<Dim> so a 3-D model is a template argument, not a rewrite.
+#pragma once
+
+#include <Eigen/Core>
+
+namespace frostwall::sph {
+
+template <int Dim>
+using Vec = Eigen::Matrix<double, Dim, 1>;
+
+}  // namespace frostwall::sph

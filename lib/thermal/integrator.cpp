@@ -1,0 +1,17 @@
+#include "thermal/integrator.hpp"
+
+#include "sph/parallel.hpp"
+
+namespace frostwall::thermal {
+
+std::vector<double> ExplicitEuler::advance(ThermalModel& model, double t, double dt) {
+  model.apply_boundaries(t);
+  model.conduction_rate(rate_);
+  std::vector<double> heat = model.boundary_heat_rate();
+  for (double& q : heat) q *= dt;
+  const auto& H = model.enthalpy();
+  sph::for_each_particle(model.free_count(), [&](std::size_t i) { model.set_enthalpy(i, H[i] + dt * rate_[i]); });
+  return heat;
+}
+
+}  // namespace frostwall::thermal

@@ -1,0 +1,43 @@
+// The phase-change law of a soil in enthalpy form (physics.md section 1).
+// Volumetric enthalpy H is zero at the fully frozen end of freezing,
+// T_s = Tf - range; latent heat rho*L is released linearly in temperature
+// over [T_s, Tf] (isothermally at Tf when range = 0):
+//     H < 0            frozen:   T = T_s + H / (rho Cs)
+//     0 <= H <= H_l    freezing: T = T_s + range * H / H_l,  f = H / H_l
+//     H > H_l          unfrozen: T = Tf + (H - H_l) / (rho Cl)
+// with H_l = rho (L + Cm range), Cm = (Cs + Cl)/2 the sensible capacity
+// inside the range. The SPH paper's per-particle latent-heat accumulator is
+// this bookkeeping with range = 0.
+#pragma once
+
+#include <array>
+
+#include "project/project.hpp"
+
+namespace frostwall::thermal {
+
+class PhaseChangeLaw {
+ public:
+  explicit PhaseChangeLaw(const project::Soil& soil);
+
+  double enthalpy(double T) const;
+  double temperature(double H) const;
+  double liquid_fraction(double H) const;
+  // Conductivity along axis d: linear in liquid fraction between the frozen
+  // and the unfrozen value (a freezing particle is a frozen and an unfrozen
+  // share side by side).
+  double conductivity(double f, int axis) const {
+    return k_frozen_[axis] + f * (k_unfrozen_[axis] - k_frozen_[axis]);
+  }
+  bool anisotropic() const;
+  double max_diffusivity() const;  // m2/s, over both phases and axes
+  double freezing_point() const { return Tf_; }
+  double latent_heat_volumetric() const { return rho_L_; }
+
+ private:
+  double Tf_, Ts_, range_;
+  double rho_cs_, rho_cl_, rho_L_, H_l_;
+  std::array<double, 2> k_frozen_, k_unfrozen_;
+};
+
+}  // namespace frostwall::thermal
