@@ -7,13 +7,10 @@
 #include <nlohmann/json.hpp>
 #include <omp.h>
 
-#include "geometry/rectangle.hpp"
+#include "run/plain_model.hpp"
 #include "io/atomic_file.hpp"
 #include "io/point_cloud_vtk.hpp"
 #include "post/front.hpp"
-#include "sph/kernel.hpp"
-#include "sph/laplacian.hpp"
-#include "thermal/integrator.hpp"
 #include "thermal/thermal_model.hpp"
 #include "thermal/time_loop.hpp"
 
@@ -23,10 +20,6 @@ namespace fs = std::filesystem;
 using project::Project;
 
 namespace {
-
-double default_spacing(const project::Rectangle& r) {
-  return std::min(std::max(r.width, r.height) / 200.0, std::min(r.width, r.height) / 4.0);
-}
 
 // Output times: the snapshots, plus a regular series for the time curves.
 std::vector<double> sample_times(const project::TimeSettings& time, std::size_t regular) {
@@ -79,29 +72,13 @@ void run_project(const Project& p, const RunOptions& options) {
   auto note = [&](const std::string& s) {
     if (options.note) options.note(s);
   };
-  if (p.numerics.integrator == project::IntegratorKind::implicit)
-    throw project::ProjectError({"numerics.integrator: 'implicit' is not available in this version; use 'explicit'"});
-  if (!std::holds_alternative<project::Rectangle>(p.geometry))
-    throw project::ProjectError({"layout: shaft sections are not available in this version; use a 'geometry'"});
-  const auto& rect = std::get<project::Rectangle>(p.geometry);
-
-  // ---- particles
-  const double spacing = p.numerics.spacing.value_or(default_spacing(rect));
-  const double h = p.numerics.smoothing_ratio * spacing;
-  geometry::RectangleScene scene = geometry::build_rectangle(rect, spacing, h);
-  for (const auto& n : scene.notes) note(n);
-  const auto face = geometry::cooled_face(rect, scene);
-
-  // ---- model
-  const auto kernel = sph::make_kernel<2>(p.numerics.kernel);
-  thermal::PhaseChangeLaw law(p.soil);
-  sph::LaplacianPairs pairs = sph::build_laplacian_pairs<2>(
-      scene.particles, *kernel, {h, p.numerics.laplacian, law.anisotropic()});
-  const std::size_t pair_count = pairs.pairs();
-  thermal::ThermalModel model(scene.particles.volume, scene.particles.boundary, std::move(pairs), law,
-                              scene.boundaries, {p.numerics.conductivity_mean, p.numerics.laplacian},
-                              p.domain.initial_temperature);
-  thermal::ExplicitEuler integrator(p.numerics.beta, h);
+  PlainModel built = build_plain_model(p);
+  for (const auto& n : built.scene.notes) note(n);
+  const auto& scene = built.scene;
+  const auto& face = built.face;
+  thermal::ThermalModel& model = *built.model;
+  const std::size_t pair_count = model.pairs().pairs();
+  const double h = built.h;
 
   // ---- output
   const fs::path out = p.output.directory;
@@ -127,7 +104,7 @@ void run_project(const Project& p, const RunOptions& options) {
       pvd.push_back({t / unit, stems[k] + ".vtu"});
     }
   };
-  const thermal::TimeLoopResult loop = thermal::run_time_loop(model, integrator, p.time.end, times, observers);
+  const thermal::TimeLoopResult loop = thermal::run_time_loop(model, *built.integrator, p.time.end, times, observers);
   if (p.output.vtk) io::write_pvd(out / "field.pvd", pvd);
 
   // ---- summary
@@ -151,7 +128,7 @@ void run_project(const Project& p, const RunOptions& options) {
         {"integrator", integrator_name(p.numerics.integrator)},
         {"spacing", scene.particles.spacing},
         {"smoothing_length", h},
-        {"kernel", kernel->name()},
+        {"kernel", built.kernel->name()},
         {"time_unit", p.time.unit == project::TimeUnit::s ? "s" : (p.time.unit == project::TimeUnit::h ? "h" : "d")}}},
       {"warnings", p.warnings},
   };

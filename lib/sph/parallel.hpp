@@ -6,10 +6,16 @@
 
 namespace frostwall::sph {
 
+// Below this many particles a loop runs on one thread: the fork/join of a
+// parallel region would cost more than the work, and with more threads
+// than free cores (ctest -j, a study) spinning threads stall each other.
+inline constexpr std::size_t parallel_threshold = 4096;
+
+
 template <class Body>
 void for_each_particle(std::size_t n, Body&& body) {
   const long long count = static_cast<long long>(n);
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n >= parallel_threshold)
   for (long long i = 0; i < count; ++i) body(static_cast<std::size_t>(i));
 }
 
@@ -18,7 +24,7 @@ template <class Body>
 double sum_over_particles(std::size_t n, Body&& body) {
   const long long count = static_cast<long long>(n);
   double total = 0.0;
-#pragma omp parallel for schedule(static) reduction(+ : total)
+#pragma omp parallel for schedule(static) reduction(+ : total) if (n >= parallel_threshold)
   for (long long i = 0; i < count; ++i) total += body(static_cast<std::size_t>(i));
   return total;
 }

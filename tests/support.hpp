@@ -1,0 +1,50 @@
+// Small helpers shared by the verification tests.
+#pragma once
+
+#include <cmath>
+#include <fmt/core.h>
+#include <string>
+#include <vector>
+
+#include "project/project.hpp"
+#include "run/plain_model.hpp"
+#include "thermal/time_loop.hpp"
+
+namespace frostwall::test {
+
+// A rectangle project from its parts (JSON snippets), read by the real loader.
+inline project::Project rectangle_project(double width, double height, const std::string& boundaries,
+                                          const std::string& soil, double initial, double end_s,
+                                          const std::string& numerics) {
+  const std::string text = fmt::format(R"({{
+    "name": "test", "geometry": {{ "type": "rectangle", "width": {}, "height": {}, "boundaries": {} }},
+    "soil": {}, "domain": {{ "initial_temperature": {} }},
+    "time": {{ "end": {}, "unit": "s", "snapshots": [{}] }},
+    "numerics": {}, "output": {{ "directory": "unused" }} }})",
+                                       width, height, boundaries, soil, initial, end_s, end_s, numerics);
+  return project::parse_project(text);
+}
+
+// A soil with unit properties; freezing point and latent heat as given.
+inline std::string unit_soil(double freezing_point, double latent_heat) {
+  return fmt::format(R"({{ "name": "unit", "density": 1, "unfrozen": {{ "conductivity": 1, "heat_capacity": 1 }},
+      "frozen": {{ "conductivity": 1, "heat_capacity": 1 }}, "latent_heat": {}, "freezing_point": {} }})",
+                     latent_heat, freezing_point);
+}
+
+inline std::string numerics(double spacing, const std::string& laplacian = "renormalised") {
+  return fmt::format(R"({{ "spacing": {}, "integrator": "explicit", "laplacian": "{}" }})", spacing, laplacian);
+}
+
+// Marches to each time in `times`, calling at(k) there.
+template <class At>
+std::size_t march(run::PlainModel& m, const std::vector<double>& times, At&& at) {
+  thermal::TimeLoopObservers obs;
+  obs.snapshot = [&](const thermal::ThermalModel&, double, std::size_t k) { at(k); };
+  return thermal::run_time_loop(*m.model, *m.integrator, times.back(), times, obs).steps;
+}
+
+// Observed order of convergence between successive halvings.
+inline double observed_order(double coarse_error, double fine_error) { return std::log2(coarse_error / fine_error); }
+
+}  // namespace frostwall::test
