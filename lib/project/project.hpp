@@ -180,8 +180,13 @@ class ProjectError : public std::runtime_error {
 Project load_project(const std::string& path);
 // The same from text already in memory (tests, the study command).
 Project parse_project(const std::string& json_text);
+// As above; `source` (a file name) names the text in a problem with the text
+// as a whole, such as "not valid JSON". The one-argument form uses "project".
+Project parse_project(const std::string& json_text, const std::string& source);
 
 // Built-in soils: "sand", "clay", "silty_clay". nullopt for other names.
 std::optional<Soil> builtin_soil(const std::string& name);
+// The names builtin_soil knows, in the order of its table.
+std::vector<std::string> builtin_soil_names();
 
 }  // namespace frostwall::project

@@ -1,0 +1,471 @@
+// Reads the project file (shared/spec/project-format.md) into the structs of
+// project.hpp. Every problem is collected before anything is thrown, so a user
+// fixes a file in one round instead of one error per run.
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <numbers>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "project/json_reader.hpp"
+#include "project/project.hpp"
+
+namespace frostwall::project {
+
+using detail::Json;
+using detail::Node;
+
+namespace {
+
+constexpr double seconds_per_day = 86400.0;
+constexpr double pure_water_latent_heat = 334000.0;  // J/kg
+
+std::string join(const std::vector<std::string>& lines) {
+  std::string text;
+  for (const auto& line : lines) text += (text.empty() ? "" : "\n") + line;
+  return text;
+}
+
+// A wall temperature: a number, or [[day, degC], ...] with days ascending.
+TemperatureSchedule read_schedule(const Node& n) {
+  TemperatureSchedule schedule = TemperatureSchedule::fixed(0.0);
+  if (!n.given()) return schedule;
+  if (n.json().is_number()) return TemperatureSchedule::fixed(n.json().get<double>());
+  if (!n.json().is_array()) {
+    n.problem("must be a number or a [[day, degC], ...] schedule, got " + n.type());
+    return schedule;
+  }
+  if (n.json().empty()) {
+    n.problem("must have at least one [day, degC] point");
+    return schedule;
+  }
+  schedule.points.clear();
+  for (std::size_t i = 0; i < n.json().size(); ++i) {
+    const Node point = n[i];
+    const Json& p = point.json();
+    if (!p.is_array() || p.size() != 2 || !p[0].is_number() || !p[1].is_number()) {
+      point.problem("must be a [day, degC] pair, got " + (p.is_array() ? point.shown() : point.type()));
+      continue;
+    }
+    const double day = p[0].get<double>();
+    const double seconds = day * seconds_per_day;
+    if (!schedule.points.empty() && seconds <= schedule.points.back().first)
+      point.problem(fmt::format("days must be ascending, got {} after {}", day,
+                                schedule.points.back().first / seconds_per_day));
+    else
+      schedule.points.emplace_back(seconds, p[1].get<double>());
+  }
+  if (schedule.points.empty()) schedule = TemperatureSchedule::fixed(0.0);
+  return schedule;
+}
+
+// A boundary is "adiabatic" or {"temperature": T}: returns the node of T, or
+// nullopt for adiabatic (and for a bad value, which is reported).
+std::optional<Node> side_temperature(const Node& n) {
+  if (!n.given()) return std::nullopt;
+  const std::string expected = R"((expected "adiabatic" or {"temperature": T}))";
+  if (n.json().is_string()) {
+    const auto name = n.json().get<std::string>();
+    if (name != "adiabatic") n.problem("unknown boundary condition '" + name + "' " + expected);
+    return std::nullopt;
+  }
+  if (!n.json().is_object()) {
+    n.problem("must be \"adiabatic\" or {\"temperature\": T}, got " + n.type());
+    return std::nullopt;
+  }
+  n.object({"temperature"});
+  return n["temperature"].required();
+}
+
+SideCondition read_side(const Node& n) {
+  if (const auto t = side_temperature(n)) return FixedTemperature{read_schedule(*t)};
+  return Adiabatic{};
+}
+
+std::array<double, 2> read_conductivity(const Node& n) {
+  if (!n.given()) return {};
+  if (n.json().is_array()) {
+    if (n.json().size() != 2) {
+      n.problem(fmt::format("must be a number or [kx, ky], got an array of {}", n.json().size()));
+      return {};
+    }
+    return {n[0].required().positive().value_or(0.0), n[1].required().positive().value_or(0.0)};
+  }
+  if (!n.json().is_number()) {
+    n.problem("must be a number or [kx, ky], got " + n.type());
+    return {};
+  }
+  const double k = n.positive().value_or(0.0);
+  return {k, k};
+}
+
+Soil read_soil(const Node& n, std::vector<std::string>& warnings) {
+  Soil soil;
+  if (!n.given()) return soil;
+  if (n.json().is_string()) {
+    const auto name = n.json().get<std::string>();
+    if (auto builtin = builtin_soil(name)) return *builtin;
+    std::string names;
+    for (const auto& known : builtin_soil_names()) names += (names.empty() ? "" : ", ") + known;
+    n.problem("unknown soil '" + name + "' (built-in: " + names + ")");
+    return soil;
+  }
+  if (!n.json().is_object()) {
+    n.problem("must be a built-in soil name or an object, got " + n.type());
+    return soil;
+  }
+  n.object({"name", "density", "unfrozen", "frozen", "latent_heat", "freezing_point", "freezing_range"});
+  soil.name = n["name"].string().value_or("custom soil");
+  soil.density = n["density"].required().positive().value_or(0.0);
+  for (const auto& [key, phase] : {std::pair{"unfrozen", &soil.unfrozen}, std::pair{"frozen", &soil.frozen}}) {
+    const Node p = n[key].required();
+    if (!p.object({"conductivity", "heat_capacity"})) continue;
+    phase->conductivity = read_conductivity(p["conductivity"].required());
+    phase->heat_capacity = p["heat_capacity"].required().positive().value_or(0.0);
+  }
+  // Zero is allowed: a soil without phase change (pure conduction checks).
+  soil.latent_heat = n["latent_heat"].required().non_negative().value_or(0.0);
+  soil.freezing_point = n["freezing_point"].number().value_or(0.0);
+  soil.freezing_range = n["freezing_range"].non_negative().value_or(0.0);
+  if (soil.latent_heat > pure_water_latent_heat)
+    warnings.push_back(fmt::format(
+        "{}: {} J/kg is more than pure water's 334 kJ/kg; probably a slipped decimal point ({}?)",
+        n["latent_heat"].path(), soil.latent_heat, soil.latent_heat / 10));
+  return soil;
+}
+
+// A ring of the layout; the angle of its first pipe is `angle_key`.
+Ring read_ring(const Node& n, std::string_view angle_key) {
+  Ring ring;
+  if (!n.object({"radius", "count", angle_key})) return ring;
+  ring.radius = n["radius"].required().positive().value_or(0.0);
+  ring.count = n["count"].required().count().value_or(0);
+  ring.offset_deg = n[angle_key].number().value_or(0.0);
+  return ring;
+}
+
+Layout read_layout(const Node& n) {
+  Layout layout;
+  if (!n.object({"pattern", "outer_ring", "inner_ring", "rings", "pipes"})) return layout;
+  const Node pattern_node = n["pattern"].required();
+  const auto pattern = pattern_node.choice<Pattern>(
+      "pattern", {{"single", Pattern::single},
+                  {"three-hole", Pattern::three_hole},
+                  {"four-hole", Pattern::four_hole},
+                  {"rings", Pattern::rings},
+                  {"pipes", Pattern::pipes}});
+  if (!pattern) return layout;  // which fields belong depends on the pattern
+  layout.pattern = *pattern;
+  const bool double_ring = *pattern == Pattern::three_hole || *pattern == Pattern::four_hole;
+  const bool ring_pattern = double_ring || *pattern == Pattern::single;
+
+  // A field of another pattern is a mistake, not something to ignore.
+  const auto uses = [&](std::string_view key) {
+    if (key == "outer_ring") return ring_pattern;
+    if (key == "inner_ring") return double_ring;
+    if (key == "rings") return *pattern == Pattern::rings;
+    return *pattern == Pattern::pipes;
+  };
+  for (const auto key : {"outer_ring", "inner_ring", "rings", "pipes"})
+    if (n[key].present() && !uses(key))
+      n[key].problem("not used by pattern '" + pattern_node.json().get<std::string>() + "'");
+
+  if (ring_pattern) {
+    layout.outer_ring = read_ring(n["outer_ring"].required(), "start_angle_deg");
+    if (double_ring) {
+      const Node inner = n["inner_ring"].required();
+      if (inner.object({"radius"})) layout.inner_ring_radius = inner["radius"].required().positive();
+      if (layout.inner_ring_radius && layout.outer_ring.radius > 0 &&
+          *layout.inner_ring_radius >= layout.outer_ring.radius)
+        inner["radius"].problem(fmt::format("must be smaller than the outer ring's radius {}, got {}",
+                                            layout.outer_ring.radius, *layout.inner_ring_radius));
+    }
+  } else if (*pattern == Pattern::rings) {
+    const Node rings = n["rings"].required();
+    const auto size = rings.array();
+    if (size == 0u) rings.problem("must list at least one ring");
+    for (std::size_t i = 0; i < size.value_or(0); ++i)
+      layout.rings.push_back(read_ring(rings[i], "offset_deg"));
+  } else {
+    const Node pipes = n["pipes"].required();
+    const auto size = pipes.array();
+    if (size == 0u) pipes.problem("must list at least one pipe");
+    for (std::size_t i = 0; i < size.value_or(0); ++i) {
+      const Node p = pipes[i];
+      if (!p.object({"x", "y"})) continue;
+      layout.pipes.push_back({p["x"].required().number().value_or(0.0), p["y"].required().number().value_or(0.0)});
+    }
+  }
+  return layout;
+}
+
+// Distance of the farthest pipe centre from the shaft axis.
+double outermost_pipe_radius(const Layout& layout) {
+  double r = layout.outer_ring.radius;
+  for (const auto& ring : layout.rings) r = std::max(r, ring.radius);
+  for (const auto& p : layout.pipes) r = std::max(r, std::hypot(p.x, p.y));
+  return r;
+}
+
+Pipe read_pipe(const Node& n) {
+  Pipe pipe;
+  if (!n.object({"diameter", "temperature", "model"})) return pipe;
+  pipe.diameter = n["diameter"].required().positive().value_or(0.0);
+  pipe.temperature = read_schedule(n["temperature"].required());
+  pipe.model = n["model"].choice<PipeModel>("pipe model", {{"disc", PipeModel::disc}, {"point", PipeModel::point}})
+                   .value_or(PipeModel::disc);
+  return pipe;
+}
+
+// Computable, but such a pipe cannot freeze anything: most likely a sign slip.
+void warn_warm_pipe(const Node& temperature, const TemperatureSchedule& schedule, double freezing_point,
+                    std::vector<std::string>& warnings) {
+  const bool is_schedule = temperature.json().is_array();
+  for (std::size_t i = 0; i < schedule.points.size(); ++i)
+    if (const double t = schedule.points[i].second; t > freezing_point)
+      warnings.push_back(fmt::format("{}: {} degC is above the soil's freezing point ({} degC); "
+                                     "a pipe this warm cannot freeze the ground",
+                                     is_schedule ? temperature[i].path() : temperature.path(), t, freezing_point));
+}
+
+Rectangle read_rectangle(const Node& n) {
+  Rectangle rectangle;
+  if (!n.object({"type", "width", "height", "boundaries"})) return rectangle;
+  n["type"].required().choice<int>("geometry type", {{"rectangle", 0}});
+  rectangle.width = n["width"].required().positive().value_or(0.0);
+  rectangle.height = n["height"].required().positive().value_or(0.0);
+  const Node sides = n["boundaries"].required();
+  if (!sides.object({"left", "right", "top", "bottom"})) return rectangle;
+  for (const auto& [key, side] : {std::pair{"left", &rectangle.left}, std::pair{"right", &rectangle.right},
+                                  std::pair{"top", &rectangle.top}, std::pair{"bottom", &rectangle.bottom}})
+    *side = read_side(sides[key].required());
+  return rectangle;
+}
+
+TimeSettings read_time(const Node& n) {
+  TimeSettings time;
+  if (!n.object({"end", "unit", "snapshots"})) return time;
+  const auto end = n["end"].required().positive();
+  time.unit = n["unit"].required().choice<TimeUnit>("time unit", {{"s", TimeUnit::s}, {"h", TimeUnit::h}, {"d", TimeUnit::d}})
+                  .value_or(TimeUnit::d);
+  const double unit = time.unit_seconds();
+  time.end = end.value_or(0.0) * unit;
+  const Node snapshots = n["snapshots"];
+  if (!snapshots.present()) {
+    time.snapshots = {time.end};  // at least the final state
+    return time;
+  }
+  std::optional<double> previous;  // the last accepted snapshot
+  const std::size_t size = snapshots.array().value_or(0);
+  for (std::size_t i = 0; i < size; ++i) {
+    const Node s = snapshots[i];
+    const auto t = s.number();
+    if (!t) continue;
+    if (*t <= 0 || (end && *t > *end)) {
+      s.problem(fmt::format("must be after 0 and no later than time.end ({}), got {}", end.value_or(0.0), *t));
+    } else if (previous && *t <= *previous) {
+      s.problem(fmt::format("must be ascending, got {} after {}", *t, *previous));
+    } else {
+      time.snapshots.push_back(*t * unit);
+      previous = *t;
+    }
+  }
+  return time;
+}
+
+Numerics read_numerics(const Node& n) {
+  Numerics numerics;
+  if (!n.object({"spacing", "kernel", "smoothing_ratio", "integrator", "beta", "conductivity_mean", "laplacian"}))
+    return numerics;
+  numerics.spacing = n["spacing"].positive();
+  numerics.kernel = n["kernel"].choice<KernelKind>(
+      "kernel", {{"wendland_c2", KernelKind::wendland_c2}, {"cubic_spline", KernelKind::cubic_spline}})
+                        .value_or(numerics.kernel);
+  numerics.smoothing_ratio = n["smoothing_ratio"].positive().value_or(numerics.smoothing_ratio);
+  numerics.integrator = n["integrator"].choice<IntegratorKind>(
+      "integrator", {{"explicit", IntegratorKind::explicit_euler}, {"implicit", IntegratorKind::implicit}})
+                            .value_or(numerics.integrator);
+  numerics.beta = n["beta"].positive().value_or(numerics.beta);
+  numerics.conductivity_mean = n["conductivity_mean"].choice<ConductivityMean>(
+      "conductivity mean", {{"harmonic", ConductivityMean::harmonic}, {"arithmetic", ConductivityMean::arithmetic}})
+                                   .value_or(numerics.conductivity_mean);
+  numerics.laplacian = n["laplacian"].choice<LaplacianForm>(
+      "laplacian", {{"renormalised", LaplacianForm::renormalised}, {"plain", LaplacianForm::plain}})
+                           .value_or(numerics.laplacian);
+  return numerics;
+}
+
+Design read_design(const Node& n) {
+  Design design;
+  if (!n.object({"required_thickness", "max_mean_temperature"})) return design;
+  design.required_thickness = n["required_thickness"].positive();
+  design.max_mean_temperature = n["max_mean_temperature"].number();
+  return design;
+}
+
+std::vector<Sensor> read_monitoring(const Node& n) {
+  std::vector<Sensor> sensors;
+  std::map<std::string, std::string> first_path;  // sensor name -> where it was first given
+  const std::size_t size = n.array().value_or(0);
+  for (std::size_t i = 0; i < size; ++i) {
+    const Node e = n[i];
+    if (!e.object({"name", "r", "theta_deg", "x", "y"})) continue;
+    Sensor sensor;
+    const Node name = e["name"].required();
+    sensor.name = name.string().value_or("");
+    if (!sensor.name.empty()) {
+      if (const auto [it, fresh] = first_path.emplace(sensor.name, e.path()); !fresh)
+        name.problem("duplicate sensor name '" + sensor.name + "' (also " + it->second + ")");
+    }
+    const bool polar = e["r"].present() || e["theta_deg"].present();
+    const bool cartesian = e["x"].present() || e["y"].present();
+    if (polar && cartesian) {
+      e.problem("give either r and theta_deg or x and y, not both");
+    } else if (polar) {
+      const auto r = e["r"].required().non_negative();
+      const auto theta = e["theta_deg"].required().number();
+      if (r && theta) {
+        sensor.x = *r * std::cos(*theta * std::numbers::pi / 180.0);
+        sensor.y = *r * std::sin(*theta * std::numbers::pi / 180.0);
+      }
+    } else if (cartesian) {
+      sensor.x = e["x"].required().number().value_or(0.0);
+      sensor.y = e["y"].required().number().value_or(0.0);
+    } else {
+      e.problem("needs a position: r and theta_deg, or x and y");
+    }
+    sensors.push_back(sensor);
+  }
+  return sensors;
+}
+
+Output read_output(const Node& n) {
+  Output output;
+  if (!n.object({"directory", "vtk", "full_ring", "report"})) return output;
+  output.directory = n["directory"].required().string().value_or("");
+  output.vtk = n["vtk"].boolean().value_or(true);
+  output.full_ring = n["full_ring"].boolean().value_or(true);
+  output.report = n["report"].boolean().value_or(true);
+  return output;
+}
+
+Project read_project(const Node& root) {
+  Project project;
+  root.object({"name", "description", "layout", "shaft", "geometry", "pipe", "soil", "domain", "time",
+               "numerics", "design", "monitoring", "output"});
+  project.name = root["name"].required().string().value_or("");
+  project.description = root["description"].string(true).value_or("");
+
+  // A file without "geometry" is taken as a shaft section: the main job.
+  const Node layout = root["layout"], geometry = root["geometry"];
+  const bool shaft = layout.present() || !geometry.present();
+  if (layout.present() && geometry.present()) geometry.problem(R"(give either "layout" or "geometry", not both)");
+  if (!layout.present() && !geometry.present())
+    layout.problem(R"(required field is missing (give "layout" for a shaft section or "geometry" for a plain geometry))");
+  ShaftSection section;
+  if (layout.present()) section.layout = read_layout(layout);
+  if (geometry.present()) {
+    Rectangle rectangle = read_rectangle(geometry);
+    if (!shaft) project.geometry = std::move(rectangle);
+  }
+  if (shaft) {
+    if (const Node n = root["shaft"]; n.object({"excavation_radius"}))
+      section.shaft.excavation_radius = n["excavation_radius"].positive();
+    section.pipe = read_pipe(root["pipe"].required());
+  }
+
+  project.soil = read_soil(root["soil"].required(), project.warnings);
+  if (shaft && root["pipe"]["temperature"].present())
+    warn_warm_pipe(root["pipe"]["temperature"], section.pipe.temperature, project.soil.freezing_point,
+                   project.warnings);
+
+  const Node domain = root["domain"].required();
+  if (domain.object({"outer_radius", "initial_temperature", "far_field"})) {
+    project.domain.initial_temperature = domain["initial_temperature"].required().number().value_or(0.0);
+    if (shaft) {
+      const Node outer = domain["outer_radius"].required();
+      section.outer_radius = outer.positive().value_or(0.0);
+      const double pipes = outermost_pipe_radius(section.layout);
+      if (section.outer_radius > 0 && section.outer_radius <= pipes)
+        outer.problem(fmt::format("must be larger than the outermost pipe's radius {}, got {}", pipes,
+                                  section.outer_radius));
+      // Default: the far field stays at the initial ground temperature.
+      project.domain.far_field_temperature = project.domain.initial_temperature;
+      if (const Node far = domain["far_field"]; far.present()) {
+        const auto t = side_temperature(far);
+        project.domain.far_field_temperature = t ? t->number() : std::nullopt;
+      }
+    }
+  }
+  if (shaft) {
+    project.geometry = std::move(section);
+  } else {
+    for (const auto& n : {root["shaft"], root["pipe"], domain["outer_radius"], domain["far_field"]})
+      if (n.present()) n.problem(R"(only used with "layout", not with "geometry")");
+  }
+
+  project.time = read_time(root["time"].required());
+  project.numerics = read_numerics(root["numerics"]);
+  if (const double s = project.numerics.smoothing_ratio; s < 1.0 || s > 2.5)
+    project.warnings.push_back(fmt::format(
+        "numerics.smoothing_ratio: {} is outside the usual 1.0..2.5 (too few neighbours below, "
+        "a smeared front above)",
+        s));
+  project.design = read_design(root["design"]);
+  project.monitoring = read_monitoring(root["monitoring"]);
+  project.output = read_output(root["output"].required());
+  return project;
+}
+
+}  // namespace
+
+ProjectError::ProjectError(std::vector<std::string> problems)
+    : std::runtime_error(join(problems)), problems_(std::move(problems)) {}
+
+Project parse_project(const std::string& json_text) { return parse_project(json_text, "project"); }
+
+Project parse_project(const std::string& json_text, const std::string& source) {
+  Json document;
+  try {
+    document = Json::parse(json_text);
+  } catch (const Json::exception& e) {
+    // parse_error, or out_of_range for a number like 1e400. Drop the library's
+    // "[json.exception.parse_error.101] " tag; keep line and column.
+    std::string message = e.what();
+    if (const auto tag_end = message.find("] "); message.starts_with("[json.exception") && tag_end != std::string::npos)
+      message.erase(0, tag_end + 2);
+    throw ProjectError({source + ": not valid JSON: " + message});
+  }
+  if (!document.is_object()) throw ProjectError({source + ": must be a JSON object, got " + document.type_name()});
+
+  std::vector<std::string> problems;
+  Project project;
+  try {
+    project = read_project(Node(&document, "", problems));
+  } catch (const Json::exception& e) {
+    // The readers check types before converting; this is only a safety net so
+    // that bad content can never escape as anything but a ProjectError.
+    problems.push_back(source + ": " + e.what());
+  }
+  if (!problems.empty()) throw ProjectError(std::move(problems));
+  return project;
+}
+
+Project load_project(const std::string& path) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (fs::is_directory(path, ec)) throw ProjectError({path + ": cannot read: is a directory, not a project file"});
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw ProjectError({path + ": cannot read: " + std::strerror(errno)});
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) throw ProjectError({path + ": cannot read: " + std::strerror(errno)});
+  return parse_project(text.str(), path);
+}
+
+}  // namespace frostwall::project

@@ -1,0 +1,96 @@
+// Bad input through the command line: `frostwall run <file>` must stop with
+// exit status 2, print every expected problem line to stderr and leave no
+// output directory behind.
+#include <catch2/catch.hpp>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+const fs::path bad_dir = fs::path(FROSTWALL_SOURCE_DIR) / "tests" / "data" / "bad";
+
+std::vector<std::string> lines_of(const fs::path& file) {
+  std::vector<std::string> lines;
+  std::ifstream in(file);
+  for (std::string line; std::getline(in, line);)
+    if (!line.empty()) lines.push_back(line);
+  return lines;
+}
+
+// A fresh, empty working directory, removed again at the end of the scope.
+struct ScratchDir {
+  fs::path path;
+  ScratchDir() {
+    for (int attempt = 0;; ++attempt) {
+      path = fs::temp_directory_path() /
+             ("frostwall-cli-" + std::to_string(::getpid()) + "-" + std::to_string(attempt));
+      if (fs::create_directory(path)) break;  // false: it already existed
+    }
+  }
+  ~ScratchDir() {
+    std::error_code ignored;
+    fs::remove_all(path, ignored);
+  }
+};
+
+struct Run {
+  int exit_status = -1;
+  std::vector<std::string> stderr_lines;
+};
+
+// Runs `frostwall run <file>` with `dir` as working directory.
+Run run_frostwall(const fs::path& dir, const std::string& file) {
+  const std::string command = "cd '" + dir.string() + "' && '" FROSTWALL_EXE "' run '" + file +
+                              "' >stdout.txt 2>stderr.txt";
+  const int status = std::system(command.c_str());
+  Run run;
+  if (status != -1 && WIFEXITED(status)) run.exit_status = WEXITSTATUS(status);
+  run.stderr_lines = lines_of(dir / "stderr.txt");
+  return run;
+}
+
+bool contains(const std::vector<std::string>& lines, const std::string& line) {
+  return std::find(lines.begin(), lines.end(), line) != lines.end();
+}
+
+}  // namespace
+
+TEST_CASE("bad project files stop the run with status 2 and write nothing", "[cli]") {
+  int cases = 0;
+  for (const auto& entry : fs::directory_iterator(bad_dir)) {
+    if (entry.path().extension() != ".json") continue;
+    ++cases;
+    const std::string name = entry.path().stem().string();
+    const std::string file = entry.path().filename().string();
+    INFO("bad case " << name);
+    ScratchDir dir;
+    fs::copy_file(entry.path(), dir.path / file);
+
+    const Run run = run_frostwall(dir.path, file);
+    CHECK(run.exit_status == 2);
+    for (const auto& expected : lines_of(bad_dir / (name + ".expected"))) {
+      INFO("stderr:\n" << [&] { std::string s; for (const auto& l : run.stderr_lines) s += l + "\n"; return s; }());
+      CHECK(contains(run.stderr_lines, expected));
+    }
+    CHECK_FALSE(fs::exists(dir.path / "out" / ("bad_" + name)));
+    CHECK_FALSE(fs::exists(dir.path / "out"));
+  }
+  CHECK(cases >= 20);
+}
+
+TEST_CASE("a project file that does not exist stops the run with status 2", "[cli]") {
+  ScratchDir dir;
+  const Run run = run_frostwall(dir.path, "missing.json");
+  CHECK(run.exit_status == 2);
+  CHECK(contains(run.stderr_lines, "missing.json: cannot read: No such file or directory"));
+}
