@@ -3,6 +3,8 @@
 // output directory behind.
 #include <catch2/catch.hpp>
 
+#include "temp_dir.hpp"
+
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -27,21 +29,7 @@ std::vector<std::string> lines_of(const fs::path& file) {
   return lines;
 }
 
-// A fresh, empty working directory, removed again at the end of the scope.
-struct ScratchDir {
-  fs::path path;
-  ScratchDir() {
-    for (int attempt = 0;; ++attempt) {
-      path = fs::temp_directory_path() /
-             ("frostwall-cli-" + std::to_string(::getpid()) + "-" + std::to_string(attempt));
-      if (fs::create_directory(path)) break;  // false: it already existed
-    }
-  }
-  ~ScratchDir() {
-    std::error_code ignored;
-    fs::remove_all(path, ignored);
-  }
-};
+using ScratchDir = frostwall::test::TempDir;
 
 struct Run {
   int exit_status = -1;

@@ -22,6 +22,7 @@
 #include <unistd.h>
 
 #include "io/atomic_file.hpp"
+#include "temp_dir.hpp"
 #include "io/point_cloud_vtk.hpp"
 
 namespace fs = std::filesystem;
@@ -29,25 +30,7 @@ using namespace frostwall::io;
 
 namespace {
 
-// A fresh directory per test case, removed afterwards, so parallel ctest runs
-// and leftovers from earlier runs cannot interfere.
-struct TempDir {
-  fs::path path;
-  TempDir() {
-    std::random_device rd;
-    const auto stamp = std::chrono::steady_clock::now().time_since_epoch().count();
-    path = fs::temp_directory_path() /
-           ("frostwall-io-" + std::to_string(::getpid()) + "-" + std::to_string(stamp) + "-" +
-            std::to_string(rd()));
-    fs::create_directories(path);
-  }
-  ~TempDir() {
-    std::error_code ignored;
-    fs::remove_all(path, ignored);
-  }
-  TempDir(const TempDir&) = delete;
-  TempDir& operator=(const TempDir&) = delete;
-};
+using TempDir = frostwall::test::TempDir;
 
 bool has_temporaries(const fs::path& dir) {
   for (const auto& entry : fs::directory_iterator(dir))
