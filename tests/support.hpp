@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "project/project.hpp"
-#include "run/plain_model.hpp"
+#include "run/model.hpp"
 #include "thermal/time_loop.hpp"
 
 namespace frostwall::test {
@@ -38,7 +38,7 @@ inline std::string numerics(double spacing, const std::string& laplacian = "reno
 
 // Marches to each time in `times`, calling at(k) there.
 template <class At>
-std::size_t march(run::PlainModel& m, const std::vector<double>& times, At&& at) {
+std::size_t march(run::Model& m, const std::vector<double>& times, At&& at) {
   thermal::TimeLoopObservers obs;
   obs.snapshot = [&](const thermal::ThermalModel&, double, std::size_t k) { at(k); };
   return thermal::run_time_loop(*m.model, *m.integrator, times.back(), times, obs).steps;
@@ -46,5 +46,37 @@ std::size_t march(run::PlainModel& m, const std::vector<double>& times, At&& at)
 
 // Observed order of convergence between successive halvings.
 inline double observed_order(double coarse_error, double fine_error) { return std::log2(coarse_error / fine_error); }
+
+}  // namespace frostwall::test
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "post/closure.hpp"
+
+namespace frostwall::test {
+
+// A shipped project with a JSON merge patch applied (the loader reads it).
+inline project::Project shipped_project(const std::string& name, const nlohmann::json& patch) {
+  std::ifstream in(std::string(FROSTWALL_SOURCE_DIR) + "/projects/" + name);
+  nlohmann::json j = nlohmann::json::parse(in);
+  j.merge_patch(patch);
+  return project::parse_project(j.dump());
+}
+
+// Closure day of a shaft model, checked after every step (the step is the
+// resolution); the run stops at closure or at t_end.
+inline std::optional<double> closure_day(run::Model& m, double t_end) {
+  const auto& P = m.particles();
+  post::ClosureDetector detector(P.position, m.model->free_count(), P.spacing, m.shaft->far_field_radius);
+  std::optional<double> closed;
+  thermal::TimeLoopObservers obs;
+  obs.after_step = [&](const thermal::ThermalModel& model, double t) {
+    if (!closed && detector.closed(model.liquid_fraction())) closed = t / 86400.0;
+  };
+  obs.finished = [&] { return closed.has_value(); };
+  thermal::run_time_loop(*m.model, *m.integrator, t_end, {t_end}, obs);
+  return closed;
+}
 
 }  // namespace frostwall::test

@@ -22,8 +22,8 @@ double sine_mode_error(double dx, const std::string& laplacian) {
   const double t_end = 0.05;
   auto p = test::rectangle_project(1.0, 1.0, insulated, test::unit_soil(-100.0, 0.0), 5.0, t_end,
                                    test::numerics(dx, laplacian));
-  auto m = run::build_plain_model(p);
-  const auto& x = m.scene.particles.position;
+  auto m = run::build_model(p);
+  const auto& x = m.particles().position;
   auto mode = [&](std::size_t i) { return std::cos(M_PI * x[i][0]) * std::cos(M_PI * x[i][1]); };
   for (std::size_t i = 0; i < m.model->free_count(); ++i) m.model->set_enthalpy(i, m.model->law().enthalpy(5.0 + mode(i)));
   double error = 0.0;
@@ -69,11 +69,11 @@ TEST_CASE("Suddenly cooled half-space follows the erf solution", "[verification]
     auto p = test::rectangle_project(
         1.0, 2 * dx, R"({ "left": { "temperature": 0.0 }, "right": "adiabatic", "top": "adiabatic", "bottom": "adiabatic" })",
         test::unit_soil(-100.0, 0.0), 1.0, t_end, test::numerics(dx));
-    auto m = run::build_plain_model(p);
+    auto m = run::build_model(p);
     double error = 0.0;
     test::march(m, {t_end}, [&](std::size_t) {
       for (std::size_t i = 0; i < m.model->free_count(); ++i) {
-        const double x = m.scene.particles.position[i][0];
+        const double x = m.particles().position[i][0];
         error = std::max(error, std::abs(m.model->temperature()[i] - std::erf(x / (2.0 * std::sqrt(t_end)))));
       }
     });

@@ -51,14 +51,14 @@ NeumannResult solve_neumann(double dx, double lambda) {
       1.5, 2 * dx,
       R"({ "left": { "temperature": 0.1906 }, "right": { "temperature": 1.2 }, "top": "adiabatic", "bottom": "adiabatic" })",
       test::unit_soil(Tf, 1.0), Ti, 0.15, test::numerics(dx));
-  auto m = run::build_plain_model(p);
+  auto m = run::build_model(p);
   NeumannResult r{};
   std::vector<double> times;
   for (int k = 1; k <= 40; ++k) times.push_back(0.025 + k * 0.125 / 40);  // ends on 0.10 (k = 24) and 0.15
   double sum_squares = 0.0;
   test::march(m, times, [&](std::size_t k) {
     const double t = times[k];
-    const auto X = post::frozen_front(m.scene.particles.position, m.model->liquid_fraction(), m.model->free_count(), *m.face);
+    const auto X = post::frozen_front(m.particles().position, m.model->liquid_fraction(), m.model->free_count(), *m.face);
     REQUIRE(X);
     const double exact = 2.0 * lambda * std::sqrt(t);
     const double error = std::abs(*X - exact) / exact;
@@ -68,7 +68,7 @@ NeumannResult solve_neumann(double dx, double lambda) {
       r.front_error[1] = error;
       r.rms_front_error = std::sqrt(sum_squares / times.size());
       for (std::size_t i = 0; i < m.model->free_count(); ++i) {
-        const double x = m.scene.particles.position[i][0];
+        const double x = m.particles().position[i][0];
         if (x > 1.0) continue;  // far field: the semi-infinite solution does not see the far end
         r.max_temperature_error = std::max(r.max_temperature_error,
                                            std::abs(m.model->temperature()[i] - exact_temperature(x, t, lambda)));

@@ -12,6 +12,7 @@
 namespace frostwall::geometry {
 
 struct Scene {
+  virtual ~Scene() = default;
   sph::ParticleSet<2> particles;
   std::vector<thermal::FixedTemperatureBoundary> boundaries;
   std::vector<std::string> notes;  // e.g. spacing adjusted to fit the sides

@@ -280,7 +280,8 @@ TimeSettings read_time(const Node& n) {
 
 Numerics read_numerics(const Node& n) {
   Numerics numerics;
-  if (!n.object({"spacing", "kernel", "smoothing_ratio", "integrator", "beta", "conductivity_mean", "laplacian"}))
+  if (!n.object({"spacing", "kernel", "smoothing_ratio", "integrator", "beta", "conductivity_mean", "laplacian",
+                 "symmetry"}))
     return numerics;
   numerics.spacing = n["spacing"].positive();
   numerics.kernel = n["kernel"].choice<KernelKind>(
@@ -297,6 +298,8 @@ Numerics read_numerics(const Node& n) {
   numerics.laplacian = n["laplacian"].choice<LaplacianForm>(
       "laplacian", {{"renormalised", LaplacianForm::renormalised}, {"plain", LaplacianForm::plain}})
                            .value_or(numerics.laplacian);
+  numerics.use_symmetry = n["symmetry"].choice<bool>("symmetry", {{"auto", true}, {"off", false}})
+                              .value_or(numerics.use_symmetry);
   return numerics;
 }
 

@@ -129,6 +129,9 @@ struct Numerics {
   double beta = 0.1;              // explicit step: dt = beta h^2 / alpha_max
   ConductivityMean conductivity_mean = ConductivityMean::harmonic;
   LaplacianForm laplacian = LaplacianForm::renormalised;
+  // Shaft sections: simulate the smallest mirror-symmetric wedge ("auto"),
+  // or the whole ring ("off"; a check of the wedge, or for asymmetric ground).
+  bool use_symmetry = true;
 };
 
 struct Design {

@@ -7,7 +7,9 @@
 #include <nlohmann/json.hpp>
 #include <omp.h>
 
-#include "run/plain_model.hpp"
+#include "post/closure.hpp"
+#include "run/model.hpp"
+#include "sph/symmetry_group.hpp"
 #include "io/atomic_file.hpp"
 #include "io/point_cloud_vtk.hpp"
 #include "post/front.hpp"
@@ -61,6 +63,25 @@ io::PointCloudFrame frame_of(const sph::ParticleSet<2>& particles, const thermal
   return frame;
 }
 
+// The whole ring for ParaView: every copy of the wedge under its mirror group.
+io::PointCloudFrame full_ring(const io::PointCloudFrame& wedge, const std::vector<sph::MirrorPlane<2>>& mirrors,
+                              double length_scale) {
+  const auto group = sph::symmetry_group(mirrors, length_scale);
+  io::PointCloudFrame ring;
+  ring.fields = wedge.fields;
+  for (auto& field : ring.fields) field.second.clear();
+  for (const auto& g : group) {
+    for (const auto& x : wedge.points) {
+      const sph::Vec<2> y = g(sph::Vec<2>(x[0], x[1]));
+      ring.points.push_back({y[0], y[1], 0.0});
+    }
+    for (std::size_t f = 0; f < ring.fields.size(); ++f)
+      ring.fields[f].second.insert(ring.fields[f].second.end(), wedge.fields[f].second.begin(),
+                                   wedge.fields[f].second.end());
+  }
+  return ring;
+}
+
 const char* integrator_name(project::IntegratorKind k) {
   return k == project::IntegratorKind::implicit ? "implicit" : "explicit";
 }
@@ -72,50 +93,79 @@ void run_project(const Project& p, const RunOptions& options) {
   auto note = [&](const std::string& s) {
     if (options.note) options.note(s);
   };
-  PlainModel built = build_plain_model(p);
-  for (const auto& n : built.scene.notes) note(n);
-  const auto& scene = built.scene;
+  Model built = build_model(p);
+  for (const auto& n : built.scene->notes) note(n);
+  const auto& particles = built.particles();
   const auto& face = built.face;
   thermal::ThermalModel& model = *built.model;
   const std::size_t pair_count = model.pairs().pairs();
   const double h = built.h;
+  const double unit = p.time.unit_seconds();
+
+  // Closure of a shaft section, checked 2000 times over the run (the step
+  // is far finer than needed for it).
+  std::optional<post::ClosureDetector> closure;
+  if (built.shaft)
+    closure.emplace(particles.position, model.free_count(), particles.spacing, built.shaft->far_field_radius);
+  std::optional<double> closure_time;
+  double last_open = 0.0, next_check = 0.0;
 
   // ---- output
   const fs::path out = p.output.directory;
   fs::create_directories(out);
-  const double unit = p.time.unit_seconds();
   const auto stems = snapshot_stems(p.time, "field");
-  std::vector<io::PvdEntry> pvd;
+  std::vector<io::PvdEntry> pvd, ring_pvd;
+  const bool write_ring = p.output.vtk && p.output.full_ring && built.shaft && !particles.mirrors.empty();
   nlohmann::json front = nlohmann::json::array();
   const std::vector<double> times = sample_times(p.time, 200);
   const double heat_before = model.stored_heat();
 
   thermal::TimeLoopObservers observers;
   observers.progress = options.progress;
+  observers.after_step = [&](const thermal::ThermalModel& m, double t) {
+    if (!closure || closure_time || t < next_check) return;
+    if (closure->closed(m.liquid_fraction())) closure_time = t;
+    else last_open = t;
+    next_check = t + p.time.end / 2000.0;
+  };
   observers.snapshot = [&](const thermal::ThermalModel& m, double t, std::size_t) {
     if (face) {
-      const auto x = post::frozen_front(scene.particles.position, m.liquid_fraction(), m.free_count(), *face);
+      const auto x = post::frozen_front(particles.position, m.liquid_fraction(), m.free_count(), *face);
       front.push_back({t / unit, x ? nlohmann::json(*x) : nlohmann::json(nullptr)});
     }
     const auto k = std::lower_bound(p.time.snapshots.begin(), p.time.snapshots.end(), t - 1e-12 * p.time.end) -
                    p.time.snapshots.begin();
     if (p.output.vtk && k < static_cast<long>(stems.size()) && std::abs(p.time.snapshots[k] - t) <= 1e-12 * p.time.end) {
-      io::write_vtu(out / (stems[k] + ".vtu"), frame_of(scene.particles, m));
+      const auto frame = frame_of(particles, m);
+      io::write_vtu(out / (stems[k] + ".vtu"), frame);
       pvd.push_back({t / unit, stems[k] + ".vtu"});
+      if (write_ring) {
+        const std::string ring_file = "ring" + stems[k].substr(5) + ".vtu";
+        io::write_vtu(out / ring_file, full_ring(frame, particles.mirrors, built.shaft->far_field_radius));
+        ring_pvd.push_back({t / unit, ring_file});
+      }
     }
   };
   const thermal::TimeLoopResult loop = thermal::run_time_loop(model, *built.integrator, p.time.end, times, observers);
   if (p.output.vtk) io::write_pvd(out / "field.pvd", pvd);
+  if (write_ring) io::write_pvd(out / "ring.pvd", ring_pvd);
 
   // ---- summary
   const double wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
   nlohmann::json boundary_heat = nlohmann::json::object();
-  for (std::size_t b = 0; b < scene.boundaries.size(); ++b) boundary_heat[scene.boundaries[b].name] = loop.boundary_heat[b];
-  nlohmann::json summary = {
-      {"project", p.name},
-      {"frostwall_version", FROSTWALL_VERSION},
-      {"front", front},
-      {"front_axis", face ? nlohmann::json{{"face", face->side}} : nlohmann::json(nullptr)},
+  for (std::size_t b = 0; b < model.boundaries().size(); ++b)
+    boundary_heat[model.boundaries()[b].name] = loop.boundary_heat[b];
+  nlohmann::json summary = {{"project", p.name}, {"frostwall_version", FROSTWALL_VERSION}};
+  if (built.shaft) {
+    summary["closure_time_days"] = closure_time ? nlohmann::json(*closure_time / 86400.0) : nlohmann::json(nullptr);
+    summary["closure_bracket_days"] = {last_open / 86400.0, closure_time ? nlohmann::json(*closure_time / 86400.0) : nlohmann::json(nullptr)};
+    const auto& w = built.shaft->wedge;
+    summary["wedge"] = {{"mirror_lines", w.mirror_count}, {"start_deg", w.start_angle * 180 / M_PI}, {"angle_deg", w.angle * 180 / M_PI}};
+  } else {
+    summary["front"] = front;
+    summary["front_axis"] = face ? nlohmann::json{{"face", face->side}} : nlohmann::json(nullptr);
+  }
+  summary.update(nlohmann::json{
       {"heat_balance",
        {{"stored_change", model.stored_heat() - heat_before}, {"from_boundaries", boundary_heat}, {"unit", "J/m"}}},
       {"run",
@@ -126,12 +176,12 @@ void run_project(const Project& p, const RunOptions& options) {
         {"wall_seconds", wall_seconds},
         {"threads", omp_get_max_threads()},
         {"integrator", integrator_name(p.numerics.integrator)},
-        {"spacing", scene.particles.spacing},
+        {"spacing", particles.spacing},
         {"smoothing_length", h},
         {"kernel", built.kernel->name()},
         {"time_unit", p.time.unit == project::TimeUnit::s ? "s" : (p.time.unit == project::TimeUnit::h ? "h" : "d")}}},
       {"warnings", p.warnings},
-  };
+  });
   io::write_text_file(out / "summary.json", summary.dump(2) + "\n");
 }
 

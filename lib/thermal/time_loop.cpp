@@ -28,6 +28,7 @@ TimeLoopResult run_time_loop(ThermalModel& model, Integrator& integrator, double
       ++next;
     }
     if (observers.progress) observers.progress(t, t_end);
+    if (observers.finished && observers.finished()) break;
   }
   return result;
 }

@@ -1,0 +1,61 @@
+#include "run/model.hpp"
+
+#include "geometry/layout.hpp"
+#include "geometry/symmetry.hpp"
+#include "sph/laplacian.hpp"
+
+namespace frostwall::run {
+
+double default_spacing(const project::Project& p) {
+  if (const auto* r = std::get_if<project::Rectangle>(&p.geometry))
+    return std::min(std::max(r->width, r->height) / 200.0, std::min(r->width, r->height) / 4.0);
+  // Shaft sections: a pipe disc of 127 mm should be several particles across.
+  const auto& s = std::get<project::ShaftSection>(p.geometry);
+  return std::min(0.025, 0.4 * s.pipe.diameter);
+}
+
+Model build_model(const project::Project& p) {
+  if (p.numerics.integrator == project::IntegratorKind::implicit)
+    throw project::ProjectError({"numerics.integrator: 'implicit' is not available in this version; use 'explicit'"});
+
+  Model m;
+  const double spacing = p.numerics.spacing.value_or(default_spacing(p));
+  m.h = p.numerics.smoothing_ratio * spacing;
+  if (const auto* rect = std::get_if<project::Rectangle>(&p.geometry)) {
+    auto scene = std::make_unique<geometry::RectangleScene>(geometry::build_rectangle(*rect, spacing, m.h));
+    m.face = geometry::cooled_face(*rect, *scene);
+    m.rectangle = scene.get();
+    m.scene = std::move(scene);
+  } else {
+    const auto& section = std::get<project::ShaftSection>(p.geometry);
+    if (const auto problems = geometry::layout_problems(section); !problems.empty())
+      throw project::ProjectError(problems);
+    const auto pipes = geometry::pipe_positions(section.layout);
+    const double start = section.layout.pattern == project::Pattern::pipes
+                             ? std::atan2(pipes.front().y, pipes.front().x)
+                             : (section.layout.pattern == project::Pattern::rings
+                                    ? section.layout.rings.front().offset_deg
+                                    : section.layout.outer_ring.offset_deg) * M_PI / 180.0;
+    const auto wedge = geometry::find_symmetry_wedge(pipes, start);
+    auto scene =
+        std::make_unique<geometry::ShaftScene>(geometry::build_shaft_section(section, p.domain, wedge, spacing, m.h));
+    scene->notes.push_back(geometry::describe(wedge));
+    if (!p.numerics.use_symmetry) {
+      geometry::unfold_to_full_ring(*scene);
+      scene->notes.push_back("symmetry: off (numerics.symmetry): the wedge's particles mirrored around the full ring");
+    }
+    m.shaft = scene.get();
+    m.scene = std::move(scene);
+  }
+  m.kernel = sph::make_kernel<2>(p.numerics.kernel);
+  thermal::PhaseChangeLaw law(p.soil);
+  sph::LaplacianPairs pairs =
+      sph::build_laplacian_pairs<2>(m.particles(), *m.kernel, {m.h, p.numerics.laplacian, law.anisotropic()});
+  m.model = std::make_unique<thermal::ThermalModel>(
+      m.particles().volume, m.particles().boundary, std::move(pairs), law, m.scene->boundaries,
+      thermal::ConductionOptions{p.numerics.conductivity_mean, p.numerics.laplacian}, p.domain.initial_temperature);
+  m.integrator = std::make_unique<thermal::ExplicitEuler>(p.numerics.beta, m.h);
+  return m;
+}
+
+}  // namespace frostwall::run

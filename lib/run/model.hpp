@@ -1,0 +1,38 @@
+// A project assembled for the solver: the particle scene (rectangle or
+// shaft section), the SPH conduction model on it, and its integrator.
+// run_project drives it; tests drive it directly.
+#pragma once
+
+#include <memory>
+#include <optional>
+
+#include "geometry/rectangle.hpp"
+#include "geometry/shaft_section.hpp"
+#include "project/project.hpp"
+#include "sph/kernel.hpp"
+#include "thermal/integrator.hpp"
+#include "thermal/thermal_model.hpp"
+
+namespace frostwall::run {
+
+struct Model {
+  std::unique_ptr<geometry::Scene> scene;
+  const geometry::RectangleScene* rectangle = nullptr;  // plain geometries
+  const geometry::ShaftScene* shaft = nullptr;          // shaft sections
+  std::optional<geometry::CooledFace> face;             // rectangles: where fronts are measured from
+  std::unique_ptr<sph::Kernel> kernel;
+  double h = 0.0;
+  std::unique_ptr<thermal::ThermalModel> model;
+  std::unique_ptr<thermal::Integrator> integrator;
+
+  const sph::ParticleSet<2>& particles() const { return scene->particles; }
+};
+
+// The spacing used when numerics.spacing is not given.
+double default_spacing(const project::Project& p);
+
+// Throws project::ProjectError when the project asks for what this version
+// cannot run (checked before any output is written).
+Model build_model(const project::Project& p);
+
+}  // namespace frostwall::run
