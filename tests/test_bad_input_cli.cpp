@@ -20,6 +20,7 @@ namespace fs = std::filesystem;
 namespace {
 
 const fs::path bad_dir = fs::path(FROSTWALL_SOURCE_DIR) / "tests" / "data" / "bad";
+const fs::path layout_dir = fs::path(FROSTWALL_SOURCE_DIR) / "tests" / "data" / "bad_layout";
 
 std::vector<std::string> lines_of(const fs::path& file) {
   std::vector<std::string> lines;
@@ -53,8 +54,12 @@ bool contains(const std::vector<std::string>& lines, const std::string& line) {
 
 }  // namespace
 
+// bad/: the loader finds the problem; bad_layout/: a valid file whose pipe
+// layout cannot be modelled (found when the section is built, before any
+// output). Both must stop with status 2 and write nothing.
 TEST_CASE("bad project files stop the run with status 2 and write nothing", "[cli]") {
   int cases = 0;
+  for (const fs::path& bad_dir : {bad_dir, layout_dir})
   for (const auto& entry : fs::directory_iterator(bad_dir)) {
     if (entry.path().extension() != ".json") continue;
     ++cases;
@@ -73,7 +78,7 @@ TEST_CASE("bad project files stop the run with status 2 and write nothing", "[cl
     CHECK_FALSE(fs::exists(dir.path / "out" / ("bad_" + name)));
     CHECK_FALSE(fs::exists(dir.path / "out"));
   }
-  CHECK(cases >= 20);
+  CHECK(cases >= 23);
 }
 
 TEST_CASE("a project file that does not exist stops the run with status 2", "[cli]") {
