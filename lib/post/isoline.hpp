@@ -1,0 +1,36 @@
+// Isolines of a field sampled at scattered points (the frozen front is the
+// 0.5 liquid-fraction isoline): marching triangles on the Delaunay
+// triangulation of the points, i.e. the level set of the piecewise-linear
+// interpolant, so a field linear in x is reproduced exactly.
+#pragma once
+
+#include <limits>
+#include <vector>
+
+#include "sph/vec.hpp"
+
+namespace frostwall::post {
+
+// A closed polyline does not repeat its first point at the end.
+struct Polyline {
+  std::vector<sph::Vec<2>> points;
+  bool closed = false;
+};
+
+// Every isoline f = level of the field values[i] given at points[i].
+//  - A value equal to level counts as above (values >= level are "above").
+//  - Each polyline keeps the region below level on its left: a curve around
+//    a region below level runs counterclockwise.
+//  - Triangles whose longest edge exceeds max_edge are skipped, so the long
+//    slivers that the Delaunay triangulation puts across holes (pipe discs
+//    without particles) and concave parts of the hull carry no front; an
+//    isoline then ends there (open). A few particle spacings is a good limit.
+//  - Coincident points are triangulated once (one of their values is used).
+//  - A region above level of zero area (points exactly at level surrounded
+//    by values below) gives a closed polyline of at most two points, or none.
+// Throws std::invalid_argument on mismatched sizes, non-finite values or
+// level, or max_edge not > 0.
+std::vector<Polyline> isolines(const std::vector<sph::Vec<2>>& points, const std::vector<double>& values,
+                               double level, double max_edge = std::numeric_limits<double>::infinity());
+
+}  // namespace frostwall::post
