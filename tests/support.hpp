@@ -64,19 +64,18 @@ inline project::Project shipped_project(const std::string& name, const nlohmann:
   return project::parse_project(j.dump());
 }
 
-// Closure day of a shaft model, checked after every step (the step is the
-// resolution); the run stops at closure or at t_end.
+// Closure day of a shaft model (interpolated between steps); the run
+// stops at closure or at t_end.
 inline std::optional<double> closure_day(run::Model& m, double t_end) {
   const auto& P = m.particles();
   post::ClosureDetector detector(P.position, m.model->free_count(), P.spacing, m.shaft->far_field_radius);
-  std::optional<double> closed;
+  post::ClosureWatch watch(detector);
   thermal::TimeLoopObservers obs;
-  obs.after_step = [&](const thermal::ThermalModel& model, double t) {
-    if (!closed && detector.closed(model.liquid_fraction())) closed = t / 86400.0;
-  };
-  obs.finished = [&] { return closed.has_value(); };
+  obs.after_step = [&](const thermal::ThermalModel& model, double t) { watch.observe(t, model.liquid_fraction(), t_end / 2000.0); };
+  obs.finished = [&] { return watch.closure_time().has_value(); };
   thermal::run_time_loop(*m.model, *m.integrator, t_end, {t_end}, obs);
-  return closed;
+  if (!watch.closure_time()) return std::nullopt;
+  return *watch.closure_time() / 86400.0;
 }
 
 }  // namespace frostwall::test

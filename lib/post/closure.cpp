@@ -1,5 +1,8 @@
 #include "post/closure.hpp"
 
+#include <algorithm>
+#include <numeric>
+
 #include "sph/cell_list.hpp"
 
 namespace frostwall::post {
@@ -10,38 +13,62 @@ ClosureDetector::ClosureDetector(const std::vector<sph::Vec<2>>& position, std::
   const double link = 1.5 * spacing;
   const sph::CellList<2> cells(free, link);
   start_.assign(n_free + 1, 0);
+  far_field_.assign(n_free, 0);
   for (std::size_t i = 0; i < n_free; ++i) {
     cells.for_each_within(free[i], link, [&](std::uint32_t j, double) {
       if (j != i) link_.push_back(j);
     });
     start_[i + 1] = link_.size();
-    if (free[i].norm() > far_field_radius - link) far_field_.push_back(static_cast<std::uint32_t>(i));
+    far_field_[i] = free[i].norm() > far_field_radius - link;
     if (free[i].norm() < free[axis_].norm()) axis_ = static_cast<std::uint32_t>(i);
   }
 }
 
-bool ClosureDetector::closed(const std::vector<double>& f) const {
-  if (f[axis_] <= 0.5) return true;  // the ground at the axis itself froze
-  std::vector<char> reached(start_.size() - 1, 0);
-  std::vector<std::uint32_t> stack;
-  for (std::uint32_t s : far_field_)
-    if (f[s] > 0.5) {
-      reached[s] = 1;
-      stack.push_back(s);
-    }
-  while (!stack.empty()) {
-    const std::uint32_t i = stack.back();
-    stack.pop_back();
-    if (i == axis_) return false;
+double ClosureDetector::bottleneck(const std::vector<double>& f) const {
+  // Kruskal-like: add particles from the most liquid down, joining linked
+  // ones (union-find); the level at which the axis first shares a component
+  // with the far field is the bottleneck.
+  const std::size_t n = start_.size() - 1;
+  std::vector<std::uint32_t> order(n);
+  std::iota(order.begin(), order.end(), 0u);
+  std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return f[a] > f[b]; });
+  std::vector<std::uint32_t> parent(n);
+  std::iota(parent.begin(), parent.end(), 0u);
+  std::vector<char> added(n, 0), reaches_far(n, 0), holds_axis(n, 0);
+  auto root = [&](std::uint32_t i) {
+    while (parent[i] != i) i = parent[i] = parent[parent[i]];
+    return i;
+  };
+  for (std::uint32_t i : order) {
+    added[i] = 1;
+    reaches_far[i] = far_field_[i];
+    holds_axis[i] = i == axis_;
+    std::uint32_t ri = i;
     for (std::size_t e = start_[i]; e < start_[i + 1]; ++e) {
       const std::uint32_t j = link_[e];
-      if (!reached[j] && f[j] > 0.5) {
-        reached[j] = 1;
-        stack.push_back(j);
-      }
+      if (!added[j]) continue;
+      const std::uint32_t rj = root(j);
+      if (rj == ri) continue;
+      parent[rj] = ri;
+      reaches_far[ri] |= reaches_far[rj];
+      holds_axis[ri] |= holds_axis[rj];
     }
+    if (reaches_far[ri] && holds_axis[ri]) return f[i];
   }
-  return true;
+  return 0.0;  // no unfrozen ground joins them at any level
+}
+
+void ClosureWatch::observe(double t, const std::vector<double>& f, double min_interval) {
+  if (closure_ || (t < next_check_ && b_prev_ >= 1.0)) return;
+  next_check_ = t + min_interval;
+  const double b = detector_.bottleneck(f);
+  if (b <= 0.5) {
+    // Linear in time between the last open observation and this one.
+    closure_ = b_prev_ > b ? t_prev_ + (b_prev_ - 0.5) / (b_prev_ - b) * (t - t_prev_) : t;
+    return;
+  }
+  t_prev_ = t;
+  b_prev_ = b;
 }
 
 }  // namespace frostwall::post

@@ -1,13 +1,20 @@
 // Closure (the frozen columns of neighbouring pipes join): the unfrozen
 // ground around the shaft axis is cut off from the far field by frozen
 // ground. On a wedge this is a frozen path from one side to the other; on
-// a full ring, a frozen wall around the shaft. Checked by a flood fill of
-// unfrozen particles (liquid fraction > 0.5) from the far field over the
-// lattice's 8-neighbourhood (links up to 1.5 spacings), so a frozen path
-// one particle thick already closes.
+// a full ring, a frozen wall around the shaft.
+//
+// The detector measures how close that is with one number, the bottleneck
+// liquid fraction b: the largest level such that particles with liquid
+// fraction >= b still connect the axis to the far field (links between
+// particles up to 1.5 spacings apart: the lattice's 8-neighbourhood). The
+// wall is closed when b <= 0.5 (frozen = liquid fraction <= 0.5). b is
+// the liquid fraction of the last particle that keeps the gap open, so it
+// falls continuously while that particle freezes, and the closure time can
+// be interpolated between two steps instead of snapping to one.
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "sph/vec.hpp"
@@ -18,13 +25,33 @@ class ClosureDetector {
  public:
   ClosureDetector(const std::vector<sph::Vec<2>>& position, std::size_t n_free, double spacing,
                   double far_field_radius);
-  bool closed(const std::vector<double>& liquid_fraction) const;
+  double bottleneck(const std::vector<double>& liquid_fraction) const;
+  bool closed(const std::vector<double>& liquid_fraction) const { return bottleneck(liquid_fraction) <= 0.5; }
 
  private:
   std::vector<std::size_t> start_;
   std::vector<std::uint32_t> link_;
-  std::vector<std::uint32_t> far_field_;  // seeds of the flood fill
-  std::uint32_t axis_ = 0;               // the free particle nearest the shaft axis
+  std::vector<char> far_field_;  // 1 for particles next to the far-field circle
+  std::uint32_t axis_ = 0;      // the free particle nearest the shaft axis
+};
+
+// Follows the bottleneck in time and interpolates the instant it crosses 0.5.
+class ClosureWatch {
+ public:
+  explicit ClosureWatch(const ClosureDetector& detector) : detector_(detector) {}
+  // Call after each step with the time and the liquid fraction; cheap while
+  // the gap is wide open (b = 1) only if `every` allows skipping: the
+  // detector runs at least every `min_interval` seconds and at every call
+  // once some particle of the gap is freezing (b < 1).
+  void observe(double t, const std::vector<double>& liquid_fraction, double min_interval);
+  std::optional<double> closure_time() const { return closure_; }
+  // The last time the wall was seen open and the bottleneck then.
+  double last_open_time() const { return t_prev_; }
+
+ private:
+  const ClosureDetector& detector_;
+  std::optional<double> closure_;
+  double t_prev_ = 0.0, b_prev_ = 1.0, next_check_ = 0.0;
 };
 
 }  // namespace frostwall::post

@@ -105,10 +105,11 @@ void run_project(const Project& p, const RunOptions& options) {
   // Closure of a shaft section, checked 2000 times over the run (the step
   // is far finer than needed for it).
   std::optional<post::ClosureDetector> closure;
-  if (built.shaft)
+  std::optional<post::ClosureWatch> closure_watch;
+  if (built.shaft) {
     closure.emplace(particles.position, model.free_count(), particles.spacing, built.shaft->far_field_radius);
-  std::optional<double> closure_time;
-  double last_open = 0.0, next_check = 0.0;
+    closure_watch.emplace(*closure);
+  }
 
   // ---- output
   const fs::path out = p.output.directory;
@@ -123,10 +124,7 @@ void run_project(const Project& p, const RunOptions& options) {
   thermal::TimeLoopObservers observers;
   observers.progress = options.progress;
   observers.after_step = [&](const thermal::ThermalModel& m, double t) {
-    if (!closure || closure_time || t < next_check) return;
-    if (closure->closed(m.liquid_fraction())) closure_time = t;
-    else last_open = t;
-    next_check = t + p.time.end / 2000.0;
+    if (closure_watch) closure_watch->observe(t, m.liquid_fraction(), p.time.end / 2000.0);
   };
   observers.snapshot = [&](const thermal::ThermalModel& m, double t, std::size_t) {
     if (face) {
@@ -157,8 +155,8 @@ void run_project(const Project& p, const RunOptions& options) {
     boundary_heat[model.boundaries()[b].name] = loop.boundary_heat[b];
   nlohmann::json summary = {{"project", p.name}, {"frostwall_version", FROSTWALL_VERSION}};
   if (built.shaft) {
+    const auto closure_time = closure_watch->closure_time();
     summary["closure_time_days"] = closure_time ? nlohmann::json(*closure_time / 86400.0) : nlohmann::json(nullptr);
-    summary["closure_bracket_days"] = {last_open / 86400.0, closure_time ? nlohmann::json(*closure_time / 86400.0) : nlohmann::json(nullptr)};
     const auto& w = built.shaft->wedge;
     summary["wedge"] = {{"mirror_lines", w.mirror_count}, {"start_deg", w.start_angle * 180 / M_PI}, {"angle_deg", w.angle * 180 / M_PI}};
   } else {
