@@ -1,0 +1,126 @@
+#include "post/field_sampler.hpp"
+
+#include <algorithm>
+#include <limits>
+#include <stdexcept>
+
+#include "sph/cell_list.hpp"
+#include "sph/laplacian.hpp"
+#include "sph/parallel.hpp"
+
+namespace frostwall::post {
+
+struct FieldSampler::Cloud {
+  const sph::Kernel* kernel = nullptr;
+  double h = 0.0;
+  std::size_t n_particles = 0;
+  std::vector<Vec2> points;            // real particles, then images
+  std::vector<std::uint32_t> source;   // particle a point carries the value of
+  std::vector<double> volume;          // V of the source
+  std::unique_ptr<sph::CellList<2>> cells;
+};
+
+FieldSampler::FieldSampler(const sph::ParticleSet<2>& particles, const sph::Kernel& kernel, double h)
+    : cloud_(std::make_unique<Cloud>()) {
+  if (!(h > 0.0)) throw std::invalid_argument("field sampler: smoothing length must be > 0");
+  auto& c = *cloud_;
+  c.kernel = &kernel;
+  c.h = h;
+  c.n_particles = particles.size();
+  const double reach = sph::Kernel::support_factor * h;
+  // mirror_images keeps images within its reach of a free particle; a sample
+  // point is up to about a spacing from the nearest free particle (between
+  // a wedge side and the first lattice row), so reach further by a spacing
+  // or an image at the rim of its support would be missed.
+  const double spacing = particles.spacing > 0.0 ? particles.spacing : h;
+  const auto images = sph::mirror_images(particles, reach + spacing);
+  c.points = particles.position;
+  c.points.insert(c.points.end(), images.position.begin(), images.position.end());
+  c.source.resize(c.points.size());
+  for (std::size_t j = 0; j < particles.size(); ++j) c.source[j] = static_cast<std::uint32_t>(j);
+  std::copy(images.source.begin(), images.source.end(), c.source.begin() + particles.size());
+  c.volume.resize(c.points.size());
+  for (std::size_t k = 0; k < c.points.size(); ++k) c.volume[k] = particles.volume[c.source[k]];
+  c.cells = std::make_unique<sph::CellList<2>>(c.points, reach);
+}
+
+FieldSampler::~FieldSampler() = default;
+FieldSampler::FieldSampler(FieldSampler&&) noexcept = default;
+FieldSampler& FieldSampler::operator=(FieldSampler&&) noexcept = default;
+
+std::size_t FieldSampler::particle_count() const { return cloud_->n_particles; }
+double FieldSampler::support() const { return sph::Kernel::support_factor * cloud_->h; }
+
+std::vector<std::pair<std::uint32_t, double>> FieldSampler::weights(const Vec2& x) const {
+  const auto& c = *cloud_;
+  std::vector<std::pair<std::uint32_t, double>> w;
+  double total = 0.0;
+  c.cells->for_each_within(x, support(), [&](std::uint32_t k, double r) {
+    const double wk = c.kernel->value(r, c.h) * c.volume[k];
+    if (wk <= 0.0) return;
+    w.emplace_back(c.source[k], wk);
+    total += wk;
+  });
+  if (w.empty()) return w;
+  // A particle and its images are one value: fold them into one weight.
+  std::sort(w.begin(), w.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::size_t out = 0;
+  for (std::size_t k = 0; k < w.size(); ++k) {
+    if (out > 0 && w[out - 1].first == w[k].first) w[out - 1].second += w[k].second;
+    else w[out++] = w[k];
+  }
+  w.resize(out);
+  for (auto& [j, wj] : w) wj /= total;
+  return w;
+}
+
+double FieldSampler::value(const Vec2& x, const std::vector<double>& field) const {
+  const auto& c = *cloud_;
+  if (field.size() != c.n_particles)
+    throw std::invalid_argument("field sampler: the field must have one value per particle");
+  double sum = 0.0, total = 0.0;
+  c.cells->for_each_within(x, support(), [&](std::uint32_t k, double r) {
+    const double wk = c.kernel->value(r, c.h) * c.volume[k];
+    sum += wk * field[c.source[k]];
+    total += wk;
+  });
+  return total > 0.0 ? sum / total : std::numeric_limits<double>::quiet_NaN();
+}
+
+std::vector<double> FieldSampler::sample(const std::vector<Vec2>& where, const std::vector<double>& field) const {
+  if (field.size() != cloud_->n_particles)
+    throw std::invalid_argument("field sampler: the field must have one value per particle");
+  std::vector<double> out(where.size());
+  sph::for_each_particle(where.size(), [&](std::size_t i) { out[i] = value(where[i], field); });
+  return out;
+}
+
+PointProbe::PointProbe(const FieldSampler& sampler, std::vector<Vec2> where)
+    : where_(std::move(where)), particle_count_(sampler.particle_count()) {
+  std::vector<std::vector<std::pair<std::uint32_t, double>>> rows(where_.size());
+  sph::for_each_particle(where_.size(), [&](std::size_t i) { rows[i] = sampler.weights(where_[i]); });
+  start_.assign(where_.size() + 1, 0);
+  for (std::size_t i = 0; i < rows.size(); ++i) start_[i + 1] = start_[i] + rows[i].size();
+  index_.reserve(start_.back());
+  weight_.reserve(start_.back());
+  for (const auto& row : rows)
+    for (const auto& [j, w] : row) {
+      index_.push_back(j);
+      weight_.push_back(w);
+    }
+}
+
+std::vector<double> PointProbe::operator()(const std::vector<double>& field) const {
+  if (field.size() != particle_count_)
+    throw std::invalid_argument("point probe: the field must have one value per particle");
+  std::vector<double> out(where_.size(), std::numeric_limits<double>::quiet_NaN());
+  for (std::size_t i = 0; i < where_.size(); ++i) {
+    if (start_[i] == start_[i + 1]) continue;
+    double sum = 0.0;
+    for (std::size_t e = start_[i]; e < start_[i + 1]; ++e) sum += weight_[e] * field[index_[e]];
+    out[i] = sum;
+  }
+  return out;
+}
+
+}  // namespace frostwall::post

@@ -1,0 +1,178 @@
+#include "post/wall_extent.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+
+namespace frostwall::post {
+
+namespace {
+
+constexpr double frozen_level = 0.5;
+
+struct Samples {
+  std::vector<double> r, v;
+};
+
+// The finite samples, checked for size and order.
+Samples finite_samples(const std::vector<double>& r, const std::vector<double>& v, const char* what) {
+  if (r.size() != v.size()) throw std::invalid_argument(std::string(what) + ": one value per radius expected");
+  for (std::size_t i = 1; i < r.size(); ++i)
+    if (!(r[i] > r[i - 1])) throw std::invalid_argument(std::string(what) + ": radii must ascend");
+  Samples s;
+  for (std::size_t i = 0; i < r.size(); ++i)
+    if (std::isfinite(v[i])) {
+      s.r.push_back(r[i]);
+      s.v.push_back(v[i]);
+    }
+  return s;
+}
+
+// The piecewise-linear interpolant at x, clamped to the end values.
+double interpolate(const Samples& s, double x) {
+  if (x <= s.r.front()) return s.v.front();
+  if (x >= s.r.back()) return s.v.back();
+  const std::size_t k = std::upper_bound(s.r.begin(), s.r.end(), x) - s.r.begin();  // r[k-1] <= x < r[k]
+  const double t = (x - s.r[k - 1]) / (s.r[k] - s.r[k - 1]);
+  return s.v[k - 1] + t * (s.v[k] - s.v[k - 1]);
+}
+
+// Where the segment from (ra, fa) to (rb, fb) crosses the frozen level
+// (one end frozen, the other not).
+double crossing(double ra, double fa, double rb, double fb) {
+  return ra + (frozen_level - fa) / (fb - fa) * (rb - ra);
+}
+
+}  // namespace
+
+FrozenStretch frozen_stretch(const std::vector<double>& r, const std::vector<double>& liquid_fraction,
+                             double ring_radius) {
+  Samples s = finite_samples(r, liquid_fraction, "frozen_stretch");
+  FrozenStretch none;
+  if (s.r.empty() || !(ring_radius >= s.r.front() && ring_radius <= s.r.back())) return none;
+  // Put the ring radius in as a sample: the interpolant is unchanged, and the
+  // walk outward from it needs no special first segment.
+  const std::size_t m = std::lower_bound(s.r.begin(), s.r.end(), ring_radius) - s.r.begin();
+  if (s.r[m] != ring_radius) {
+    const double f_ring = interpolate(s, ring_radius);
+    s.r.insert(s.r.begin() + m, ring_radius);
+    s.v.insert(s.v.begin() + m, f_ring);
+  }
+  if (s.v[m] > frozen_level) return none;
+
+  double inner = s.r.front();
+  for (std::size_t i = m; i > 0; --i)
+    if (s.v[i - 1] > frozen_level) {
+      inner = crossing(s.r[i - 1], s.v[i - 1], s.r[i], s.v[i]);
+      break;
+    }
+  double outer = s.r.back();
+  for (std::size_t i = m; i + 1 < s.r.size(); ++i)
+    if (s.v[i + 1] > frozen_level) {
+      outer = crossing(s.r[i], s.v[i], s.r[i + 1], s.v[i + 1]);
+      break;
+    }
+  return {inner, outer, outer - inner};
+}
+
+std::optional<double> mean_over_frozen(const std::vector<double>& r, const std::vector<double>& liquid_fraction,
+                                       const std::vector<double>& temperature, const FrozenStretch& stretch) {
+  if (liquid_fraction.size() != r.size())
+    throw std::invalid_argument("mean_over_frozen: one liquid fraction per radius expected");
+  if (!stretch.frozen()) return std::nullopt;
+  const Samples T = finite_samples(r, temperature, "mean_over_frozen");
+  if (T.r.empty()) return std::nullopt;
+  const double a = *stretch.inner, b = *stretch.outer;
+  if (!(b > a)) return interpolate(T, a);
+  // Trapezoids over the end points and the samples strictly between them.
+  double integral = 0.0, r_prev = a, T_prev = interpolate(T, a);
+  for (std::size_t i = 0; i < T.r.size(); ++i) {
+    if (T.r[i] <= a || T.r[i] >= b) continue;
+    integral += 0.5 * (T_prev + T.v[i]) * (T.r[i] - r_prev);
+    r_prev = T.r[i];
+    T_prev = T.v[i];
+  }
+  integral += 0.5 * (T_prev + interpolate(T, b)) * (b - r_prev);
+  return integral / (b - a);
+}
+
+int RayFan::rays_needed(double angle, double ring_radius, double spacing) {
+  if (!(spacing > 0.0)) throw std::invalid_argument("rays_needed: spacing must be > 0");
+  const double arcs = std::ceil(angle * ring_radius / spacing - 1e-9);
+  if (angle >= 2.0 * std::numbers::pi - 1e-12) return std::max(2, static_cast<int>(arcs));
+  return std::max(2, static_cast<int>(arcs) + 1);
+}
+
+double RayFan::ray_angle(int k) const {
+  if (rays <= 1) return start_angle;
+  const bool full_circle = angle >= 2.0 * std::numbers::pi - 1e-12;
+  return start_angle + k * angle / (full_circle ? rays : rays - 1);
+}
+
+std::vector<double> RayFan::radii() const {
+  if (!(dr > 0.0) || !(r_max >= r_min)) throw std::invalid_argument("ray fan: need dr > 0 and r_max >= r_min");
+  std::vector<double> r;
+  const long n = static_cast<long>(std::floor((r_max - r_min) / dr + 1e-9));
+  for (long i = 0; i <= n; ++i) r.push_back(r_min + i * dr);
+  if (r.back() < r_max - 1e-9 * dr) r.push_back(r_max);  // the ray always reaches r_max
+  return r;
+}
+
+std::vector<Vec2> RayFan::points() const {
+  const std::vector<double> r = radii();
+  std::vector<Vec2> p;
+  p.reserve(static_cast<std::size_t>(rays) * r.size());
+  for (int k = 0; k < rays; ++k) {
+    const double phi = ray_angle(k);
+    const Vec2 e(std::cos(phi), std::sin(phi));
+    for (double ri : r) p.push_back(ri * e);
+  }
+  return p;
+}
+
+std::vector<double> RayFan::on_ray(const std::vector<double>& fan_values, int k) const {
+  const std::size_t n = radii().size();
+  if (fan_values.size() != n * static_cast<std::size_t>(rays) || k < 0 || k >= rays)
+    throw std::invalid_argument("ray fan: values must be given at every point of the fan");
+  return {fan_values.begin() + k * n, fan_values.begin() + (k + 1) * n};
+}
+
+WallExtents wall_extents(const RayFan& fan, const std::vector<double>& liquid_fraction_on_fan, double ring_radius) {
+  const std::vector<double> r = fan.radii();
+  WallExtents w;
+  w.rays.reserve(fan.rays);
+  for (int k = 0; k < fan.rays; ++k) {
+    w.rays.push_back(frozen_stretch(r, fan.on_ray(liquid_fraction_on_fan, k), ring_radius));
+    if (k == 0 || w.rays.back().thickness < w.min_thickness) {
+      w.min_thickness = w.rays.back().thickness;
+      w.thinnest_ray = k;
+    }
+  }
+  return w;
+}
+
+namespace {
+std::vector<Vec2> last_ray(const RayFan& fan) {
+  const std::vector<Vec2> all = fan.points();
+  const std::size_t n = fan.radii().size();
+  return {all.end() - n, all.end()};
+}
+}  // namespace
+
+WallGauge::WallGauge(const FieldSampler& sampler, RayFan fan, double ring_radius)
+    : fan_(fan), ring_radius_(ring_radius), fan_probe_(sampler, fan.points()), OB_probe_(sampler, last_ray(fan)) {}
+
+WallReading WallGauge::measure(const std::vector<double>& liquid_fraction,
+                               const std::vector<double>& temperature) const {
+  WallReading reading;
+  const std::vector<double> f = fan_probe_(liquid_fraction);
+  reading.extents = wall_extents(fan_, f, ring_radius_);
+  const int OB = fan_.rays - 1;
+  reading.mean_temperature_OB =
+      mean_over_frozen(fan_.radii(), fan_.on_ray(f, OB), OB_probe_(temperature), reading.extents.OB());
+  return reading;
+}
+
+}  // namespace frostwall::post

@@ -1,0 +1,103 @@
+// Where the frozen wall is along rays from the shaft axis: on each ray, the
+// frozen stretch (liquid fraction <= 0.5) that contains the pipe ring, its
+// inner and outer radius and thickness = outer - inner; the summary's
+// `wall` entries (OA, OB, min_thickness, mean_temperature_OB) come from a
+// fan of such rays across the wedge.
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "post/field_sampler.hpp"
+
+namespace frostwall::post {
+
+// inner/outer are null (and thickness 0) when the ray is not frozen at the
+// ring radius: before closure on OB, where the ring runs between two pipes.
+struct FrozenStretch {
+  std::optional<double> inner, outer;
+  double thickness = 0.0;
+  bool frozen() const { return inner.has_value(); }
+};
+
+// The frozen stretch of one ray, sampled at ascending radii r with liquid
+// fraction f there. The ray is taken piecewise linear between samples, so
+// the ends are where that interpolant crosses 0.5 (not the nearest sample),
+// and the ring radius is frozen when the interpolant is <= 0.5 there.
+// Samples with a non-finite f (inside a pipe disc, beyond the particles)
+// are dropped: the interpolant bridges them, so a pipe's hole counts as
+// frozen when the ground on both sides is. A stretch that runs to the end
+// of the sampled ray ends at that sample's radius. Null when ring_radius is
+// outside the sampled range. Throws std::invalid_argument on mismatched
+// sizes or radii not ascending.
+FrozenStretch frozen_stretch(const std::vector<double>& r, const std::vector<double>& liquid_fraction,
+                             double ring_radius);
+
+// Mean of T over the stretch, (1 / thickness) * integral of T dr by the
+// trapezoid rule on the samples inside it, with T interpolated linearly at
+// its ends (exact for T linear in r). T at the single radius for a stretch
+// of zero length; null when nothing is frozen. Non-finite T samples are
+// dropped, like non-finite f in frozen_stretch. The liquid fraction the
+// stretch came from is only checked for size.
+std::optional<double> mean_over_frozen(const std::vector<double>& r, const std::vector<double>& liquid_fraction,
+                                       const std::vector<double>& temperature, const FrozenStretch& stretch);
+
+// Rays from the shaft axis across the wedge: ray k at start_angle +
+// k * angle / (rays - 1), so the first ray is OA and the last OB (a full
+// circle, angle >= 2 pi, uses angle / rays so no ray repeats); each sampled
+// at the same radii r_min, r_min + dr, ..., r_max.
+struct RayFan {
+  double start_angle = 0.0;  // rad
+  double angle = 0.0;        // rad
+  int rays = 2;
+  double r_min = 0.0, r_max = 0.0, dr = 0.0;
+
+  // A single ring's wall is thinnest on OB by symmetry (midway between two
+  // pipes), but with two rings, or pipes at their measured (off-design)
+  // positions, the thinnest section can lie anywhere in the wedge, and OA
+  // and OB alone would miss it. So the fan is dense: the arc between two
+  // rays at the ring radius is at most one particle spacing, finer than
+  // anything the particle field resolves (use the outermost ring's radius).
+  static int rays_needed(double angle, double ring_radius, double spacing);
+
+  double ray_angle(int k) const;
+  std::vector<double> radii() const;
+  // Every sample point, ray after ray: ray k's sample i is at k * radii().size() + i.
+  std::vector<Vec2> points() const;
+  // Ray k's values out of values given at points().
+  std::vector<double> on_ray(const std::vector<double>& fan_values, int k) const;
+};
+
+struct WallExtents {
+  std::vector<FrozenStretch> rays;  // one per ray of the fan
+  double min_thickness = 0.0;       // 0 while some ray is not frozen at the ring
+  int thinnest_ray = 0;             // the first ray with min_thickness
+  const FrozenStretch& OA() const { return rays.front(); }
+  const FrozenStretch& OB() const { return rays.back(); }
+};
+
+// liquid_fraction_on_fan: values at fan.points().
+WallExtents wall_extents(const RayFan& fan, const std::vector<double>& liquid_fraction_on_fan, double ring_radius);
+
+// One snapshot's wall entry of the summary.
+struct WallReading {
+  WallExtents extents;
+  std::optional<double> mean_temperature_OB;
+};
+
+// A fan whose sample weights are computed once, then read at every snapshot.
+class WallGauge {
+ public:
+  WallGauge(const FieldSampler& sampler, RayFan fan, double ring_radius);
+  const RayFan& fan() const { return fan_; }
+  // Fields over all particles (free then fixed).
+  WallReading measure(const std::vector<double>& liquid_fraction, const std::vector<double>& temperature) const;
+
+ private:
+  RayFan fan_;
+  double ring_radius_;
+  PointProbe fan_probe_;
+  PointProbe OB_probe_;
+};
+
+}  // namespace frostwall::post
