@@ -49,7 +49,12 @@ TEST_CASE("A run writes VTK snapshots that VTK reads back, and summary.json", "[
   vtkDataArray* f = grid->GetPointData()->GetArray("liquid_fraction");
   vtkDataArray* volume = grid->GetPointData()->GetArray("volume");
   for (vtkIdType i = 0; i < grid->GetNumberOfPoints(); ++i) {
-    if (boundary->GetTuple1(i) >= 0) CHECK(T->GetTuple1(i) == -10.0);
+    // The face row holds -10 C; layers beyond it hold the antisymmetric
+    // extension of the warmer ground, so they are colder.
+    if (boundary->GetTuple1(i) >= 0) {
+      if (std::abs(grid->GetPoint(i)[0]) < 1e-12) CHECK(T->GetTuple1(i) == -10.0);
+      else CHECK(T->GetTuple1(i) < -10.0);
+    }
     CHECK(f->GetTuple1(i) >= 0.0);
     CHECK(f->GetTuple1(i) <= 1.0);
     CHECK(volume->GetTuple1(i) == Approx(1e-4));

@@ -71,10 +71,20 @@ RectangleScene build_rectangle(const project::Rectangle& rect, double spacing, d
     for (double x : xs) {
       const std::array<bool, 4> beyond{x < X.free.front() - 1e-12 * X.spacing, x > X.free.back() + 1e-12 * X.spacing,
                                        y < Y.free.front() - 1e-12 * Y.spacing, y > Y.free.back() + 1e-12 * Y.spacing};
-      int b = -1;
+      int b = -1, owner = -1, count = 0;
       for (int s = 3; s >= 0; --s)
-        if (beyond[s]) b = id[s];
-      P.add(sph::Vec<2>(x, y), volume, b);
+        if (beyond[s]) {
+          b = id[s];
+          owner = s;
+          ++count;
+        }
+      // The point this layer particle mirrors across its face (the face row
+      // and corner particles beyond two faces hold the wall temperature).
+      sph::Vec<2> reflected = sph::ParticleSet<2>::on_wall();
+      const double wall[4] = {0.0, rect.width, 0.0, rect.height};
+      if (count == 1 && std::abs((owner < 2 ? x : y) - wall[owner]) > 1e-9 * X.spacing)
+        reflected = owner < 2 ? sph::Vec<2>(2 * wall[owner] - x, y) : sph::Vec<2>(x, 2 * wall[owner] - y);
+      P.add(sph::Vec<2>(x, y), volume, b, reflected);
     }
   using V = sph::Vec<2>;
   if (!is_fixed(rect.left)) P.mirrors.push_back({V(0, 0), V(1, 0)});

@@ -77,7 +77,7 @@ ShaftScene build_shaft_section(const project::ShaftSection& section, const proje
       const Point q = point(x);
       if (outermost.bounded_side(q) != CGAL::ON_BOUNDED_SIDE) continue;
       if (far_field.bounded_side(q) != CGAL::ON_BOUNDED_SIDE) {
-        if (scene.far_field_boundary >= 0) P.add(x, volume, scene.far_field_boundary);
+        if (scene.far_field_boundary >= 0) P.add(x, volume, scene.far_field_boundary, x * (2.0 * R / x.norm() - 1.0));
         continue;
       }
       bool in_pipe = false;
@@ -110,7 +110,9 @@ ShaftScene build_shaft_section(const project::ShaftSection& section, const proje
       for (long m = 0; m < count; ++m) {
         const double phi = radial + (m + 0.5) * 2.0 * std::numbers::pi / count;
         const Vec<2> x = c + rho * Vec<2>(std::cos(phi), std::sin(phi));
-        if (keep(x)) P.add(x, 2.0 * std::numbers::pi * rho / count * dx, scene.pipe_boundary);
+        // Reflected across the pipe wall: radius 2a - rho from the centre.
+        const Vec<2> reflected = l == 0 ? sph::ParticleSet<2>::on_wall() : Vec<2>(c + (2.0 * a - rho) / rho * (x - c));
+        if (keep(x)) P.add(x, 2.0 * std::numbers::pi * rho / count * dx, scene.pipe_boundary, reflected);
       }
     }
   }
@@ -138,7 +140,7 @@ void unfold_to_full_ring(ShaftScene& scene) {
     for (std::size_t i = 0; i < wedge.size(); ++i) {
       const sph::Vec<2> y = g(wedge.position[i]);
       if (!seen.emplace(std::make_pair(std::llround(y[0] / grid), std::llround(y[1] / grid)), true).second) continue;
-      ring.add(y, wedge.volume[i], wedge.boundary[i]);
+      ring.add(y, wedge.volume[i], wedge.boundary[i], g(wedge.reflection[i]));
     }
   ring.order_free_first();
   scene.particles = std::move(ring);

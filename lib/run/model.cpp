@@ -3,6 +3,7 @@
 #include "geometry/layout.hpp"
 #include "geometry/symmetry.hpp"
 #include "sph/laplacian.hpp"
+#include "sph/wall_extrapolation.hpp"
 
 namespace frostwall::run {
 
@@ -53,7 +54,8 @@ Model build_model(const project::Project& p) {
       sph::build_laplacian_pairs<2>(m.particles(), *m.kernel, {m.h, p.numerics.laplacian, law.anisotropic()});
   m.model = std::make_unique<thermal::ThermalModel>(
       m.particles().volume, m.particles().boundary, std::move(pairs), law, m.scene->boundaries,
-      thermal::ConductionOptions{p.numerics.conductivity_mean, p.numerics.laplacian}, p.domain.initial_temperature);
+      thermal::ConductionOptions{p.numerics.conductivity_mean, p.numerics.laplacian}, p.domain.initial_temperature,
+      sph::build_wall_extrapolation(m.particles(), *m.kernel, m.h));
   m.integrator = std::make_unique<thermal::ExplicitEuler>(p.numerics.beta, m.h);
   return m;
 }

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstddef>
+#include <limits>
 #include <vector>
 
 #include "sph/vec.hpp"
@@ -24,11 +25,17 @@ struct MirrorPlane {
 
 // Free particles come first (indices [0, n_free)); the rest are fixed-
 // temperature particles whose boundary id indexes the model's boundaries.
+// A fixed particle beyond its wall also knows its reflection across the
+// wall, the point inside the ground it mirrors (NaN for a particle on the
+// wall itself): its temperature is the wall's, extended antisymmetrically,
+// 2 T_wall - T(reflection), so the wall sits where the geometry puts it
+// (holding the layers at T_wall moves it by a fraction of a spacing).
 template <int Dim>
 struct ParticleSet {
   std::vector<Vec<Dim>> position;
   std::vector<double> volume;
   std::vector<int> boundary;  // -1 for free particles
+  std::vector<Vec<Dim>> reflection;  // fixed particles: see above; free: NaN
   std::size_t n_free = 0;
   std::vector<MirrorPlane<Dim>> mirrors;
   double spacing = 0.0;  // the lattice spacing the cloud was made with
@@ -36,10 +43,12 @@ struct ParticleSet {
   std::size_t size() const { return position.size(); }
   bool is_free(std::size_t i) const { return i < n_free; }
 
-  void add(const Vec<Dim>& x, double v, int boundary_id) {
+  static Vec<Dim> on_wall() { return Vec<Dim>::Constant(std::numeric_limits<double>::quiet_NaN()); }
+  void add(const Vec<Dim>& x, double v, int boundary_id, const Vec<Dim>& reflected = on_wall()) {
     position.push_back(x);
     volume.push_back(v);
     boundary.push_back(boundary_id);
+    reflection.push_back(reflected);
   }
   // Puts free particles first (stable), as the solver expects.
   void order_free_first();
@@ -58,7 +67,7 @@ void ParticleSet<Dim>::order_free_first() {
   sorted.mirrors = mirrors;
   sorted.spacing = spacing;
   sorted.n_free = n_free;
-  for (std::size_t i : order) sorted.add(position[i], volume[i], boundary[i]);
+  for (std::size_t i : order) sorted.add(position[i], volume[i], boundary[i], reflection[i]);
   *this = std::move(sorted);
 }
 

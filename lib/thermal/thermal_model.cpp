@@ -7,13 +7,14 @@ namespace frostwall::thermal {
 ThermalModel::ThermalModel(std::vector<double> volume, std::vector<int> boundary_id,
                            sph::LaplacianPairs pairs, PhaseChangeLaw law,
                            std::vector<FixedTemperatureBoundary> boundaries, ConductionOptions options,
-                           double initial_temperature)
+                           double initial_temperature, sph::WallExtrapolation beyond_wall)
     : volume_(std::move(volume)),
       boundary_id_(std::move(boundary_id)),
       pairs_(std::move(pairs)),
       law_(law),
       boundaries_(std::move(boundaries)),
       options_(options),
+      beyond_wall_(std::move(beyond_wall)),
       anisotropic_(law_.anisotropic()) {
   sph::flush_denormals_to_zero();
   const std::size_t n = volume_.size();
@@ -40,10 +41,15 @@ void ThermalModel::set_state(std::size_t i, double H) {
 void ThermalModel::set_enthalpy(std::size_t i, double H) { set_state(i, H); }
 
 void ThermalModel::apply_boundaries(double t) {
-  std::vector<double> H_wall(boundaries_.size());
-  for (std::size_t b = 0; b < boundaries_.size(); ++b)
-    H_wall[b] = law_.enthalpy(boundaries_[b].temperature.at(t));
-  for (std::size_t i = pairs_.n_free; i < size(); ++i) set_state(i, H_wall[boundary_id_[i]]);
+  std::vector<double> T_wall(boundaries_.size());
+  for (std::size_t b = 0; b < boundaries_.size(); ++b) T_wall[b] = boundaries_[b].temperature.at(t);
+  const std::size_t n = pairs_.n_free;
+  const bool extend = !beyond_wall_.row_start.empty();
+  for (std::size_t i = n; i < size(); ++i) {
+    const double Tw = T_wall[boundary_id_[i]];
+    const double T = !extend || beyond_wall_.on_wall(i - n) ? Tw : 2.0 * Tw - beyond_wall_.value(i - n, T_);
+    set_state(i, law_.enthalpy(T));
+  }
 }
 
 double ThermalModel::pair_conductivity(double ki, double kj) const {

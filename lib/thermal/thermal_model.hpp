@@ -9,6 +9,7 @@
 
 #include "project/project.hpp"
 #include "sph/laplacian.hpp"
+#include "sph/wall_extrapolation.hpp"
 #include "thermal/boundary.hpp"
 #include "thermal/phase_change.hpp"
 
@@ -26,9 +27,11 @@ class ThermalModel {
  public:
   // volume and boundary_id cover all particles (free first, then fixed);
   // boundary_id[i] indexes `boundaries` for fixed particles.
+  // `beyond_wall` gives the fixed particles' antisymmetric extension; when
+  // empty every fixed particle holds its wall's temperature.
   ThermalModel(std::vector<double> volume, std::vector<int> boundary_id, sph::LaplacianPairs pairs,
                PhaseChangeLaw law, std::vector<FixedTemperatureBoundary> boundaries,
-               ConductionOptions options, double initial_temperature);
+               ConductionOptions options, double initial_temperature, sph::WallExtrapolation beyond_wall = {});
 
   std::size_t size() const { return volume_.size(); }
   std::size_t free_count() const { return pairs_.n_free; }
@@ -36,7 +39,8 @@ class ThermalModel {
   const sph::LaplacianPairs& pairs() const { return pairs_; }
   const std::vector<FixedTemperatureBoundary>& boundaries() const { return boundaries_; }
 
-  // Fixed particles take their boundary's temperature at time t.
+  // Fixed particles take their boundary's temperature at time t (on the
+  // wall), or its antisymmetric extension of the current field (beyond).
   void apply_boundaries(double t);
   // rate[i] = dH_i/dt for free particles (rate is resized to free_count()).
   void conduction_rate(std::vector<double>& rate) const;
@@ -65,6 +69,7 @@ class ThermalModel {
   PhaseChangeLaw law_;
   std::vector<FixedTemperatureBoundary> boundaries_;
   ConductionOptions options_;
+  sph::WallExtrapolation beyond_wall_;
   bool anisotropic_;
   std::vector<double> H_, T_, f_, k_;
   // Pairs whose neighbour is a fixed particle: (row, pair index).
