@@ -12,6 +12,11 @@
 
 #include "post/isoline.hpp"
 #include "radial_reference.hpp"
+#include "run/run_project.hpp"
+#include "temp_dir.hpp"
+#include <vtkNew.h>
+#include <vtkPolyData.h>
+#include <vtkXMLPolyDataReader.h>
 #include "support.hpp"
 
 using namespace frostwall;
@@ -23,15 +28,18 @@ struct FrontCircle {
   double mean_radius, spread;
 };
 
-FrontCircle single_pipe_front(double spacing, double days) {
-  const json patch = {
+json single_pipe(double spacing, double days) {
+  return {
       {"layout", {{"pattern", "pipes"}, {"pipes", json::array({{{"x", 0.0}, {"y", 0.0}}})}, {"outer_ring", nullptr}}},
       {"shaft", nullptr},
       {"domain", {{"outer_radius", 1.2}}},
       {"design", nullptr},
       {"numerics", {{"spacing", spacing}, {"integrator", "explicit"}}},
       {"time", {{"end", days}, {"unit", "d"}, {"snapshots", json::array({days})}}}};
-  auto m = run::build_model(test::shipped_project("single_ring_sand.json", patch));
+}
+
+FrontCircle single_pipe_front(double spacing, double days) {
+  auto m = run::build_model(test::shipped_project("single_ring_sand.json", single_pipe(spacing, days)));
   REQUIRE(m.shaft->wedge.mirror_count == 0);
   test::march(m, {days * 86400.0}, [](std::size_t) {});
   const auto lines = post::isolines(m.particles().position, m.model->liquid_fraction(), 0.5, 3 * spacing);
@@ -68,4 +76,31 @@ TEST_CASE("One pipe alone: a circular front at the radial solution's radius", "[
   }
   CHECK(errors.back() < 0.02);
   CHECK(errors.back() < errors.front());
+}
+
+// The wall extent on OA (Shepard-interpolated liquid fraction along the
+// ray) and the front curve written to interface_XXXX.vtp (isoline on the
+// Delaunay triangulation) are two independent measures of one front: for a
+// single pipe both give its radius, within a fraction of the spacing.
+TEST_CASE("One pipe alone: the OA extent matches the radius of the front curve", "[results][single_pipe]") {
+  const double spacing = 0.04;
+  test::TempDir dir("frostwall-pipe");
+  json patch = single_pipe(spacing, 10.0);
+  patch["output"] = {{"directory", (dir.path / "out").string()}, {"vtk", false}};
+  run::run_project(test::shipped_project("single_ring_sand.json", patch), {});
+  std::ifstream in(dir.path / "out" / "summary.json");
+  const json s = json::parse(in);
+  const double OA_outer = s["wall"][0]["OA"]["outer"];
+
+  vtkNew<vtkXMLPolyDataReader> reader;
+  reader->SetFileName((dir.path / "out" / std::string(s["interface"][0]["file"])).c_str());
+  reader->Update();
+  vtkPolyData* curve = reader->GetOutput();
+  REQUIRE(curve->GetNumberOfLines() == 1);
+  double sum = 0.0;
+  for (vtkIdType i = 0; i < curve->GetNumberOfPoints(); ++i) sum += std::hypot(curve->GetPoint(i)[0], curve->GetPoint(i)[1]);
+  const double radius = sum / curve->GetNumberOfPoints();
+  fmt::print("\nOne pipe, day 10, spacing {}: OA outer extent {:.4f} m, front curve mean radius {:.4f} m\n", spacing,
+             OA_outer, radius);
+  CHECK(std::abs(OA_outer - radius) < 0.5 * spacing);
 }

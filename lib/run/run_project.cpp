@@ -9,6 +9,7 @@
 
 #include "post/closure.hpp"
 #include "run/model.hpp"
+#include "run/shaft_results.hpp"
 #include "sph/symmetry_group.hpp"
 #include "io/atomic_file.hpp"
 #include "io/point_cloud_vtk.hpp"
@@ -119,6 +120,8 @@ void run_project(const Project& p, const RunOptions& options) {
   const bool write_ring = p.output.vtk && p.output.full_ring && built.shaft && !particles.mirrors.empty();
   nlohmann::json front = nlohmann::json::array();
   const std::vector<double> times = sample_times(p.time, 200);
+  std::unique_ptr<ShaftResults> results;
+  if (built.shaft) results = std::make_unique<ShaftResults>(p, built);
   const double heat_before = model.stored_heat();
 
   thermal::TimeLoopObservers observers;
@@ -127,13 +130,16 @@ void run_project(const Project& p, const RunOptions& options) {
     if (closure_watch) closure_watch->observe(t, m.liquid_fraction(), p.time.end / 2000.0);
   };
   observers.snapshot = [&](const thermal::ThermalModel& m, double t, std::size_t) {
+    if (results) results->sample(t, m);
     if (face) {
       const auto x = post::frozen_front(particles.position, m.liquid_fraction(), m.free_count(), *face);
       front.push_back({t / unit, x ? nlohmann::json(*x) : nlohmann::json(nullptr)});
     }
     const auto k = std::lower_bound(p.time.snapshots.begin(), p.time.snapshots.end(), t - 1e-12 * p.time.end) -
                    p.time.snapshots.begin();
-    if (p.output.vtk && k < static_cast<long>(stems.size()) && std::abs(p.time.snapshots[k] - t) <= 1e-12 * p.time.end) {
+    const bool is_snapshot = k < static_cast<long>(stems.size()) && std::abs(p.time.snapshots[k] - t) <= 1e-12 * p.time.end;
+    if (results && is_snapshot) results->snapshot(t, m, out, stems[k]);
+    if (p.output.vtk && is_snapshot) {
       const auto frame = frame_of(particles, m);
       io::write_vtu(out / (stems[k] + ".vtu"), frame);
       pvd.push_back({t / unit, stems[k] + ".vtu"});
@@ -153,17 +159,21 @@ void run_project(const Project& p, const RunOptions& options) {
   nlohmann::json boundary_heat = nlohmann::json::object();
   for (std::size_t b = 0; b < model.boundaries().size(); ++b)
     boundary_heat[model.boundaries()[b].name] = loop.boundary_heat[b];
-  nlohmann::json summary = {{"project", p.name}, {"frostwall_version", FROSTWALL_VERSION}};
+  // ordered_json: the keys stay in the contract's order.
+  nlohmann::ordered_json summary = {{"project", p.name}, {"frostwall_version", FROSTWALL_VERSION}};
   if (built.shaft) {
     const auto closure_time = closure_watch->closure_time();
     summary["closure_time_days"] = closure_time ? nlohmann::json(*closure_time / 86400.0) : nlohmann::json(nullptr);
+    const nlohmann::json parts = results->finish(out);
+    for (const char* key : {"wall", "design", "monitoring", "interface"})
+      if (parts.contains(key)) summary[key] = parts[key];
     const auto& w = built.shaft->wedge;
     summary["wedge"] = {{"mirror_lines", w.mirror_count}, {"start_deg", w.start_angle * 180 / M_PI}, {"angle_deg", w.angle * 180 / M_PI}};
   } else {
     summary["front"] = front;
     summary["front_axis"] = face ? nlohmann::json{{"face", face->side}} : nlohmann::json(nullptr);
   }
-  summary.update(nlohmann::json{
+  summary.update(nlohmann::ordered_json{
       {"heat_balance",
        {{"stored_change", model.stored_heat() - heat_before}, {"from_boundaries", boundary_heat}, {"unit", "J/m"}}},
       {"run",

@@ -1,0 +1,233 @@
+#include "run/shaft_results.hpp"
+
+#include <cmath>
+#include <fmt/core.h>
+#include <numbers>
+
+#include "io/atomic_file.hpp"
+#include "io/polyline_vtk.hpp"
+#include "post/isoline.hpp"
+#include "sph/laplacian.hpp"
+#include "sph/symmetry_group.hpp"
+
+namespace frostwall::run {
+
+namespace {
+constexpr double day = 86400.0;
+using nlohmann::json;
+
+json or_null(const std::optional<double>& v) { return v ? json(*v) : json(nullptr); }
+json stretch_json(const post::FrozenStretch& s) {
+  return {{"inner", or_null(s.inner)}, {"outer", or_null(s.outer)}, {"thickness", s.thickness}};
+}
+std::string csv_number(const std::optional<double>& v) { return v ? fmt::format("{:.6g}", *v) : ""; }
+}  // namespace
+
+InterfacePlanes interface_planes(const std::vector<geometry::Pipe2>& pipes) {
+  InterfacePlanes p;
+  const auto& first = pipes.front();
+  p.OA = std::atan2(first.y, first.x);
+  p.ring_radius = std::hypot(first.x, first.y);
+  double gap = 2 * std::numbers::pi;  // to the next pipe of the same ring, CCW
+  for (const auto& q : pipes) {
+    if (&q == &first || q.ring != first.ring) continue;
+    double a = std::atan2(q.y, q.x) - p.OA;
+    while (a <= 1e-12) a += 2 * std::numbers::pi;
+    gap = std::min(gap, a);
+  }
+  p.OB = p.OA + 0.5 * gap;
+  return p;
+}
+
+ShaftResults::ShaftResults(const project::Project& p, const Model& m)
+    : project_(p), model_(m), planes_(interface_planes(m.shaft->pipes)), sampler_(m.particles(), *m.kernel, m.h) {
+  const auto& shaft = *m.shaft;
+  const double dx = m.particles().spacing, R = shaft.far_field_radius;
+  // The fan over the simulated wedge finds the weakest ray; a second gauge
+  // with just OA and OB gives their extents and OB's mean temperature.
+  post::RayFan fan{shaft.wedge.start_angle, shaft.wedge.angle,
+                   post::RayFan::rays_needed(shaft.wedge.angle, planes_.ring_radius, dx), 0.0, R, 0.5 * dx};
+  fan_gauge_ = std::make_unique<post::WallGauge>(sampler_, fan, planes_.ring_radius);
+  planes_gauge_ = std::make_unique<post::WallGauge>(
+      sampler_, post::RayFan{planes_.OA, planes_.OB - planes_.OA, 2, 0.0, R, 0.5 * dx}, planes_.ring_radius);
+
+  // Profiles every 0.05 m along OA and OB (the paper's Fig. 5).
+  std::vector<sph::Vec<2>> on_OA, on_OB;
+  for (double r = 0.0; r <= R + 1e-9; r += 0.05) {
+    profile_radii_.push_back(r);
+    on_OA.emplace_back(r * std::cos(planes_.OA), r * std::sin(planes_.OA));
+    on_OB.emplace_back(r * std::cos(planes_.OB), r * std::sin(planes_.OB));
+  }
+  profile_OA_ = std::make_unique<post::PointProbe>(sampler_, on_OA);
+  profile_OB_ = std::make_unique<post::PointProbe>(sampler_, on_OB);
+
+  // Sensors anywhere in the section: mapped into the wedge by its symmetry.
+  const auto group = sph::symmetry_group(m.particles().mirrors, R);
+  std::vector<sph::Vec<2>> where;
+  for (const auto& s : p.monitoring) {
+    sph::Vec<2> x(s.x, s.y), inside = x;
+    for (const auto& g : group)
+      if (geometry::inside_wedge(shaft.wedge, g(x))) {
+        inside = g(x);
+        break;
+      }
+    where.push_back(inside);
+  }
+  sensors_ = std::make_unique<post::PointProbe>(sampler_, where);
+  sensor_readings_.resize(p.monitoring.size());
+
+  // Front curves: wedge particles with their images; the full ring as copies.
+  const auto& P = m.particles();
+  curve_points_ = P.position;
+  for (std::uint32_t i = 0; i < P.size(); ++i) curve_source_.push_back(i);
+  const auto images = sph::mirror_images(P, 3.0 * dx);
+  curve_points_.insert(curve_points_.end(), images.position.begin(), images.position.end());
+  curve_source_.insert(curve_source_.end(), images.source.begin(), images.source.end());
+  if (p.output.full_ring && !P.mirrors.empty())
+    for (const auto& g : group)
+      for (std::uint32_t i = 0; i < P.size(); ++i) {
+        ring_points_.push_back(g(P.position[i]));
+        ring_source_.push_back(i);
+      }
+}
+
+ShaftResults::~ShaftResults() = default;
+
+ShaftResults::Reading ShaftResults::read(double t, const thermal::ThermalModel& model) const {
+  const auto fan = fan_gauge_->measure(model.liquid_fraction(), model.temperature());
+  const auto planes = planes_gauge_->measure(model.liquid_fraction(), model.temperature());
+  return {t / day, planes.extents.OA(), planes.extents.OB(), fan.extents.min_thickness, planes.mean_temperature_OB};
+}
+
+void ShaftResults::sample(double t, const thermal::ThermalModel& model) {
+  series_.push_back(read(t, model));
+  const auto T = (*sensors_)(model.temperature());
+  for (std::size_t s = 0; s < T.size(); ++s) sensor_readings_[s].emplace_back(t / day, T[s]);
+}
+
+void ShaftResults::snapshot(double t, const thermal::ThermalModel& model, const std::filesystem::path& out,
+                            const std::string& stem) {
+  snapshots_.push_back(read(t, model));
+  profiles_OA_.push_back((*profile_OA_)(model.temperature()));
+  profiles_OB_.push_back((*profile_OB_)(model.temperature()));
+
+  // The 0.5 liquid-fraction isoline, kept inside the wedge.
+  const double dx = model_.particles().spacing;
+  auto values = [&](const std::vector<std::uint32_t>& source) {
+    std::vector<double> v(source.size());
+    for (std::size_t k = 0; k < source.size(); ++k) v[k] = model.liquid_fraction()[source[k]];
+    return v;
+  };
+  const auto& wedge = model_.shaft->wedge;
+  std::vector<post::Polyline> kept;
+  for (const auto& line : post::isolines(curve_points_, values(curve_source_), 0.5, 3.0 * dx)) {
+    post::Polyline piece;
+    auto flush = [&] {
+      if (piece.points.size() > 1) kept.push_back(piece);
+      piece = {};
+    };
+    for (const auto& x : line.points) {
+      if (geometry::inside_wedge(wedge, x)) piece.points.push_back(x);
+      else flush();
+    }
+    const bool whole = piece.points.size() == line.points.size();
+    if (whole) piece.closed = line.closed;
+    flush();
+  }
+  const std::string file = "interface" + stem.substr(5) + ".vtp";
+  io::write_vtp(out / file, kept);
+  json entry = {{"day", t / day}, {"file", file}};
+  if (!ring_points_.empty()) {
+    const std::string ring_file = "interface_ring" + stem.substr(5) + ".vtp";
+    io::write_vtp(out / ring_file, post::isolines(ring_points_, values(ring_source_), 0.5, 3.0 * dx));
+    entry["full_ring_file"] = ring_file;
+  }
+  interface_.push_back(entry);
+}
+
+json ShaftResults::finish(const std::filesystem::path& out) const {
+  json result;
+  // ---- wall: one entry per snapshot
+  json wall = json::array();
+  for (const auto& r : snapshots_)
+    wall.push_back({{"day", r.day}, {"OA", stretch_json(r.OA)}, {"OB", stretch_json(r.OB)},
+                    {"min_thickness", r.min_thickness}, {"mean_temperature_OB", or_null(r.mean_temperature_OB)}});
+  result["wall"] = wall;
+
+  // ---- design: the first time both targets hold, thickness interpolated
+  const auto& design = project_.design;
+  if (design.required_thickness || design.max_mean_temperature) {
+    auto meets = [&](const Reading& r) {
+      const bool thick = !design.required_thickness || r.min_thickness >= *design.required_thickness;
+      const bool cold = !design.max_mean_temperature ||
+                        (r.mean_temperature_OB && *r.mean_temperature_OB <= *design.max_mean_temperature);
+      return thick && cold;
+    };
+    std::optional<double> reached;
+    for (std::size_t k = 0; k < series_.size() && !reached; ++k) {
+      if (!meets(series_[k])) continue;
+      reached = series_[k].day;
+      // Where the thickness is what turned true, interpolate its crossing.
+      if (k > 0 && design.required_thickness) {
+        const auto& a = series_[k - 1];
+        const auto& b = series_[k];
+        Reading a_thick = a;
+        a_thick.min_thickness = b.min_thickness;
+        if (meets(a_thick) && b.min_thickness > a.min_thickness)
+          reached = a.day + (*design.required_thickness - a.min_thickness) / (b.min_thickness - a.min_thickness) *
+                                (b.day - a.day);
+      }
+    }
+    result["design"] = {{"required_thickness", or_null(design.required_thickness)},
+                        {"max_mean_temperature", or_null(design.max_mean_temperature)},
+                        {"reached_day", or_null(reached)},
+                        {"pass", reached.has_value()}};
+  }
+
+  // ---- monitoring
+  json monitoring = json::object();
+  for (std::size_t s = 0; s < project_.monitoring.size(); ++s) {
+    json series = json::array();
+    for (const auto& [d, T] : sensor_readings_[s]) series.push_back({d, T});
+    monitoring[project_.monitoring[s].name] = series;
+  }
+  result["monitoring"] = monitoring;
+  result["interface"] = interface_;
+  result["ob_angle_deg"] = planes_.OB * 180.0 / std::numbers::pi;
+
+  // ---- CSV files
+  std::string csv =
+      "day,OA_inner_m,OA_outer_m,OA_thickness_m,OB_inner_m,OB_outer_m,OB_thickness_m,min_thickness_m,"
+      "mean_temperature_OB_C\n";
+  for (const auto& r : series_)
+    csv += fmt::format("{:.6g},{},{},{:.6g},{},{},{:.6g},{:.6g},{}\n", r.day, csv_number(r.OA.inner),
+                       csv_number(r.OA.outer), r.OA.thickness, csv_number(r.OB.inner), csv_number(r.OB.outer),
+                       r.OB.thickness, r.min_thickness, csv_number(r.mean_temperature_OB));
+  io::write_text_file(out / "wall.csv", csv);
+  auto profile_csv = [&](const std::vector<std::vector<double>>& profiles) {
+    std::string text = "r_m";
+    for (const auto& r : snapshots_) text += fmt::format(",T_day_{:g}_C", r.day);
+    text += "\n";
+    for (std::size_t i = 0; i < profile_radii_.size(); ++i) {
+      text += fmt::format("{:.4g}", profile_radii_[i]);
+      for (const auto& p : profiles) text += "," + csv_number(std::isnan(p[i]) ? std::nullopt : std::optional(p[i]));
+      text += "\n";
+    }
+    return text;
+  };
+  io::write_text_file(out / "profiles_OA.csv", profile_csv(profiles_OA_));
+  io::write_text_file(out / "profiles_OB.csv", profile_csv(profiles_OB_));
+  std::string sensors = "day";
+  for (const auto& s : project_.monitoring) sensors += "," + s.name + "_C";
+  sensors += "\n";
+  const std::size_t rows = sensor_readings_.empty() ? series_.size() : sensor_readings_.front().size();
+  for (std::size_t k = 0; k < rows; ++k) {
+    sensors += fmt::format("{:.6g}", series_[k].day);
+    for (const auto& s : sensor_readings_) sensors += fmt::format(",{:.6g}", s[k].second);
+    sensors += "\n";
+  }
+  io::write_text_file(out / "monitoring.csv", sensors);
+  return result;
+}
+
+}  // namespace frostwall::run

@@ -1,0 +1,67 @@
+// The engineering results of a shaft run, gathered while it runs: wall
+// extents on OA, OB and the weakest ray, the mean wall temperature on OB,
+// temperature profiles along OA and OB, sensor readings, the design check
+// and the frozen-front curves. Turned into summary.json entries and CSV
+// files at the end (project-format.md section 2).
+#pragma once
+
+#include <filesystem>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "post/field_sampler.hpp"
+#include "post/wall_extent.hpp"
+#include "project/project.hpp"
+#include "run/model.hpp"
+
+namespace frostwall::run {
+
+// OA, the ray through the first pipe of the outer ring, and OB, halfway to
+// the next pipe of that ring counter-clockwise; the ring radius of OA's pipe.
+struct InterfacePlanes {
+  double OA = 0.0, OB = 0.0;  // rad
+  double ring_radius = 0.0;   // m
+};
+InterfacePlanes interface_planes(const std::vector<geometry::Pipe2>& pipes);
+
+class ShaftResults {
+ public:
+  ShaftResults(const project::Project& p, const Model& m);
+  ~ShaftResults();
+
+  void sample(double t, const thermal::ThermalModel& model);    // every output interval
+  void snapshot(double t, const thermal::ThermalModel& model, const std::filesystem::path& out,
+                const std::string& stem);                         // at each snapshot day
+  // Summary entries (wall, design, monitoring, interface) and the CSV files.
+  nlohmann::json finish(const std::filesystem::path& out) const;
+
+ private:
+  struct Reading {
+    double day;
+    post::FrozenStretch OA, OB;
+    double min_thickness;
+    std::optional<double> mean_temperature_OB;
+  };
+  Reading read(double t, const thermal::ThermalModel& model) const;
+
+  const project::Project& project_;
+  const Model& model_;
+  InterfacePlanes planes_;
+  post::FieldSampler sampler_;
+  std::unique_ptr<post::WallGauge> fan_gauge_, planes_gauge_;
+  std::unique_ptr<post::PointProbe> profile_OA_, profile_OB_, sensors_;
+  std::vector<double> profile_radii_;
+  std::vector<Reading> series_, snapshots_;
+  std::vector<std::vector<double>> profiles_OA_, profiles_OB_;  // per snapshot
+  std::vector<std::vector<std::pair<double, double>>> sensor_readings_;
+  nlohmann::json interface_ = nlohmann::json::array();
+  // Points for the front curves: the particles and their copies around the
+  // ring (full ring) or their mirror images (wedge), with the source index.
+  std::vector<sph::Vec<2>> curve_points_, ring_points_;
+  std::vector<std::uint32_t> curve_source_, ring_source_;
+};
+
+}  // namespace frostwall::run
