@@ -1,18 +1,13 @@
 #include "geometry/voronoi_volumes.hpp"
 
-#include <CGAL/Delaunay_triangulation_2.h>
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Triangulation_vertex_base_with_info_2.h>
-
+#include "geometry/delaunay.hpp"
 #include "sph/laplacian.hpp"
 
 namespace frostwall::geometry {
 
 namespace {
-using K = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Vb = CGAL::Triangulation_vertex_base_with_info_2<std::size_t, K>;
-using Tds = CGAL::Triangulation_data_structure_2<Vb>;
-using Delaunay = CGAL::Delaunay_triangulation_2<K, Tds>;
+using K = geometry::Kernel2;
+using Delaunay = geometry::IndexedDelaunay;
 }  // namespace
 
 void assign_voronoi_volumes(sph::ParticleSet<2>& particles, double reach) {

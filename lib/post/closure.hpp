@@ -39,10 +39,10 @@ class ClosureDetector {
 class ClosureWatch {
  public:
   explicit ClosureWatch(const ClosureDetector& detector) : detector_(detector) {}
-  // Call after each step with the time and the liquid fraction; cheap while
-  // the gap is wide open (b = 1) only if `every` allows skipping: the
-  // detector runs at least every `min_interval` seconds and at every call
-  // once some particle of the gap is freezing (b < 1).
+  // Call after each step (from t = 0 on) with the time and the liquid
+  // fraction. While the gap is wide open (b = 1) the detector runs only
+  // every `min_interval` seconds; once a particle of the gap is freezing
+  // (b < 1) it runs at every call.
   void observe(double t, const std::vector<double>& liquid_fraction, double min_interval);
   std::optional<double> closure_time() const { return closure_; }
   // The last time the wall was seen open and the bottleneck then.

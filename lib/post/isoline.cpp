@@ -5,17 +5,13 @@
 #include <stdexcept>
 #include <unordered_map>
 
-#include <CGAL/Delaunay_triangulation_2.h>
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Triangulation_vertex_base_with_info_2.h>
+#include "geometry/delaunay.hpp"
 
 namespace frostwall::post {
 
 namespace {
-using K = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Vb = CGAL::Triangulation_vertex_base_with_info_2<std::size_t, K>;
-using Tds = CGAL::Triangulation_data_structure_2<Vb>;
-using Delaunay = CGAL::Delaunay_triangulation_2<K, Tds>;
+using K = geometry::Kernel2;
+using Delaunay = geometry::IndexedDelaunay;
 
 constexpr std::size_t none = static_cast<std::size_t>(-1);
 
