@@ -74,42 +74,33 @@ void ThermalModel::conduction_rate(std::vector<double>& rate) const {
     });
     return;
   }
-  const bool consistent = options_.form == project::LaplacianForm::renormalised;
-  const int D = P.dim;
   sph::for_each_particle(n, [&](std::size_t i) {
     const double Ti = T_[i];
     double sum = 0.0;
-    for (std::size_t e = P.row_start[i]; e < P.row_start[i + 1]; ++e) {
-      const std::uint32_t j = P.column[e];
-      double factor = 0.0;
-      for (int d = 0; d < 2; ++d) {
-        const double kd = pair_conductivity(k_[2 * i + d], k_[2 * j + d]);
-        const double e2 = P.direction2[e * D + d];
-        factor += consistent ? 0.5 * kd * ((D + 2) * e2 - 1.0) : kd * e2;
-      }
-      sum += P.weight[e] * factor * (T_[j] - Ti);
-    }
+    for (std::size_t e = P.row_start[i]; e < P.row_start[i + 1]; ++e)
+      sum += P.weight[e] * anisotropic_factor(i, P.column[e], e) * (T_[P.column[e]] - Ti);
     rate[i] = sum;
   });
+}
+
+double ThermalModel::anisotropic_factor(std::size_t i, std::size_t j, std::size_t e) const {
+  const bool consistent = options_.form == project::LaplacianForm::renormalised;
+  const int D = pairs_.dim;
+  double factor = 0.0;
+  for (int d = 0; d < 2; ++d) {
+    const double kd = pair_conductivity(k_[2 * i + d], k_[2 * j + d]);
+    const double e2 = pairs_.direction2[e * D + d];
+    factor += consistent ? 0.5 * kd * ((D + 2) * e2 - 1.0) : kd * e2;
+  }
+  return factor;
 }
 
 std::vector<double> ThermalModel::boundary_heat_rate() const {
   std::vector<double> heat(boundaries_.size(), 0.0);
   const auto& P = pairs_;
-  const int D = P.dim;
-  const bool consistent = options_.form == project::LaplacianForm::renormalised;
   for (const auto& [i, e] : boundary_pairs_) {
     const std::uint32_t j = P.column[e];
-    double factor = 0.0;
-    if (!anisotropic_) {
-      factor = pair_conductivity(k_[2 * i], k_[2 * j]);
-    } else {
-      for (int d = 0; d < 2; ++d) {
-        const double kd = pair_conductivity(k_[2 * i + d], k_[2 * j + d]);
-        const double e2 = P.direction2[e * D + d];
-        factor += consistent ? 0.5 * kd * ((D + 2) * e2 - 1.0) : kd * e2;
-      }
-    }
+    const double factor = anisotropic_ ? anisotropic_factor(i, j, e) : pair_conductivity(k_[2 * i], k_[2 * j]);
     heat[boundary_id_[j]] += volume_[i] * P.weight[e] * factor * (T_[j] - T_[i]);
   }
   return heat;

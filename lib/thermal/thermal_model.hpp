@@ -62,6 +62,9 @@ class ThermalModel {
  private:
   void set_state(std::size_t i, double H);
   double pair_conductivity(double ki, double kj) const;
+  // Pair factor of an anisotropic soil for pair e (i, j): the consistent
+  // sum_d k_d ((Dim+2) e_d^2 - 1) / 2 or the paper's sum_d k_d e_d^2.
+  double anisotropic_factor(std::size_t i, std::size_t j, std::size_t e) const;
 
   std::vector<double> volume_;
   std::vector<int> boundary_id_;
