@@ -159,7 +159,7 @@ TEST_CASE("three-hole layout in built-in clay with a pipe schedule", "[project]"
   CHECK_FALSE(p.numerics.spacing);
   CHECK(p.numerics.kernel == KernelKind::wendland_c2);
   CHECK(p.numerics.smoothing_ratio == 1.3);
-  CHECK(p.numerics.integrator == IntegratorKind::explicit_euler);
+  CHECK(p.numerics.integrator == IntegratorKind::rkl2);
   CHECK(p.numerics.beta == 0.1);
   CHECK(p.numerics.conductivity_mean == ConductivityMean::harmonic);
   CHECK(p.numerics.laplacian == LaplacianForm::renormalised);

@@ -280,8 +280,8 @@ TimeSettings read_time(const Node& n) {
 
 Numerics read_numerics(const Node& n) {
   Numerics numerics;
-  if (!n.object({"spacing", "kernel", "smoothing_ratio", "integrator", "beta", "conductivity_mean", "laplacian",
-                 "symmetry"}))
+  if (!n.object({"spacing", "kernel", "smoothing_ratio", "integrator", "beta", "step_change", "conductivity_mean",
+                 "laplacian", "symmetry"}))
     return numerics;
   numerics.spacing = n["spacing"].positive();
   numerics.kernel = n["kernel"].choice<KernelKind>(
@@ -289,9 +289,12 @@ Numerics read_numerics(const Node& n) {
                         .value_or(numerics.kernel);
   numerics.smoothing_ratio = n["smoothing_ratio"].positive().value_or(numerics.smoothing_ratio);
   numerics.integrator = n["integrator"].choice<IntegratorKind>(
-      "integrator", {{"explicit", IntegratorKind::explicit_euler}, {"implicit", IntegratorKind::implicit}})
+      "integrator", {{"explicit", IntegratorKind::explicit_euler},
+                     {"implicit", IntegratorKind::implicit},
+                     {"rkl2", IntegratorKind::rkl2}})
                             .value_or(numerics.integrator);
   numerics.beta = n["beta"].positive().value_or(numerics.beta);
+  numerics.step_change = n["step_change"].positive().value_or(numerics.step_change);
   numerics.conductivity_mean = n["conductivity_mean"].choice<ConductivityMean>(
       "conductivity mean", {{"harmonic", ConductivityMean::harmonic}, {"arithmetic", ConductivityMean::arithmetic}})
                                    .value_or(numerics.conductivity_mean);

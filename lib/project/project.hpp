@@ -117,7 +117,7 @@ struct TimeSettings {
 };
 
 enum class KernelKind { wendland_c2, cubic_spline };
-enum class IntegratorKind { explicit_euler, implicit };
+enum class IntegratorKind { explicit_euler, implicit, rkl2 };
 enum class ConductivityMean { harmonic, arithmetic };
 enum class LaplacianForm { renormalised, plain };
 
@@ -125,8 +125,11 @@ struct Numerics {
   std::optional<double> spacing;  // m; nullopt = frostwall chooses
   KernelKind kernel = KernelKind::wendland_c2;
   double smoothing_ratio = 1.3;   // h / spacing
-  IntegratorKind integrator = IntegratorKind::explicit_euler;
+  IntegratorKind integrator = IntegratorKind::rkl2;
   double beta = 0.1;              // explicit step: dt = beta h^2 / alpha_max
+  // Implicit step: the largest enthalpy change of a particle per step, as a
+  // fraction of the latent heat (the step adapts to hold it).
+  double step_change = 0.25;
   ConductivityMean conductivity_mean = ConductivityMean::harmonic;
   LaplacianForm laplacian = LaplacianForm::renormalised;
   // Shaft sections: simulate the smallest mirror-symmetric wedge ("auto"),

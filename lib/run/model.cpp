@@ -4,6 +4,8 @@
 #include "geometry/symmetry.hpp"
 #include "sph/laplacian.hpp"
 #include "sph/wall_extrapolation.hpp"
+#include "thermal/backward_euler.hpp"
+#include "thermal/super_time_stepping.hpp"
 
 namespace frostwall::run {
 
@@ -16,9 +18,6 @@ double default_spacing(const project::Project& p) {
 }
 
 Model build_model(const project::Project& p) {
-  if (p.numerics.integrator == project::IntegratorKind::implicit)
-    throw project::ProjectError({"numerics.integrator: 'implicit' is not available in this version; use 'explicit'"});
-
   Model m;
   const double spacing = p.numerics.spacing.value_or(default_spacing(p));
   m.h = p.numerics.smoothing_ratio * spacing;
@@ -56,7 +55,16 @@ Model build_model(const project::Project& p) {
       m.particles().volume, m.particles().boundary, std::move(pairs), law, m.scene->boundaries,
       thermal::ConductionOptions{p.numerics.conductivity_mean, p.numerics.laplacian}, p.domain.initial_temperature,
       sph::build_wall_extrapolation(m.particles(), *m.kernel, m.h));
-  m.integrator = std::make_unique<thermal::ExplicitEuler>(p.numerics.beta, m.h);
+  const double explicit_step = p.numerics.beta * m.h * m.h / law.max_diffusivity();
+  if (p.numerics.integrator == project::IntegratorKind::implicit) {
+    thermal::BackwardEulerSettings settings;
+    settings.step_change = p.numerics.step_change;
+    m.integrator = std::make_unique<thermal::BackwardEuler>(settings, explicit_step);
+  } else if (p.numerics.integrator == project::IntegratorKind::rkl2) {
+    m.integrator = std::make_unique<thermal::SuperTimeStepping>(p.numerics.step_change, 5.0 * explicit_step);
+  } else {
+    m.integrator = std::make_unique<thermal::ExplicitEuler>(p.numerics.beta, m.h);
+  }
   return m;
 }
 

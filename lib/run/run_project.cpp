@@ -9,6 +9,8 @@
 
 #include "post/closure.hpp"
 #include "run/model.hpp"
+#include "thermal/backward_euler.hpp"
+#include "thermal/super_time_stepping.hpp"
 #include "run/shaft_results.hpp"
 #include "sph/symmetry_group.hpp"
 #include "io/atomic_file.hpp"
@@ -84,6 +86,7 @@ io::PointCloudFrame full_ring(const io::PointCloudFrame& wedge, const std::vecto
 }
 
 const char* integrator_name(project::IntegratorKind k) {
+  if (k == project::IntegratorKind::rkl2) return "rkl2";
   return k == project::IntegratorKind::implicit ? "implicit" : "explicit";
 }
 
@@ -190,6 +193,14 @@ void run_project(const Project& p, const RunOptions& options) {
         {"time_unit", p.time.unit == project::TimeUnit::s ? "s" : (p.time.unit == project::TimeUnit::h ? "h" : "d")}}},
       {"warnings", p.warnings},
   });
+  if (const auto* implicit = dynamic_cast<const thermal::BackwardEuler*>(built.integrator.get())) {
+    const auto& stats = implicit->statistics();
+    summary["run"]["newton_iterations"] = stats.newton_iterations;
+    summary["run"]["linear_iterations"] = stats.linear_iterations;
+    summary["run"]["step_halvings"] = stats.halvings;
+  }
+  if (const auto* rkl2 = dynamic_cast<const thermal::SuperTimeStepping*>(built.integrator.get()))
+    summary["run"]["stages"] = rkl2->statistics().stages;
   io::write_text_file(out / "summary.json", summary.dump(2) + "\n");
 }
 

@@ -2,6 +2,7 @@
 // schedule). Physics code calls for_each_particle and never writes threading.
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <xmmintrin.h>
 
@@ -28,6 +29,16 @@ double sum_over_particles(std::size_t n, Body&& body) {
 #pragma omp parallel for schedule(static) reduction(+ : total) if (n >= parallel_threshold)
   for (long long i = 0; i < count; ++i) total += body(static_cast<std::size_t>(i));
   return total;
+}
+
+// Largest body(i) over particles (0 for none), reduced across threads.
+template <class Body>
+double max_over_particles(std::size_t n, Body&& body) {
+  const long long count = static_cast<long long>(n);
+  double largest = 0.0;
+#pragma omp parallel for schedule(static) reduction(max : largest) if (n >= parallel_threshold)
+  for (long long i = 0; i < count; ++i) largest = std::max(largest, body(static_cast<std::size_t>(i)));
+  return largest;
 }
 
 // Flush denormal numbers to zero in this thread and every OpenMP thread.

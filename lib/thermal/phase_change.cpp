@@ -23,15 +23,11 @@ double PhaseChangeLaw::enthalpy(double T) const {
   return range_ > 0.0 ? H_l_ * (T - Ts_) / range_ : H_l_;
 }
 
-double PhaseChangeLaw::temperature(double H) const {
-  if (H < 0.0) return Ts_ + H / rho_cs_;
-  if (H > H_l_) return Tf_ + (H - H_l_) / rho_cl_;
-  return range_ > 0.0 ? Ts_ + range_ * H / H_l_ : Tf_;
-}
-
-double PhaseChangeLaw::liquid_fraction(double H) const {
-  if (H_l_ <= 0.0) return H > 0.0 ? 1.0 : 0.0;  // no latent heat, no range
-  return std::clamp(H / H_l_, 0.0, 1.0);
+double PhaseChangeLaw::temperature_slope(double H, double direction) const {
+  const double mushy = range_ > 0.0 ? range_ / H_l_ : 0.0;
+  if (H < 0.0 || (H == 0.0 && direction < 0.0)) return 1.0 / rho_cs_;
+  if (H > H_l_ || (H == H_l_ && direction > 0.0)) return 1.0 / rho_cl_;
+  return mushy;
 }
 
 bool PhaseChangeLaw::anisotropic() const {

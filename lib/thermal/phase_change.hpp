@@ -10,6 +10,7 @@
 // this bookkeeping with range = 0.
 #pragma once
 
+#include <algorithm>
 #include <array>
 
 #include "project/project.hpp"
@@ -21,8 +22,16 @@ class PhaseChangeLaw {
   explicit PhaseChangeLaw(const project::Soil& soil);
 
   double enthalpy(double T) const;
-  double temperature(double H) const;
-  double liquid_fraction(double H) const;
+  // Inline: called for every particle at every stage.
+  double temperature(double H) const {
+    if (H < 0.0) return Ts_ + H / rho_cs_;
+    if (H > H_l_) return Tf_ + (H - H_l_) / rho_cl_;
+    return range_ > 0.0 ? Ts_ + range_ * H / H_l_ : Tf_;
+  }
+  double liquid_fraction(double H) const {
+    if (H_l_ <= 0.0) return H > 0.0 ? 1.0 : 0.0;  // no latent heat, no range
+    return std::clamp(H / H_l_, 0.0, 1.0);
+  }
   // Conductivity along axis d: linear in liquid fraction between the frozen
   // and the unfrozen value (a freezing particle is a frozen and an unfrozen
   // share side by side).
@@ -32,6 +41,11 @@ class PhaseChangeLaw {
   bool anisotropic() const;
   double max_diffusivity() const;  // m2/s, over both phases and axes
   double freezing_point() const { return Tf_; }
+  // H at the unfrozen end of freezing (the law's kinks are at 0 and here).
+  double latent_enthalpy() const { return H_l_; }
+  // dT/dH on the side of H that a change of sign `direction` moves into:
+  // 0 inside an isothermal change, so an implicit step knows T is pinned.
+  double temperature_slope(double H, double direction) const;
   double latent_heat_volumetric() const { return rho_L_; }
 
  private:

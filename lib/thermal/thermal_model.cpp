@@ -22,23 +22,27 @@ ThermalModel::ThermalModel(std::vector<double> volume, std::vector<int> boundary
   T_.resize(n);
   f_.resize(n);
   k_.resize(2 * n);
+  k_changed_.assign(n, 1);
   const double H0 = law_.enthalpy(initial_temperature);
   for (std::size_t i = 0; i < n; ++i) set_state(i, H0);
+  // Transpose of the pair list: where each particle appears as a neighbour.
+  incoming_start_.assign(n + 1, 0);
+  for (std::uint32_t j : pairs_.column) ++incoming_start_[j + 1];
+  for (std::size_t p = 0; p < n; ++p) incoming_start_[p + 1] += incoming_start_[p];
+  incoming_row_.resize(pairs_.pairs());
+  incoming_pair_.resize(pairs_.pairs());
+  std::vector<std::size_t> fill(incoming_start_.begin(), incoming_start_.end() - 1);
+  for (std::size_t i = 0; i < pairs_.n_free; ++i)
+    for (std::size_t e = pairs_.row_start[i]; e < pairs_.row_start[i + 1]; ++e) {
+      const std::size_t slot = fill[pairs_.column[e]]++;
+      incoming_row_[slot] = static_cast<std::uint32_t>(i);
+      incoming_pair_[slot] = e;
+    }
   for (std::size_t i = 0; i < pairs_.n_free; ++i)
     for (std::size_t e = pairs_.row_start[i]; e < pairs_.row_start[i + 1]; ++e)
       if (pairs_.column[e] >= pairs_.n_free) boundary_pairs_.emplace_back(static_cast<std::uint32_t>(i), e);
   apply_boundaries(0.0);
 }
-
-void ThermalModel::set_state(std::size_t i, double H) {
-  H_[i] = H;
-  T_[i] = law_.temperature(H);
-  f_[i] = law_.liquid_fraction(H);
-  k_[2 * i] = law_.conductivity(f_[i], 0);
-  k_[2 * i + 1] = law_.conductivity(f_[i], 1);
-}
-
-void ThermalModel::set_enthalpy(std::size_t i, double H) { set_state(i, H); }
 
 void ThermalModel::apply_boundaries(double t) {
   std::vector<double> T_wall(boundaries_.size());
@@ -58,28 +62,46 @@ double ThermalModel::pair_conductivity(double ki, double kj) const {
   return 4.0 * ki * kj / (ki + kj);
 }
 
+double ThermalModel::coefficient(std::size_t i, std::size_t j, std::size_t e) const {
+  return pairs_.weight[e] * (anisotropic_ ? anisotropic_factor(i, j, e) : pair_conductivity(k_[2 * i], k_[2 * j]));
+}
+
+const std::vector<double>& ThermalModel::pair_coefficients() const {
+  const auto& P = pairs_;
+  if (all_changed_) {
+    coefficient_.resize(P.pairs());
+    sph::for_each_particle(P.n_free, [&](std::size_t i) {
+      for (std::size_t e = P.row_start[i]; e < P.row_start[i + 1]; ++e) coefficient_[e] = coefficient(i, P.column[e], e);
+    });
+    all_changed_ = false;
+    std::fill(k_changed_.begin(), k_changed_.end(), 0);
+    return coefficient_;
+  }
+  for (std::size_t p = 0; p < k_changed_.size(); ++p) {
+    if (!k_changed_[p]) continue;
+    k_changed_[p] = 0;
+    if (p < P.n_free)
+      for (std::size_t e = P.row_start[p]; e < P.row_start[p + 1]; ++e) coefficient_[e] = coefficient(p, P.column[e], e);
+    for (std::size_t s = incoming_start_[p]; s < incoming_start_[p + 1]; ++s)
+      coefficient_[incoming_pair_[s]] = coefficient(incoming_row_[s], p, incoming_pair_[s]);
+  }
+  return coefficient_;
+}
+
 void ThermalModel::conduction_rate(std::vector<double>& rate) const {
   const std::size_t n = pairs_.n_free;
   rate.resize(n);
-  const auto& P = pairs_;
-  if (!anisotropic_) {
-    sph::for_each_particle(n, [&](std::size_t i) {
-      const double Ti = T_[i], ki = k_[2 * i];
-      double sum = 0.0;
-      for (std::size_t e = P.row_start[i]; e < P.row_start[i + 1]; ++e) {
-        const std::uint32_t j = P.column[e];
-        sum += P.weight[e] * pair_conductivity(ki, k_[2 * j]) * (T_[j] - Ti);
-      }
-      rate[i] = sum;
-    });
-    return;
-  }
+  const std::vector<double>& a = pair_coefficients();
+  const std::size_t* start = pairs_.row_start.data();
+  const std::uint32_t* column = pairs_.column.data();
+  const double* T = T_.data();
   sph::for_each_particle(n, [&](std::size_t i) {
-    const double Ti = T_[i];
-    double sum = 0.0;
-    for (std::size_t e = P.row_start[i]; e < P.row_start[i + 1]; ++e)
-      sum += P.weight[e] * anisotropic_factor(i, P.column[e], e) * (T_[P.column[e]] - Ti);
-    rate[i] = sum;
+    double flow = 0.0, total = 0.0;
+    for (std::size_t e = start[i]; e < start[i + 1]; ++e) {
+      flow += a[e] * T[column[e]];
+      total += a[e];
+    }
+    rate[i] = flow - total * T[i];
   });
 }
 
@@ -98,10 +120,10 @@ double ThermalModel::anisotropic_factor(std::size_t i, std::size_t j, std::size_
 std::vector<double> ThermalModel::boundary_heat_rate() const {
   std::vector<double> heat(boundaries_.size(), 0.0);
   const auto& P = pairs_;
+  const std::vector<double>& a = pair_coefficients();
   for (const auto& [i, e] : boundary_pairs_) {
     const std::uint32_t j = P.column[e];
-    const double factor = anisotropic_ ? anisotropic_factor(i, j, e) : pair_conductivity(k_[2 * i], k_[2 * j]);
-    heat[boundary_id_[j]] += volume_[i] * P.weight[e] * factor * (T_[j] - T_[i]);
+    heat[boundary_id_[j]] += volume_[i] * a[e] * (T_[j] - T_[i]);
   }
   return heat;
 }

@@ -44,11 +44,17 @@ class ThermalModel {
   void apply_boundaries(double t);
   // rate[i] = dH_i/dt for free particles (rate is resized to free_count()).
   void conduction_rate(std::vector<double>& rate) const;
+  // a[e] = G_ij k_ij for every stored pair e (i, j) at the current state,
+  // so that dH_i/dt = sum_e a[e] (T_j - T_i): the coefficients an implicit
+  // step linearises. Kept up to date as particles change phase.
+  const std::vector<double>& pair_coefficients() const;
+  // Fixed particles beyond a wall: their temperature as weights over free ones.
+  const sph::WallExtrapolation& beyond_wall() const { return beyond_wall_; }
   // Heat flowing into the free particles from each boundary, W (per metre
   // of depth in 2-D), at the current state: the boundary pairs alone.
   std::vector<double> boundary_heat_rate() const;
   // Sets the enthalpy of free particle i and the fields derived from it.
-  void set_enthalpy(std::size_t i, double H);
+  void set_enthalpy(std::size_t i, double H) { set_state(i, H); }
   // Heat stored in the free particles, sum V_i H_i, J (per metre in 2-D).
   double stored_heat() const;
 
@@ -61,6 +67,8 @@ class ThermalModel {
 
  private:
   void set_state(std::size_t i, double H);
+  // a[e] of one pair, from the conductivities now.
+  double coefficient(std::size_t i, std::size_t j, std::size_t e) const;
   double pair_conductivity(double ki, double kj) const;
   // Pair factor of an anisotropic soil for pair e (i, j): the consistent
   // sum_d k_d ((Dim+2) e_d^2 - 1) / 2 or the paper's sum_d k_d e_d^2.
@@ -75,8 +83,28 @@ class ThermalModel {
   sph::WallExtrapolation beyond_wall_;
   bool anisotropic_;
   std::vector<double> H_, T_, f_, k_;
+  // The pair coefficients a[e] are cached: the rate is then a plain gather
+  // over the pairs, and only pairs next to a particle whose conductivity
+  // changed (a freezing particle) are recomputed. incoming_* lists, per
+  // particle, the pairs (row, index) in which it is the neighbour.
+  mutable std::vector<double> coefficient_;
+  mutable std::vector<char> k_changed_;
+  mutable bool all_changed_ = true;
+  std::vector<std::size_t> incoming_start_;
+  std::vector<std::uint32_t> incoming_row_;
+  std::vector<std::size_t> incoming_pair_;
   // Pairs whose neighbour is a fixed particle: (row, pair index).
   std::vector<std::pair<std::uint32_t, std::size_t>> boundary_pairs_;
 };
+
+inline void ThermalModel::set_state(std::size_t i, double H) {
+  H_[i] = H;
+  T_[i] = law_.temperature(H);
+  f_[i] = law_.liquid_fraction(H);
+  const double kx = law_.conductivity(f_[i], 0), ky = law_.conductivity(f_[i], 1);
+  if (kx != k_[2 * i] || ky != k_[2 * i + 1]) k_changed_[i] = 1;
+  k_[2 * i] = kx;
+  k_[2 * i + 1] = ky;
+}
 
 }  // namespace frostwall::thermal

@@ -1,0 +1,103 @@
+#include "thermal/super_time_stepping.hpp"
+
+#include <cmath>
+
+#include "sph/parallel.hpp"
+
+namespace frostwall::thermal {
+
+namespace {
+constexpr double safety = 0.8;  // of the Gershgorin limit: k rises as particles freeze within a step
+}
+
+SuperTimeStepping::SuperTimeStepping(double step_change, double first_step) : control_(step_change, first_step) {}
+
+double SuperTimeStepping::forward_euler_limit(const ThermalModel& model) {
+  // dH_i/dt = sum_e a_e (T_j - T_i), T = H / C: the rate's Jacobian row i has
+  // |diagonal| + |off-diagonals| <= (2 sum_e a_e + extension terms) / C_min.
+  // A fixed particle beyond a wall follows the free ones with its weights.
+  const std::vector<double>& a = model.pair_coefficients();
+  const auto& P = model.pairs();
+  const auto& W = model.beyond_wall();
+  const auto& law = model.law();
+  const double C_min = 1.0 / std::max(law.temperature_slope(-1.0, -1.0), law.temperature_slope(2.0 * law.latent_enthalpy() + 1.0, 1.0));
+  const std::size_t n = P.n_free;
+  const double worst = sph::max_over_particles(n, [&](std::size_t i) {
+    double row = 0.0;
+    for (std::size_t e = P.row_start[i]; e < P.row_start[i + 1]; ++e) {
+      const std::uint32_t j = P.column[e];
+      double follow = j < n ? 1.0 : 0.0;
+      if (j >= n && !W.row_start.empty())
+        for (std::size_t m = W.row_start[j - n]; m < W.row_start[j - n + 1]; ++m) follow += std::abs(W.weight[m]);
+      row += std::abs(a[e]) * (1.0 + follow);
+    }
+    return row;
+  });
+  return worst > 0.0 ? safety * 2.0 * C_min / worst : 1e300;
+}
+
+int SuperTimeStepping::stages_for(double dt, double dt_fe) {
+  const double s = 0.5 * (std::sqrt(9.0 + 16.0 * dt / dt_fe) - 1.0);
+  return std::max(2, static_cast<int>(std::ceil(s - 1e-12)));
+}
+
+std::vector<double> SuperTimeStepping::advance(ThermalModel& model, double t, double dt) {
+  const std::size_t n = model.free_count();
+  const std::size_t nb = model.boundaries().size();
+  control_.remember(model);
+  const int s = stages_for(dt, forward_euler_limit(model));
+
+  // Legendre coefficients: b_j = (j^2 + j - 2) / (2 j (j + 1)), b_0 = b_1 = b_2 = 1/3.
+  auto b = [](int j) { return j < 2 ? 1.0 / 3.0 : (j * j + j - 2.0) / (2.0 * j * (j + 1.0)); };
+  const double w1 = 4.0 / (s * s + s - 2.0);
+
+  // Each stage is a combination of earlier states and rate evaluations; the
+  // heat from the boundaries is carried through the same combination, so the
+  // step's energy balance is exact (free-free fluxes cancel pairwise).
+  Y0_ = control_.before();
+  model.apply_boundaries(t);
+  model.conduction_rate(L0_);
+  const std::vector<double> q0 = model.boundary_heat_rate();
+  std::vector<double> Q0(nb, 0.0), Qprev2(nb, 0.0), Qprev(nb), Qnext(nb);
+
+  // Stage 1.
+  const double mu1 = b(1) * w1;
+  Yprev2_ = Y0_;
+  Yprev_.resize(n);
+  for (std::size_t k = 0; k < nb; ++k) Qprev[k] = mu1 * dt * q0[k];
+  sph::for_each_particle(n, [&](std::size_t i) {
+    Yprev_[i] = Y0_[i] + mu1 * dt * L0_[i];
+    model.set_enthalpy(i, Yprev_[i]);
+  });
+  double c_prev2 = 0.0, c_prev = mu1;  // stage times, as fractions of dt
+
+  for (int j = 2; j <= s; ++j) {
+    const double mu = (2.0 * j - 1.0) / j * b(j) / b(j - 1);
+    const double nu = -(j - 1.0) / j * b(j) / b(j - 2);
+    const double mu_t = mu * w1;
+    const double gamma_t = -(1.0 - b(j - 1)) * mu_t;
+    model.apply_boundaries(t + c_prev * dt);
+    model.conduction_rate(L_);
+    const std::vector<double> q = model.boundary_heat_rate();
+    for (std::size_t k = 0; k < nb; ++k)
+      Qnext[k] = mu * Qprev[k] + nu * Qprev2[k] + (1.0 - mu - nu) * Q0[k] + mu_t * dt * q[k] + gamma_t * dt * q0[k];
+    sph::for_each_particle(n, [&](std::size_t i) {
+      const double Y = mu * Yprev_[i] + nu * Yprev2_[i] + (1.0 - mu - nu) * Y0_[i] + mu_t * dt * L_[i] +
+                       gamma_t * dt * L0_[i];
+      Yprev2_[i] = Yprev_[i];
+      Yprev_[i] = Y;
+      model.set_enthalpy(i, Y);
+    });
+    std::swap(Qprev2, Qprev);
+    std::swap(Qprev, Qnext);
+    const double c = mu * c_prev + nu * c_prev2 + mu_t + gamma_t;
+    c_prev2 = c_prev;
+    c_prev = c;
+  }
+  ++stats_.steps;
+  stats_.stages += static_cast<std::size_t>(s);
+  control_.adapt(model, dt);
+  return Qprev;
+}
+
+}  // namespace frostwall::thermal

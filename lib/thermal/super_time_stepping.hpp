@@ -1,0 +1,47 @@
+// RKL2 super-time-stepping (Meyer, Balsara & Aslam, J. Comput. Phys. 257,
+// 2014): an explicit step of s stages whose stability polynomial is built
+// from Legendre polynomials, stable up to
+//     dt = dt_fe (s^2 + s - 2) / 4,
+// dt_fe the forward-Euler limit. A step as long as accuracy allows then
+// costs s ~ sqrt(dt / dt_fe) conduction-rate evaluations instead of
+// dt / dt_fe, with no linear system and no iteration for the latent heat:
+// every stage is an explicit update of the enthalpy, so the phase change
+// is handled exactly as in the paper's forward Euler. Second order in time.
+//
+// The step is chosen by the freezing activity (step_control.hpp); the
+// stage count then follows from the current forward-Euler limit
+// (Gershgorin bound of the conduction operator at the stiffest phase).
+#pragma once
+
+#include <vector>
+
+#include "thermal/integrator.hpp"
+#include "thermal/step_control.hpp"
+
+namespace frostwall::thermal {
+
+struct SuperTimeSteppingStatistics {
+  std::size_t steps = 0, stages = 0;
+};
+
+class SuperTimeStepping final : public Integrator {
+ public:
+  // step_change: see ActivityStepControl; first_step in seconds.
+  SuperTimeStepping(double step_change, double first_step);
+  double preferred_step(const ThermalModel&) const override { return control_.step(); }
+  std::vector<double> advance(ThermalModel& model, double t, double dt) override;
+  const char* name() const override { return "rkl2"; }
+  const SuperTimeSteppingStatistics& statistics() const { return stats_; }
+
+  // The forward-Euler stability limit of the model's conduction operator now.
+  static double forward_euler_limit(const ThermalModel& model);
+  // Stages needed for a step dt (at least 2).
+  static int stages_for(double dt, double dt_fe);
+
+ private:
+  ActivityStepControl control_;
+  SuperTimeSteppingStatistics stats_;
+  std::vector<double> Y0_, Yprev_, Yprev2_, L0_, L_, a_;
+};
+
+}  // namespace frostwall::thermal
