@@ -32,8 +32,10 @@ inline std::string unit_soil(double freezing_point, double latent_heat) {
                      latent_heat, freezing_point);
 }
 
-inline std::string numerics(double spacing, const std::string& laplacian = "renormalised") {
-  return fmt::format(R"({{ "spacing": {}, "integrator": "explicit", "laplacian": "{}" }})", spacing, laplacian);
+inline std::string numerics(double spacing, const std::string& laplacian = "renormalised",
+                            const std::string& integrator = "explicit", double step_change = 0.25) {
+  return fmt::format(R"({{ "spacing": {}, "integrator": "{}", "laplacian": "{}", "step_change": {} }})", spacing,
+                     integrator, laplacian, step_change);
 }
 
 // Marches to each time in `times`, calling at(k) there.

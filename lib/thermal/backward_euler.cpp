@@ -99,7 +99,7 @@ struct BackwardEuler::LinearSystem {
 BackwardEuler::BackwardEuler(BackwardEulerSettings settings, double explicit_step)
     : settings_(settings),
       control_(settings.step_change, settings.first_step > 0.0 ? settings.first_step : 5.0 * explicit_step,
-               settings.growth) {}
+               settings.max_steps_explicit * explicit_step, settings.growth) {}
 
 BackwardEuler::~BackwardEuler() = default;
 

@@ -15,8 +15,10 @@ namespace frostwall::thermal {
 
 class ActivityStepControl {
  public:
-  ActivityStepControl(double step_change, double first_step, double growth = 1.5)
-      : step_change_(step_change), growth_(growth), step_(first_step) {}
+  // max_step bounds the step where nothing changes any more (an insulated
+  // body at equilibrium would otherwise grow it without end).
+  ActivityStepControl(double step_change, double first_step, double max_step, double growth = 1.5)
+      : step_change_(step_change), growth_(growth), max_step_(max_step), step_(std::min(first_step, max_step)) {}
 
   double step() const { return step_; }
   // Enthalpies of the free particles before the step.
@@ -31,7 +33,7 @@ class ActivityStepControl {
     const double change = sph::max_over_particles(
         model.free_count(), [&](std::size_t i) { return std::abs(H[i] - before_[i]) / scale; });
     const double proposed = change > 0.0 ? 0.9 * dt * step_change_ / change : growth_ * step_;
-    step_ = std::clamp(proposed, 0.25 * step_, growth_ * step_);
+    step_ = std::min(max_step_, std::clamp(proposed, 0.25 * step_, growth_ * step_));
   }
   void shorten_to(double dt) { step_ = std::min(step_, dt); }
 
@@ -42,7 +44,7 @@ class ActivityStepControl {
   }
 
  private:
-  double step_change_, growth_, step_;
+  double step_change_, growth_, max_step_, step_;
   std::vector<double> before_;
 };
 

@@ -1,6 +1,7 @@
 #include "thermal/super_time_stepping.hpp"
 
 #include <cmath>
+#include <limits>
 
 #include "sph/parallel.hpp"
 
@@ -10,7 +11,13 @@ namespace {
 constexpr double safety = 0.8;  // of the Gershgorin limit: k rises as particles freeze within a step
 }
 
-SuperTimeStepping::SuperTimeStepping(double step_change, double first_step) : control_(step_change, first_step) {}
+SuperTimeStepping::SuperTimeStepping(double step_change, double first_step)
+    : control_(step_change, first_step, std::numeric_limits<double>::infinity()) {}
+
+double SuperTimeStepping::preferred_step(const ThermalModel&) const {
+  const int s = max_stages;
+  return dt_fe_ > 0.0 ? std::min(control_.step(), dt_fe_ * (s * s + s - 2.0) / 4.0) : control_.step();
+}
 
 double SuperTimeStepping::forward_euler_limit(const ThermalModel& model) {
   // dH_i/dt = sum_e a_e (T_j - T_i), T = H / C: the rate's Jacobian row i has
@@ -45,7 +52,8 @@ std::vector<double> SuperTimeStepping::advance(ThermalModel& model, double t, do
   const std::size_t n = model.free_count();
   const std::size_t nb = model.boundaries().size();
   control_.remember(model);
-  const int s = stages_for(dt, forward_euler_limit(model));
+  dt_fe_ = forward_euler_limit(model);
+  const int s = stages_for(dt, dt_fe_);
 
   // Legendre coefficients: b_j = (j^2 + j - 2) / (2 j (j + 1)), b_0 = b_1 = b_2 = 1/3.
   auto b = [](int j) { return j < 2 ? 1.0 / 3.0 : (j * j + j - 2.0) / (2.0 * j * (j + 1.0)); };

@@ -28,7 +28,9 @@ class SuperTimeStepping final : public Integrator {
  public:
   // step_change: see ActivityStepControl; first_step in seconds.
   SuperTimeStepping(double step_change, double first_step);
-  double preferred_step(const ThermalModel&) const override { return control_.step(); }
+  // The activity's step, at most max_stages stages long at the last
+  // forward-Euler limit seen.
+  double preferred_step(const ThermalModel&) const override;
   std::vector<double> advance(ThermalModel& model, double t, double dt) override;
   const char* name() const override { return "rkl2"; }
   const SuperTimeSteppingStatistics& statistics() const { return stats_; }
@@ -37,9 +39,11 @@ class SuperTimeStepping final : public Integrator {
   static double forward_euler_limit(const ThermalModel& model);
   // Stages needed for a step dt (at least 2).
   static int stages_for(double dt, double dt_fe);
+  static constexpr int max_stages = 100;
 
  private:
   ActivityStepControl control_;
+  double dt_fe_ = 0.0;  // forward-Euler limit at the last step (0: none yet)
   SuperTimeSteppingStatistics stats_;
   std::vector<double> Y0_, Yprev_, Yprev2_, L0_, L_, a_;
 };
