@@ -38,18 +38,36 @@ std::vector<Polyline> isolines(const std::vector<sph::Vec<2>>& points, const std
                                double level, double max_edge) {
   if (values.size() != points.size())
     throw std::invalid_argument("isolines: values and points differ in size");
-  if (points.size() > 0xffffffffu) throw std::invalid_argument("isolines: too many points");
-  if (!std::isfinite(level)) throw std::invalid_argument("isolines: level is not finite");
-  if (!(max_edge > 0.0)) throw std::invalid_argument("isolines: max_edge must be > 0");
-  for (std::size_t i = 0; i < points.size(); ++i)
-    if (!std::isfinite(values[i]) || !points[i].allFinite())
-      throw std::invalid_argument("isolines: non-finite point or value");
+  return IsolineMesh(points, max_edge).isolines(values, level);
+}
 
+IsolineMesh::IsolineMesh(std::vector<sph::Vec<2>> points, double max_edge) : points_(std::move(points)) {
+  const auto& P = points_;
+  if (P.size() > 0xffffffffu) throw std::invalid_argument("isolines: too many points");
+  if (!(max_edge > 0.0)) throw std::invalid_argument("isolines: max_edge must be > 0");
+  for (const auto& x : P)
+    if (!x.allFinite()) throw std::invalid_argument("isolines: non-finite point or value");
   std::vector<std::pair<K::Point_2, std::size_t>> input;
-  input.reserve(points.size());
-  for (std::size_t i = 0; i < points.size(); ++i)
-    input.emplace_back(K::Point_2(points[i][0], points[i][1]), i);
+  input.reserve(P.size());
+  for (std::size_t i = 0; i < P.size(); ++i) input.emplace_back(K::Point_2(P[i][0], P[i][1]), i);
   const Delaunay dt(input.begin(), input.end());
+  const double max_edge2 = max_edge * max_edge;  // inf stays inf
+  for (auto f = dt.finite_faces_begin(); f != dt.finite_faces_end(); ++f) {
+    std::array<std::uint32_t, 3> v;
+    double longest2 = 0.0;
+    for (int k = 0; k < 3; ++k) v[k] = static_cast<std::uint32_t>(f->vertex(k)->info());
+    for (int k = 0; k < 3; ++k) longest2 = std::max(longest2, (P[v[k]] - P[v[(k + 1) % 3]]).squaredNorm());
+    if (longest2 <= max_edge2) triangles_.push_back(v);
+  }
+}
+
+std::vector<Polyline> IsolineMesh::isolines(const std::vector<double>& values, double level) const {
+  const auto& points = points_;
+  if (values.size() != points.size())
+    throw std::invalid_argument("isolines: values and points differ in size");
+  if (!std::isfinite(level)) throw std::invalid_argument("isolines: level is not finite");
+  for (double v : values)
+    if (!std::isfinite(v)) throw std::invalid_argument("isolines: non-finite point or value");
 
   // Keyed by the Delaunay edge (sorted vertex indices), so both triangles
   // of an edge meet at the same node without any floating tolerance.
@@ -68,20 +86,14 @@ std::vector<Polyline> isolines(const std::vector<sph::Vec<2>>& points, const std
     return it->second;
   };
 
-  const double max_edge2 = max_edge * max_edge;  // inf stays inf
-  for (auto f = dt.finite_faces_begin(); f != dt.finite_faces_end(); ++f) {
-    std::size_t v[3];
+  for (const auto& v : triangles_) {
     bool above[3];
     int n_above = 0;
-    double longest2 = 0.0;
     for (int k = 0; k < 3; ++k) {
-      v[k] = f->vertex(k)->info();
       above[k] = values[v[k]] >= level;
       n_above += above[k];
     }
     if (n_above == 0 || n_above == 3) continue;
-    for (int k = 0; k < 3; ++k) longest2 = std::max(longest2, (points[v[k]] - points[v[(k + 1) % 3]]).squaredNorm());
-    if (longest2 > max_edge2) continue;
     // The vertex on its own side; the front crosses the two edges at it.
     int k = 0;
     while (above[k] != (n_above == 1)) ++k;

@@ -4,6 +4,8 @@
 // interpolant, so a field linear in x is reproduced exactly.
 #pragma once
 
+#include <array>
+#include <cstdint>
 #include <limits>
 #include <vector>
 
@@ -32,5 +34,18 @@ struct Polyline {
 // level, or max_edge not > 0.
 std::vector<Polyline> isolines(const std::vector<sph::Vec<2>>& points, const std::vector<double>& values,
                                double level, double max_edge = std::numeric_limits<double>::infinity());
+
+// The same, with the triangulation built once for points that do not move
+// (our particles): each call then costs one pass over the triangles.
+class IsolineMesh {
+ public:
+  IsolineMesh(std::vector<sph::Vec<2>> points, double max_edge = std::numeric_limits<double>::infinity());
+  std::vector<Polyline> isolines(const std::vector<double>& values, double level) const;
+  std::size_t size() const { return points_.size(); }
+
+ private:
+  std::vector<sph::Vec<2>> points_;
+  std::vector<std::array<std::uint32_t, 3>> triangles_;  // counterclockwise, longest edge <= max_edge
+};
 
 }  // namespace frostwall::post

@@ -120,7 +120,8 @@ void ShaftResults::snapshot(double t, const thermal::ThermalModel& model, const 
   };
   const auto& wedge = model_.shaft->wedge;
   std::vector<post::Polyline> kept;
-  for (const auto& line : post::isolines(curve_points_, values(curve_source_), 0.5, 3.0 * dx)) {
+  if (!curve_mesh_) curve_mesh_ = std::make_unique<post::IsolineMesh>(curve_points_, 3.0 * dx);
+  for (const auto& line : curve_mesh_->isolines(values(curve_source_), 0.5)) {
     post::Polyline piece;
     auto flush = [&] {
       if (piece.points.size() > 1) kept.push_back(piece);
@@ -139,7 +140,8 @@ void ShaftResults::snapshot(double t, const thermal::ThermalModel& model, const 
   json entry = {{"day", t / day}, {"file", file}};
   if (!ring_points_.empty()) {
     const std::string ring_file = "interface_ring" + stem.substr(5) + ".vtp";
-    io::write_vtp(out / ring_file, post::isolines(ring_points_, values(ring_source_), 0.5, 3.0 * dx));
+    if (!ring_mesh_) ring_mesh_ = std::make_unique<post::IsolineMesh>(ring_points_, 3.0 * dx);
+    io::write_vtp(out / ring_file, ring_mesh_->isolines(values(ring_source_), 0.5));
     entry["full_ring_file"] = ring_file;
   }
   interface_.push_back(entry);

@@ -5,6 +5,8 @@
 // files at the end (project-format.md section 2).
 #pragma once
 
+#include "post/isoline.hpp"
+
 #include <filesystem>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -60,8 +62,10 @@ class ShaftResults {
   nlohmann::json interface_ = nlohmann::json::array();
   // Points for the front curves: the particles and their copies around the
   // ring (full ring) or their mirror images (wedge), with the source index.
+  // Triangulated at the first snapshot, reused for every later one.
   std::vector<sph::Vec<2>> curve_points_, ring_points_;
   std::vector<std::uint32_t> curve_source_, ring_source_;
+  std::unique_ptr<post::IsolineMesh> curve_mesh_, ring_mesh_;
 };
 
 }  // namespace frostwall::run

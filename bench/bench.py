@@ -1,0 +1,122 @@
+#!/usr/bin/env python3
+"""frostwall benchmark: the single-ring sand case to 120 days.
+
+  paper mode    uniform 2.5 cm lattice, explicit forward Euler, beta = 0.1
+                (the SPH paper's method; pipes as discs as everywhere else)
+  default mode  whatever frostwall ships as default (no numerics given)
+
+Both run in this one invocation, one after the other, with the same output
+settings (summary and CSV only: VTK writing is disk speed, not the engine).
+Accuracy is judged against the converged run stored in bench/converged.json
+(made once with --converged; its settings are stored with it). Also: the
+default mode on 1 and 2 OpenMP threads, and the kernel's pair-update rate
+(build/bench/kernel_rate). Usage, from the repository root after set-up:
+
+  python3 bench/bench.py                 # everything (about 5 minutes here)
+  python3 bench/bench.py --converged     # (re)make bench/converged.json
+"""
+import argparse, copy, json, os, subprocess, sys, tempfile, time
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+EXE = os.path.join(ROOT, "build", "app", "frostwall")
+KERNEL = os.path.join(ROOT, "build", "bench", "kernel_rate")
+CASE = os.path.join(ROOT, "projects", "single_ring_sand.json")
+CONVERGED = os.path.join(ROOT, "bench", "converged.json")
+
+PAPER = {"integrator": "explicit", "beta": 0.1, "spacing": 0.025}
+CONVERGED_NUMERICS = {"integrator": "rkl2", "spacing": 0.0125, "step_change": 0.05}
+
+
+def run(numerics, threads, workdir, name):
+    """Runs the case with `numerics` (None: defaults); returns summary + peak RSS + wall time."""
+    with open(CASE) as f:
+        project = json.load(f)
+    if numerics is None:
+        project.pop("numerics", None)
+    else:
+        project["numerics"] = numerics
+    out = os.path.join(workdir, name)
+    project["output"] = {"directory": out, "vtk": False, "full_ring": False, "report": False}
+    path = os.path.join(workdir, name + ".json")
+    with open(path, "w") as f:
+        json.dump(project, f)
+    start = time.perf_counter()
+    proc = subprocess.Popen([EXE, "--threads", str(threads), "run", path],
+                            stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, env=dict(os.environ, CI="1"))
+    _, status, usage = os.wait4(proc.pid, 0)
+    wall = time.perf_counter() - start
+    err = proc.stderr.read().decode()
+    if os.waitstatus_to_exitcode(status) != 0:
+        sys.exit(f"bench: run {name} failed: {err}")
+    with open(os.path.join(out, "summary.json")) as f:
+        summary = json.load(f)
+    return {"summary": summary, "peak_mb": usage.ru_maxrss / 1024.0, "wall": wall}
+
+
+def facts(r):
+    s = r["summary"]
+    ob = {round(w["day"]): w["OB"]["thickness"] for w in s["wall"]}
+    run_ = s["run"]
+    evaluations = run_["steps"] + run_.get("stages", 0) if run_["integrator"] == "rkl2" else run_["steps"]
+    return {"particles": run_["particles"], "pairs": run_["pairs"], "steps": run_["steps"],
+            "evaluations": evaluations, "integrator": run_["integrator"], "spacing": run_["spacing"],
+            "closure_day": s["closure_time_days"], "OB60": ob.get(60), "OB100": ob.get(100),
+            "wall": r["wall"], "peak_mb": r["peak_mb"],
+            "pair_updates_per_s": evaluations * run_["pairs"] / r["wall"]}
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--converged", action="store_true", help="make bench/converged.json (slow) and stop")
+    args = ap.parse_args()
+    work = tempfile.mkdtemp(prefix="frostwall-bench-")
+
+    if args.converged:
+        r = facts(run(CONVERGED_NUMERICS, os.cpu_count() or 1, work, "converged"))
+        stored = {"numerics": CONVERGED_NUMERICS, "closure_day": r["closure_day"], "OB60": r["OB60"],
+                  "OB100": r["OB100"], "particles": r["particles"], "steps": r["steps"],
+                  "wall_seconds": round(r["wall"], 1),
+                  "made": time.strftime("%Y-%m-%d"), "command": "python3 bench/bench.py --converged"}
+        with open(CONVERGED, "w") as f:
+            json.dump(stored, f, indent=2)
+            f.write("\n")
+        print(json.dumps(stored, indent=2))
+        return
+
+    with open(CONVERGED) as f:
+        ref = json.load(f)
+    threads = os.cpu_count() or 1
+    modes = [("paper", PAPER), ("default", None)]
+    results = {name: facts(run(numerics, threads, work, name)) for name, numerics in modes}
+    scaling = {t: facts(run(None, t, work, f"default_t{t}"))["wall"] for t in (1, 2)}
+
+    def err_day(x):
+        return 100.0 * (x - ref["closure_day"]) / ref["closure_day"] if x is not None else float("nan")
+
+    def err_cm(x, key):
+        return 100.0 * (x - ref[key]) if x is not None else float("nan")
+
+    print(f"frostwall bench: single ring, sand, 120 days, {threads} threads; converged reference "
+          f"(spacing {ref['numerics']['spacing']} m, {ref['numerics']['integrator']}): closure {ref['closure_day']:.3f} d, "
+          f"OB {ref['OB60']:.3f} m @60 d, {ref['OB100']:.3f} m @100 d\n")
+    head = ("| mode | integrator | spacing | particles | steps | rate evaluations | wall s | closure day | error | "
+            "OB 60 d | error | OB 100 d | error | pair-updates/s | peak MB |")
+    print(head)
+    print("|" + "---|" * (head.count("|") - 1))
+    for name, r in results.items():
+        print(f"| {name} | {r['integrator']} | {r['spacing']} | {r['particles']} | {r['steps']} | {r['evaluations']} | "
+              f"{r['wall']:.1f} | {r['closure_day']:.3f} | {err_day(r['closure_day']):+.2f} % | "
+              f"{r['OB60']:.3f} m | {err_cm(r['OB60'], 'OB60'):+.1f} cm | {r['OB100']:.3f} m | "
+              f"{err_cm(r['OB100'], 'OB100'):+.1f} cm | {r['pair_updates_per_s']:.2e} | {r['peak_mb']:.0f} |")
+    ratio = results["paper"]["wall"] / results["default"]["wall"]
+    print(f"\nwall-time ratio paper / default: {ratio:.1f}x")
+    print(f"OpenMP scaling, default mode: 1 thread {scaling[1]:.1f} s, 2 threads {scaling[2]:.1f} s, "
+          f"speed-up {scaling[1] / scaling[2]:.2f}x")
+    if os.path.exists(KERNEL):
+        print("\nkernel (build/bench/kernel_rate):")
+        sys.stdout.flush()
+        subprocess.run([KERNEL], check=True)
+
+
+if __name__ == "__main__":
+    main()
