@@ -27,8 +27,8 @@ PAPER = {"integrator": "explicit", "beta": 0.1, "spacing": 0.025}
 CONVERGED_NUMERICS = {"integrator": "rkl2", "spacing": 0.0125, "step_change": 0.05}
 
 
-def run(numerics, threads, workdir, name):
-    """Runs the case with `numerics` (None: defaults); returns summary + peak RSS + wall time."""
+def run(numerics, threads, workdir, name, exe=EXE):
+    """Runs the case with `numerics` (None: defaults); returns summary, peak RSS, wall and CPU time."""
     with open(CASE) as f:
         project = json.load(f)
     if numerics is None:
@@ -41,7 +41,7 @@ def run(numerics, threads, workdir, name):
     with open(path, "w") as f:
         json.dump(project, f)
     start = time.perf_counter()
-    proc = subprocess.Popen([EXE, "--threads", str(threads), "run", path],
+    proc = subprocess.Popen([exe, "--threads", str(threads), "run", path],
                             stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, env=dict(os.environ, CI="1"))
     _, status, usage = os.wait4(proc.pid, 0)
     wall = time.perf_counter() - start
@@ -50,7 +50,8 @@ def run(numerics, threads, workdir, name):
         sys.exit(f"bench: run {name} failed: {err}")
     with open(os.path.join(out, "summary.json")) as f:
         summary = json.load(f)
-    return {"summary": summary, "peak_mb": usage.ru_maxrss / 1024.0, "wall": wall}
+    return {"summary": summary, "peak_mb": usage.ru_maxrss / 1024.0, "wall": wall,
+            "cpu": usage.ru_utime + usage.ru_stime}
 
 
 def facts(r):
@@ -61,7 +62,7 @@ def facts(r):
     return {"particles": run_["particles"], "pairs": run_["pairs"], "steps": run_["steps"],
             "evaluations": evaluations, "integrator": run_["integrator"], "spacing": run_["spacing"],
             "closure_day": s["closure_time_days"], "OB60": ob.get(60), "OB100": ob.get(100),
-            "wall": r["wall"], "peak_mb": r["peak_mb"],
+            "wall": r["wall"], "cpu": r["cpu"], "peak_mb": r["peak_mb"],
             "pair_updates_per_s": evaluations * run_["pairs"] / r["wall"]}
 
 
@@ -72,7 +73,7 @@ def main():
     work = tempfile.mkdtemp(prefix="frostwall-bench-")
 
     if args.converged:
-        r = facts(run(CONVERGED_NUMERICS, os.cpu_count() or 1, work, "converged"))
+        r = facts(run(CONVERGED_NUMERICS, 1, work, "converged"))  # results do not depend on threads
         stored = {"numerics": CONVERGED_NUMERICS, "closure_day": r["closure_day"], "OB60": r["OB60"],
                   "OB100": r["OB100"], "particles": r["particles"], "steps": r["steps"],
                   "wall_seconds": round(r["wall"], 1),

@@ -44,6 +44,26 @@ int main() {
   for (std::size_t i = 0; i < x.size(); ++i) x[i] = model.temperature()[i] + 1e-3 * double(i % 17);
 
   std::printf("  %zu particles, %zu pairs\n", n, pairs);
+  // The first engine's loop: the harmonic mean 4 k_i k_j / (k_i + k_j)
+  // computed in the loop for every pair (a division per pair), instead of
+  // coefficients cached and refreshed only next to freezing particles.
+  std::vector<double> k(model.size());
+  for (std::size_t i = 0; i < k.size(); ++i) k[i] = model.conductivity(i, 0);
+  omp_set_num_threads(1);
+  const double inline_mean = seconds_per_call([&] {
+    for (std::size_t i = 0; i < n; ++i) {
+      const double Ti = x[i], ki = k[i];
+      double sum = 0.0;
+      for (std::size_t e = P.row_start[i]; e < P.row_start[i + 1]; ++e) {
+        const std::uint32_t j = P.column[e];
+        sum += P.weight[e] * (4.0 * ki * k[j] / (ki + k[j])) * (x[j] - Ti);
+      }
+      y[i] = sum;
+    }
+  });
+  const double cached = seconds_per_call([&] { model.conduction_rate(rate); });
+  std::printf("  1 thread: harmonic mean per pair in the loop %.2e pairs/s; cached coefficients %.2e pairs/s (%.2fx)\n\n",
+              pairs / inline_mean, pairs / cached, inline_mean / cached);
   std::printf("  threads  conduction_rate     plain CSR gather    kernel / gather\n");
   for (int threads : {1, 2}) {
     omp_set_num_threads(threads);
