@@ -4,12 +4,16 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fmt/core.h>
+#include <fstream>
 #include <iostream>
+#include <sstream>
 #include <omp.h>
 #include <unistd.h>
 
 #include "project/project.hpp"
+#include "report/report.hpp"
 #include "run/run_project.hpp"
 
 namespace {
@@ -45,6 +49,12 @@ int run_command(const std::string& file) {
   }
   for (const auto& w : p.warnings) std::cerr << "warning: " << w << "\n";
   run::RunOptions options;
+  {  // the text as given, recorded beside the results (project.json)
+    std::ifstream in(file, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    options.project_text = text.str();
+  }
   options.progress = progress_printer(p.time);
   options.note = [](const std::string& s) { std::cerr << s << "\n"; };
   try {
@@ -60,6 +70,21 @@ int run_command(const std::string& file) {
   return 0;
 }
 
+// Rebuilds report.html from the files of an output directory.
+int report_command(const std::string& dir) {
+  if (!std::filesystem::is_regular_file(std::filesystem::path(dir) / "summary.json")) {
+    std::cerr << dir << ": no summary.json here; give the output directory of a frostwall run\n";
+    return 2;
+  }
+  try {
+    std::cerr << "wrote " << frostwall::report::write_report(dir).string() << "\n";
+  } catch (const std::exception& e) {
+    std::cerr << "frostwall: report failed: " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -69,6 +94,9 @@ int main(int argc, char** argv) {
   std::string project_file;
   int threads = 0;
   run->add_option("project", project_file, "project file (JSON)")->required();
+  auto* report = app.add_subcommand("report", "rebuild report.html from the files of an output directory");
+  std::string report_dir;
+  report->add_option("output-dir", report_dir, "output directory of a run")->required();
   app.add_option("--threads", threads, "OpenMP threads (default: all cores)");
   app.set_version_flag("--version", FROSTWALL_VERSION);
   try {
@@ -78,5 +106,6 @@ int main(int argc, char** argv) {
   }
   if (threads > 0) omp_set_num_threads(threads);
   if (run->parsed()) return run_command(project_file);
+  if (report->parsed()) return report_command(report_dir);
   return 2;
 }
