@@ -1,6 +1,7 @@
 // The frostwall command. Exit status: 0 done, 2 bad input (nothing
 // written), 1 failure during a run.
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -15,6 +16,7 @@
 #include "project/project.hpp"
 #include "report/report.hpp"
 #include "run/run_project.hpp"
+#include "study/study_report.hpp"
 
 namespace {
 
@@ -85,6 +87,34 @@ int report_command(const std::string& dir) {
   return 0;
 }
 
+// Runs every variant of a study file, then writes study.html and study.csv.
+int study_command(const std::string& file, int jobs, int threads) {
+  using namespace frostwall;
+  study::Study s;
+  try {
+    s = study::load_study(file);
+  } catch (const study::StudyError& e) {
+    for (const auto& line : e.problems()) std::cerr << line << "\n";
+    return 2;
+  }
+  study::StudyOptions options;
+  options.jobs = jobs;
+  options.threads = threads;
+  options.note = [](const std::string& line) { std::cerr << line << "\n"; };
+  std::cerr << "study: " << s.variants.size() << " variants into " << s.output_directory.string() << "\n";
+  study::StudyRun run;
+  try {
+    run = study::run_and_write_study(s, options);
+  } catch (const std::exception& e) {
+    std::cerr << "frostwall: study failed: " << e.what() << "\n";
+    return 1;
+  }
+  const auto failed = std::count_if(run.variants.begin(), run.variants.end(), [](const auto& v) { return !v.ok; });
+  std::cerr << fmt::format("wrote {} ({} variants, {} failed, {:.1f} s)\n", (s.output_directory / "study.html").string(),
+                           run.variants.size(), failed, run.seconds);
+  return failed > 0 ? 1 : 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -97,7 +127,12 @@ int main(int argc, char** argv) {
   auto* report = app.add_subcommand("report", "rebuild report.html from the files of an output directory");
   std::string report_dir;
   report->add_option("output-dir", report_dir, "output directory of a run")->required();
-  app.add_option("--threads", threads, "OpenMP threads (default: all cores)");
+  auto* study = app.add_subcommand("study", "run the variants of a study file; write study.html and study.csv");
+  std::string study_file;
+  int jobs = 0;
+  study->add_option("study", study_file, "study file (JSON)")->required();
+  study->add_option("--jobs", jobs, "variants at once, each on --threads threads (default: one per core, 1 thread each)");
+  app.add_option("--threads", threads, "OpenMP threads (default: all cores; in a study: per variant)");
   app.set_version_flag("--version", FROSTWALL_VERSION);
   try {
     app.parse(argc, argv);
@@ -107,5 +142,6 @@ int main(int argc, char** argv) {
   if (threads > 0) omp_set_num_threads(threads);
   if (run->parsed()) return run_command(project_file);
   if (report->parsed()) return report_command(report_dir);
+  if (study->parsed()) return study_command(study_file, jobs, threads);
   return 2;
 }

@@ -135,7 +135,9 @@ std::string render_svg(const Chart& chart) {
   o += "</g>\n<g fill=\"#444\" stroke=\"#fff\" stroke-width=\"3\" paint-order=\"stroke\" font-size=\"" + num(small_font) + "\">";
   for (const auto& g : chart.guides) {
     if (g.label.empty()) continue;
-    if (g.vertical)
+    if (g.vertical && px(g.value) > left + 0.7 * pw)  // near the right edge: label to the left of the line
+      o += fmt::format(R"(<text x="{}" y="{}" text-anchor="end">{}</text>)", num(px(g.value) - 3), num(top + 11), escape(g.label));
+    else if (g.vertical)
       o += fmt::format(R"(<text x="{}" y="{}">{}</text>)", num(px(g.value) + 3), num(top + 11), escape(g.label));
     else
       o += fmt::format(R"(<text x="{}" y="{}" text-anchor="end">{}</text>)", num(left + pw - 3), num(py(g.value) - 4),
