@@ -154,16 +154,18 @@ RgbaImage FieldMap::raster(const std::vector<double>& temperature, const ColourS
   return image;
 }
 
-std::string FieldMap::svg(const std::vector<double>& temperature, const ColourScale& colours,
-                          const std::vector<post::Polyline>& fronts, bool fronts_whole, const MapOverlay& overlay,
-                          const std::string& title) const {
+std::string FieldMap::html(const std::vector<double>& temperature, const ColourScale& colours,
+                           const std::vector<post::Polyline>& fronts, bool fronts_whole, const MapOverlay& overlay,
+                           const std::string& title) const {
   const int n = window_.pixels;
   const double scale = n / window_.size;  // px per metre
   auto px = [&](const Vec2& x) { return std::pair{(x[0] - window_.x0) * scale, (window_.y0 + window_.size - x[1]) * scale}; };
-  std::string o = fmt::format(
-      R"(<svg class="map" viewBox="0 0 {0} {0}" width="{0}" height="{0}" role="img" font-family="{1}" font-size="13"><title>{2}</title>)",
+  // The raster is an <img>; the vectors lie over it in an SVG of the same size.
+  std::string o = fmt::format(R"(<div class="map"><img src="{}" width="{}" height="{}" alt="temperature map, {}">)",
+                              png_data_uri(raster(temperature, colours)), n, n, svg::escape(title));
+  o += fmt::format(
+      R"(<svg viewBox="0 0 {0} {0}" width="{0}" height="{0}" role="img" font-family="{1}" font-size="13"><title>{2}</title>)",
       n, svg::font_family, svg::escape(title));
-  o += fmt::format(R"(<image x="0" y="0" width="{0}" height="{0}" href="{1}"/>)", n, png_data_uri(raster(temperature, colours)));
   if (overlay.domain_radius > 0.0) {
     const auto [cx, cy] = px(Vec2::Zero());
     o += fmt::format(R"(<circle cx="{}" cy="{}" r="{}" fill="none" stroke="#888" stroke-width="0.8"/>)", num(cx), num(cy),
@@ -205,7 +207,7 @@ std::string FieldMap::svg(const std::vector<double>& temperature, const ColourSc
       R"(<path d="M12 {2} v5 h{3} v-5" fill="none" stroke="#111" stroke-width="1.5"/>)"
       R"(<text x="{4}" y="{5}" text-anchor="middle" font-size="11">{6} m</text>)",
       n - 32, num(len + 12), n - 12, num(len), num(12 + len / 2), n - 16, tick_label(metres, bar.decimals));
-  o += fmt::format(R"(<rect x="0.5" y="0.5" width="{0}" height="{0}" fill="none" stroke="#222"/></svg>)", n - 1);
+  o += fmt::format(R"(<rect x="0.5" y="0.5" width="{0}" height="{0}" fill="none" stroke="#222"/></svg></div>)", n - 1);
   return o;
 }
 

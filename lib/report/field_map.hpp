@@ -3,8 +3,8 @@
 // (post::FieldSampler, mirror images included), every pixel folded into the
 // simulated wedge first, so one wedge draws the whole ring. The weights are
 // computed once (particles do not move) and reused for every snapshot. The
-// raster goes into an SVG with the pipes, the excavation, the frozen front
-// and a scale bar drawn on top as vectors.
+// raster (a PNG <img>) gets the pipes, the excavation, the frozen front and
+// a scale bar drawn on top as vectors (an SVG laid over it).
 #pragma once
 
 #include <memory>
@@ -48,10 +48,11 @@ class FieldMap {
   // Pixels outside the domain, or with no particle in reach, are transparent.
   RgbaImage raster(const std::vector<double>& temperature, const ColourScale& colours) const;
 
-  // The map as inline SVG: the raster, then the overlay, the front curves
-  // (wedge curves, copied around by the symmetry), a title and a scale bar.
-  // `fronts_whole`: the curves already cover the whole section (not copied).
-  std::string svg(const std::vector<double>& temperature, const ColourScale& colours,
+  // The map as HTML: the raster as an <img> (PNG data URI) under an SVG with
+  // the overlay, the front curves (wedge curves copied around by the
+  // symmetry unless `fronts_whole`: they cover the section already), a title
+  // and a scale bar.
+  std::string html(const std::vector<double>& temperature, const ColourScale& colours,
                   const std::vector<post::Polyline>& fronts, bool fronts_whole, const MapOverlay& overlay,
                   const std::string& title) const;
 

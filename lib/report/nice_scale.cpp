@@ -41,6 +41,16 @@ NiceScale nice_scale(double lo, double hi, int target) {
   return s;
 }
 
+NiceScale tight_scale(double lo, double hi) {
+  widen_if_flat(lo, hi);
+  NiceScale best = nice_scale(lo, hi, 4);
+  for (int target = 5; target <= 8; ++target) {
+    NiceScale s = nice_scale(lo, hi, target);
+    if (s.ticks.size() >= 4 && (s.hi - s.lo) < (best.hi - best.lo) * (1 - 1e-9)) best = std::move(s);
+  }
+  return best;
+}
+
 NiceScale ticks_within(double lo, double hi, int target) {
   widen_if_flat(lo, hi);
   NiceScale s;

@@ -18,6 +18,10 @@ struct NiceScale {
 // About `target` intervals covering [lo, hi]; a degenerate range is widened.
 NiceScale nice_scale(double lo, double hi, int target = 5);
 
+// Of the nice scales with 4 to 8 intervals, the one that pads [lo, hi]
+// least (ties: fewer ticks): a time axis of 12 days ends at 12, not 15.
+NiceScale tight_scale(double lo, double hi);
+
 // Ticks of `step`'s scale that fall inside [lo, hi], without widening the
 // range (a colour bar whose ends are the data's).
 NiceScale ticks_within(double lo, double hi, int target = 5);

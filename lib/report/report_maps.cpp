@@ -139,7 +139,7 @@ void add_maps(const RunRecord& run, json& view) {
           break;
         }
     const std::string title = fmt::format("day {:g}", snapshots[k].time);
-    maps.push_back({{"svg", map.svg(fields[k].temperature, colours, curves, whole, overlay, title)},
+    maps.push_back({{"html", map.html(fields[k].temperature, colours, curves, whole, overlay, title)},
                     {"caption", fmt::format("Temperature on day {:g}; black line: frozen front (liquid fraction 0.5).", snapshots[k].time)}});
   }
   view["maps"] = maps;

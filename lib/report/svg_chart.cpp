@@ -80,7 +80,7 @@ std::string render_svg(const Chart& chart) {
   for (const auto& g : chart.guides) (g.vertical ? xr : yr).add(g.value);
   if (xr.empty()) xr.add(0), xr.add(1);
   if (yr.empty()) yr.add(0), yr.add(1);
-  const NiceScale xs = nice_scale(xr.lo, xr.hi, 6), ys = nice_scale(yr.lo, yr.hi, 5);
+  const NiceScale xs = tight_scale(xr.lo, xr.hi), ys = tight_scale(yr.lo, yr.hi);
 
   // Margins from the labels they hold.
   double y_tick_width = 0;

@@ -206,7 +206,7 @@ Study parse_study(const std::string& text, const fs::path& directory, const std:
   std::vector<Override> overrides = read_overrides(variants_node);
   const std::vector<Parameter> product = read_product(product_node);
   if (!variants_node.present() && !product_node.present())
-    root.problem("a study needs \"variants\" (named merge patches), \"product\" (parameter lists), or both");
+    problems.push_back(source + ": a study needs \"variants\" (named merge patches), \"product\" (parameter lists), or both");
   if (!problems.empty() || !base.is_object()) {
     if (problems.empty()) problems.push_back("base: the base project could not be read");
     throw StudyError(std::move(problems));
