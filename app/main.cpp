@@ -1,16 +1,22 @@
 // The frostwall command. Exit status: 0 done, 2 bad input (nothing
 // written), 1 failure during a run.
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fmt/core.h>
+#include <fstream>
 #include <iostream>
+#include <sstream>
 #include <omp.h>
 #include <unistd.h>
 
 #include "project/project.hpp"
+#include "report/report.hpp"
 #include "run/run_project.hpp"
+#include "study/study_report.hpp"
 
 namespace {
 
@@ -45,6 +51,12 @@ int run_command(const std::string& file) {
   }
   for (const auto& w : p.warnings) std::cerr << "warning: " << w << "\n";
   run::RunOptions options;
+  {  // the text as given, recorded beside the results (project.json)
+    std::ifstream in(file, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    options.project_text = text.str();
+  }
   options.progress = progress_printer(p.time);
   options.note = [](const std::string& s) { std::cerr << s << "\n"; };
   try {
@@ -60,6 +72,49 @@ int run_command(const std::string& file) {
   return 0;
 }
 
+// Rebuilds report.html from the files of an output directory.
+int report_command(const std::string& dir) {
+  if (!std::filesystem::is_regular_file(std::filesystem::path(dir) / "summary.json")) {
+    std::cerr << dir << ": no summary.json here; give the output directory of a frostwall run\n";
+    return 2;
+  }
+  try {
+    std::cerr << "wrote " << frostwall::report::write_report(dir).string() << "\n";
+  } catch (const std::exception& e) {
+    std::cerr << "frostwall: report failed: " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}
+
+// Runs every variant of a study file, then writes study.html and study.csv.
+int study_command(const std::string& file, int jobs, int threads) {
+  using namespace frostwall;
+  study::Study s;
+  try {
+    s = study::load_study(file);
+  } catch (const study::StudyError& e) {
+    for (const auto& line : e.problems()) std::cerr << line << "\n";
+    return 2;
+  }
+  study::StudyOptions options;
+  options.jobs = jobs;
+  options.threads = threads;
+  options.note = [](const std::string& line) { std::cerr << line << "\n"; };
+  std::cerr << "study: " << s.variants.size() << " variants into " << s.output_directory.string() << "\n";
+  study::StudyRun run;
+  try {
+    run = study::run_and_write_study(s, options);
+  } catch (const std::exception& e) {
+    std::cerr << "frostwall: study failed: " << e.what() << "\n";
+    return 1;
+  }
+  const auto failed = std::count_if(run.variants.begin(), run.variants.end(), [](const auto& v) { return !v.ok; });
+  std::cerr << fmt::format("wrote {} ({} variants, {} failed, {:.1f} s)\n", (s.output_directory / "study.html").string(),
+                           run.variants.size(), failed, run.seconds);
+  return failed > 0 ? 1 : 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -69,7 +124,15 @@ int main(int argc, char** argv) {
   std::string project_file;
   int threads = 0;
   run->add_option("project", project_file, "project file (JSON)")->required();
-  app.add_option("--threads", threads, "OpenMP threads (default: all cores)");
+  auto* report = app.add_subcommand("report", "rebuild report.html from the files of an output directory");
+  std::string report_dir;
+  report->add_option("output-dir", report_dir, "output directory of a run")->required();
+  auto* study = app.add_subcommand("study", "run the variants of a study file; write study.html and study.csv");
+  std::string study_file;
+  int jobs = 0;
+  study->add_option("study", study_file, "study file (JSON)")->required();
+  study->add_option("--jobs", jobs, "variants at once, each on --threads threads (default: one per core, 1 thread each)");
+  app.add_option("--threads", threads, "OpenMP threads (default: all cores; in a study: per variant)");
   app.set_version_flag("--version", FROSTWALL_VERSION);
   try {
     app.parse(argc, argv);
@@ -78,5 +141,7 @@ int main(int argc, char** argv) {
   }
   if (threads > 0) omp_set_num_threads(threads);
   if (run->parsed()) return run_command(project_file);
+  if (report->parsed()) return report_command(report_dir);
+  if (study->parsed()) return study_command(study_file, jobs, threads);
   return 2;
 }

@@ -16,6 +16,7 @@
 #include "io/atomic_file.hpp"
 #include "io/point_cloud_vtk.hpp"
 #include "post/front.hpp"
+#include "report/report.hpp"
 #include "thermal/thermal_model.hpp"
 #include "thermal/time_loop.hpp"
 
@@ -121,6 +122,7 @@ void run_project(const Project& p, const RunOptions& options) {
   // ---- output
   const fs::path out = p.output.directory;
   fs::create_directories(out);
+  if (!options.project_text.empty()) io::write_text_file(out / "project.json", options.project_text);
   const auto stems = snapshot_stems(p.time, "field");
   std::vector<io::PvdEntry> pvd, ring_pvd;
   const bool write_ring = p.output.vtk && p.output.full_ring && built.shaft && !particles.mirrors.empty();
@@ -205,6 +207,7 @@ void run_project(const Project& p, const RunOptions& options) {
   if (const auto* rkl2 = dynamic_cast<const thermal::SuperTimeStepping*>(built.integrator.get()))
     summary["run"]["stages"] = rkl2->statistics().stages;
   io::write_text_file(out / "summary.json", summary.dump(2) + "\n");
+  if (p.output.report) report::write_report(out);  // from the files just written
 }
 
 }  // namespace frostwall::run

@@ -14,6 +14,9 @@ struct RunOptions {
   std::function<void(double, double)> progress;
   // Called with one-line notes worth telling the user (wedge chosen, spacing fitted).
   std::function<void(const std::string&)> note;
+  // The project file's text as given; written as project.json so that the
+  // report can be rebuilt from the output directory alone. May be empty.
+  std::string project_text;
 };
 
 // Writes everything into project.output.directory (created if needed).

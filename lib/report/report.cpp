@@ -1,0 +1,192 @@
+#include "report/report.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fmt/core.h>
+
+#include "io/atomic_file.hpp"
+#include "report/mustache_view.hpp"
+#include "report/nice_scale.hpp"
+#include "report/report_sections.hpp"
+#include "report/run_files.hpp"
+#include "report/templates.hpp"
+
+namespace frostwall::report {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace detail {
+
+std::string number(double v, int decimals) { return std::isfinite(v) ? tick_label(v, decimals) : "–"; }
+std::string number(const json& v, int decimals) { return v.is_number() ? number(v.get<double>(), decimals) : "–"; }
+
+namespace {
+
+json row(const std::string& label, const std::string& value) { return {{"label", label}, {"value", value}}; }
+
+std::string extent(const json& stretch) {
+  if (!stretch.is_object() || !stretch["inner"].is_number()) return "–";
+  return number(stretch["inner"], 2) + " – " + number(stretch["outer"], 2);
+}
+
+}  // namespace
+
+void add_headline(const RunRecord& run, json& view) {
+  const auto& s = run.summary;
+  view["shaft"] = run.shaft();
+  view["plain"] = !run.shaft();
+  view["front_note"] = "";
+  view["snapshots"] = json::array();
+  for (const char* key : {"closure_value", "closure_note", "last_day", "last_min_thickness", "last_mean_temperature",
+                          "design_value", "design_note", "design_class"})
+    view[key] = "";
+  if (!run.shaft()) {
+    const auto& front = s.value("front", json::array());
+    const std::string unit = s.value("run", json::object()).value("time_unit", "s");
+    view["front_note"] = front.empty() || !front.back()[1].is_number()
+                             ? std::string("No frozen front was found.")
+                             : fmt::format("Frozen front at {} m from the cooled face after {:g} {}.",
+                                           number(front.back()[1], 4), front.back()[0].get<double>(), unit);
+    return;
+  }
+  const auto& closure = s.value("closure_time_days", json());
+  const auto& wall = s["wall"];
+  const std::string end_day = wall.empty() ? "the end" : number(wall.back()["day"], 0);
+  view["closure_value"] = closure.is_number() ? "day " + number(closure, 1) : "not closed";
+  view["closure_note"] = closure.is_number() ? "the frozen columns join into a ring" : "not within the run (to day " + end_day + ")";
+  json rows = json::array();
+  for (const auto& w : wall)
+    rows.push_back({{"day", fmt::format("{:g}", w["day"].get<double>())},
+                    {"min_thickness", number(w["min_thickness"], 2)},
+                    {"OA_thickness", number(w["OA"]["thickness"], 2)},
+                    {"OA_extent", extent(w["OA"])},
+                    {"OB_thickness", number(w["OB"]["thickness"], 2)},
+                    {"OB_extent", extent(w["OB"])},
+                    {"mean_temperature", number(w["mean_temperature_OB"], 2)}});
+  view["snapshots"] = rows;
+  if (!wall.empty()) {
+    view["last_day"] = fmt::format("{:g}", wall.back()["day"].get<double>());
+    view["last_min_thickness"] = number(wall.back()["min_thickness"], 2) + " m";
+    view["last_mean_temperature"] =
+        wall.back()["mean_temperature_OB"].is_number() ? number(wall.back()["mean_temperature_OB"], 1) + " °C" : "–";
+  }
+  const auto& d = s.value("design", json::object());
+  const bool has_target = d.value("required_thickness", json()).is_number() || d.value("max_mean_temperature", json()).is_number();
+  if (!has_target) {
+    view["design_value"] = "no targets";
+    view["design_note"] = "the project sets no design targets";
+    return;
+  }
+  std::string targets;
+  if (d["required_thickness"].is_number()) targets = "thinnest wall ≥ " + number(d["required_thickness"], 2) + " m";
+  if (d["max_mean_temperature"].is_number())
+    targets += (targets.empty() ? "" : " and ") + ("mean T on OB ≤ " + number(d["max_mean_temperature"], 1) + " °C");
+  const bool pass = d.value("pass", false);
+  view["design_value"] = pass ? "PASS" : "FAIL";
+  view["design_class"] = pass ? "pass" : "fail";
+  view["design_note"] = pass ? targets + ", met on day " + number(d["reached_day"], 1)
+                             : targets + ": not met by day " + end_day;
+}
+
+void add_run_facts(const RunRecord& run, json& view) {
+  const auto& r = run.summary.value("run", json::object());
+  json rows = json::array();
+  auto fact = [&](const char* key, const std::string& label, auto&& format) {
+    if (r.contains(key)) rows.push_back(row(label, format(r[key])));
+  };
+  auto integer = [](const json& v) { return v.is_number() ? fmt::format("{}", v.get<long long>()) : v.dump(); };
+  auto text = [](const json& v) { return v.is_string() ? v.get<std::string>() : v.dump(); };
+  fact("particles", "free particles", integer);
+  fact("boundary_particles", "fixed-temperature particles", integer);
+  fact("pairs", "particle pairs", integer);
+  fact("steps", "time steps", integer);
+  fact("spacing", "particle spacing", [](const json& v) { return number(v, 4) + " m"; });
+  fact("smoothing_length", "smoothing length h", [](const json& v) { return number(v, 4) + " m"; });
+  fact("kernel", "kernel", text);
+  fact("integrator", "integrator", text);
+  fact("threads", "threads", integer);
+  fact("wall_seconds", "wall time", [](const json& v) { return number(v, 1) + " s"; });
+  rows.push_back(row("frostwall version", run.summary.value("frostwall_version", "?")));
+  if (run.summary.contains("heat_balance")) {
+    const auto& hb = run.summary["heat_balance"];
+    double from = 0.0;
+    for (const auto& [name, q] : hb["from_boundaries"].items()) from += q.get<double>();
+    const double stored = hb.value("stored_change", 0.0);
+    rows.push_back(row("heat balance", fmt::format("stored change {} MJ/m, from the boundaries {} MJ/m", number(stored / 1e6, 2),
+                                                   number(from / 1e6, 2))));
+  }
+  view["run_rows"] = rows;
+
+  // Links to the other files of the run, as they are in the directory.
+  const std::vector<std::pair<std::string, std::string>> known{
+      {"summary.json", "results in machine-readable form (closure, wall, design, sensors, run)"},
+      {"project.json", "the project file as given"},
+      {"wall.csv", "wall extents and OB temperature over time"},
+      {"profiles_OA.csv", "temperature along OA at the snapshots"},
+      {"profiles_OB.csv", "temperature along OB at the snapshots"},
+      {"monitoring.csv", "sensor temperatures over time"},
+      {"field.pvd", "ParaView: the wedge's particles at every snapshot"},
+      {"ring.pvd", "ParaView: the whole ring at every snapshot"},
+  };
+  json files = json::array();
+  for (const auto& [name, what] : known)
+    if (fs::exists(run.dir / name)) files.push_back({{"name", name}, {"href", name}, {"description", what}});
+  std::vector<std::string> series;
+  for (const auto& entry : fs::directory_iterator(run.dir)) {
+    const std::string name = entry.path().filename().string();
+    if ((name.rfind("field_", 0) == 0 || name.rfind("ring_", 0) == 0) && entry.path().extension() == ".vtu") series.push_back(name);
+    if (name.rfind("interface", 0) == 0 && entry.path().extension() == ".vtp") series.push_back(name);
+  }
+  std::sort(series.begin(), series.end());
+  for (const auto& name : series) {
+    const std::string what = name.rfind("field_", 0) == 0  ? "particles of the simulated region (VTK)"
+                             : name.rfind("ring_", 0) == 0 ? "whole ring (VTK)"
+                                                           : "frozen front curves (VTK polylines)";
+    files.push_back({{"name", name}, {"href", name}, {"description", what}});
+  }
+  view["files"] = files;
+}
+
+}  // namespace detail
+
+json report_view(const fs::path& dir) {
+  detail::RunRecord run;
+  run.dir = dir;
+  if (!fs::exists(dir / "summary.json")) throw std::runtime_error(dir.string() + ": no summary.json (not a frostwall output directory?)");
+  run.summary = read_json(dir / "summary.json");
+  std::vector<std::string> warnings;
+  for (const auto& w : run.summary.value("warnings", json::array())) warnings.push_back(w.get<std::string>());
+  if (const auto text = read_text(dir / "project.json")) {
+    try {
+      run.project = project::parse_project(*text, "project.json");
+    } catch (const project::ProjectError& e) {
+      warnings.push_back("project.json in the output directory does not load: " + e.problems().front());
+    }
+  }
+  json view = json::object();
+  view["version"] = run.summary.value("frostwall_version", FROSTWALL_VERSION);
+  view["title"] = run.summary.value("project", "frostwall run");
+  view["description"] = run.project && !run.project->description.empty() ? json(run.project->description) : json(false);
+  view["css"] = std::string(templates::style_css);
+  json list = json::array();
+  for (const auto& w : warnings) list.push_back({{"text", w}});
+  view["warnings"] = list;
+  view["has_warnings"] = !warnings.empty();
+  detail::add_headline(run, view);
+  detail::add_project(run, view);
+  detail::add_maps(run, view);
+  detail::add_charts(run, view);
+  detail::add_run_facts(run, view);
+  return view;
+}
+
+std::string render_report(const fs::path& dir) { return render_template(templates::report_html, report_view(dir)); }
+
+fs::path write_report(const fs::path& dir) {
+  const fs::path file = dir / "report.html";
+  io::write_text_file(file, render_report(dir));
+  return file;
+}
+
+}  // namespace frostwall::report

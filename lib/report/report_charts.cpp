@@ -1,0 +1,177 @@
+// The report's plots: wall thickness and OB temperature over time (wall.csv),
+// temperature along OA and OB at the snapshot days (profiles_*.csv, the
+// paper's Fig. 5), sensor readings (monitoring.csv); the front position of
+// a plain geometry (summary.json).
+#include <algorithm>
+#include <cmath>
+#include <fmt/core.h>
+#include <limits>
+
+#include "geometry/layout.hpp"
+#include "report/report_sections.hpp"
+#include "report/run_files.hpp"
+#include "report/svg_chart.hpp"
+
+namespace frostwall::report::detail {
+
+using nlohmann::json;
+namespace fs = std::filesystem;
+
+namespace {
+
+json figure(const std::string& id, const std::string& title, const Chart& chart, const std::string& caption) {
+  return {{"id", id}, {"title", title}, {"svg", render_svg(chart)}, {"caption", caption}};
+}
+
+std::optional<double> closure_day(const json& summary) {
+  const auto& c = summary.value("closure_time_days", json());
+  return c.is_number() ? std::optional<double>(c.get<double>()) : std::nullopt;
+}
+
+std::optional<double> design_value(const json& summary, const char* key) {
+  if (!summary.contains("design") || !summary["design"].contains(key) || !summary["design"][key].is_number()) return std::nullopt;
+  return summary["design"][key].get<double>();
+}
+
+// Ring radii of the layout, for marks on the profile plots.
+std::vector<double> ring_radii(const RunRecord& run) {
+  std::vector<double> radii;
+  if (!run.project) return radii;
+  const auto* s = std::get_if<project::ShaftSection>(&run.project->geometry);
+  if (!s) return radii;
+  for (const auto& p : geometry::pipe_positions(s->layout)) {
+    const double r = std::hypot(p.x, p.y);
+    if (std::none_of(radii.begin(), radii.end(), [&](double q) { return std::abs(q - r) < 1e-6; })) radii.push_back(r);
+  }
+  return radii;
+}
+
+void wall_charts(const RunRecord& run, json& charts) {
+  if (!fs::exists(run.dir / "wall.csv")) return;
+  const CsvTable wall = read_csv(run.dir / "wall.csv");
+  const auto* day = wall.column("day");
+  if (!day) return;
+  const auto closure = closure_day(run.summary);
+  std::vector<Guide> closure_guide;
+  if (closure) closure_guide.push_back({true, *closure, fmt::format("closure, day {}", number(*closure, 1))});
+
+  Chart t;
+  t.title = "frozen wall thickness over time";
+  t.x_label = "time (d)";
+  t.y_label = "wall thickness (m)";
+  t.x_include = {0.0};
+  t.y_include = {0.0};
+  // The thinnest ray is often OB itself: drawn last, thin, on top of a wide OB.
+  const struct { const char* column; const char* label; std::string colour; bool dashed; double width; } lines[] = {
+      {"OA_thickness_m", "OA (through a pipe)", "#0072B2", true, 1.6},
+      {"OB_thickness_m", "OB (between pipes)", "#E69F00", false, 3.2},
+      {"min_thickness_m", "thinnest ray", "#000000", false, 1.2},
+  };
+  for (const auto& l : lines)
+    if (const auto* c = wall.column(l.column)) t.series.push_back({l.label, *day, *c, l.colour, l.dashed, false, l.width});
+  t.guides = closure_guide;
+  if (const auto req = design_value(run.summary, "required_thickness"))
+    t.guides.push_back({false, *req, fmt::format("required {} m", number(*req, 2))});
+  charts.push_back(figure("thickness", "Wall thickness", t,
+                          "Frozen stretch containing the pipe ring on OA, on OB and on the thinnest ray of the wedge. "
+                          "Before closure only the columns around the pipes are frozen, so OB and the thinnest ray read zero."));
+
+  if (const auto* T = wall.column("mean_temperature_OB_C")) {
+    Chart m;
+    m.title = "mean temperature of the frozen wall on OB over time";
+    m.x_label = "time (d)";
+    m.y_label = "mean wall temperature on OB (°C)";
+    m.x_include = {0.0};
+    m.y_include = {run.freezing_point()};
+    m.series.push_back({"", *day, *T, "#0b3c73", false, false});
+    m.guides = closure_guide;
+    if (const auto limit = design_value(run.summary, "max_mean_temperature"))
+      m.guides.push_back({false, *limit, fmt::format("design limit {} °C", number(*limit, 1))});
+    charts.push_back(figure("ob-temperature", "Mean wall temperature on OB", m,
+                            "Mean temperature over the frozen part of OB (empty until OB freezes)."));
+  }
+}
+
+void profile_chart(const RunRecord& run, const std::string& ray, json& charts) {
+  const fs::path file = run.dir / ("profiles_" + ray + ".csv");
+  if (!fs::exists(file)) return;
+  const CsvTable t = read_csv(file);
+  const auto* r = t.column("r_m");
+  if (!r || t.header.size() < 2) return;
+  Chart c;
+  c.title = "temperature along " + ray + " at the snapshot days";
+  c.x_label = "distance from the shaft axis (m)";
+  c.y_label = "temperature (°C)";
+  c.x_include = {0.0};
+  const auto colours = sequential_colours(t.header.size() - 1);
+  for (std::size_t k = 1; k < t.header.size(); ++k) {
+    // Columns are named T_day_<day>_C.
+    std::string label = t.header[k];
+    if (label.rfind("T_day_", 0) == 0 && label.size() > 8) label = "day " + label.substr(6, label.size() - 8);
+    c.series.push_back({label, *r, t.columns[k], colours[k - 1], false, false});
+  }
+  c.guides.push_back({false, run.freezing_point(), "freezing point"});
+  for (double radius : ring_radii(run)) c.guides.push_back({true, radius, ""});
+  if (run.project)
+    if (const auto* s = std::get_if<project::ShaftSection>(&run.project->geometry); s && s->shaft.excavation_radius)
+      c.guides.push_back({true, *s->shaft.excavation_radius, "excavation"});
+  const std::string where = ray == "OA" ? "through a pipe of the outer ring" : "halfway between two outer pipes";
+  charts.push_back(figure("profile-" + ray, "Temperature along " + ray, c,
+                          "Temperature on the ray " + ray + " (" + where + ") at each snapshot; dashed verticals: pipe rings and excavation."));
+}
+
+void sensor_chart(const RunRecord& run, json& charts) {
+  const fs::path file = run.dir / "monitoring.csv";
+  if (!fs::exists(file)) return;
+  const CsvTable t = read_csv(file);
+  const auto* day = t.column("day");
+  if (!day || t.header.size() < 2) return;
+  Chart c;
+  c.title = "sensor temperatures over time";
+  c.x_label = "time (d)";
+  c.y_label = "temperature (°C)";
+  c.x_include = {0.0};
+  for (std::size_t k = 1; k < t.header.size(); ++k) {
+    std::string name = t.header[k];
+    if (name.size() > 2 && name.substr(name.size() - 2) == "_C") name.resize(name.size() - 2);
+    c.series.push_back({name, *day, t.columns[k], "", false, false});
+  }
+  c.guides.push_back({false, run.freezing_point(), "freezing point"});
+  charts.push_back(figure("sensors", "Sensors", c, "Temperature at the monitoring points (thermometer holes) of the project."));
+}
+
+void front_chart(const RunRecord& run, json& charts) {
+  const auto& front = run.summary.value("front", json::array());
+  if (front.empty()) return;
+  Series s{"", {}, {}, "#0b3c73", false, front.size() < 40};
+  for (const auto& p : front) {
+    s.x.push_back(p[0].get<double>());
+    s.y.push_back(p[1].is_number() ? p[1].get<double>() : std::numeric_limits<double>::quiet_NaN());
+  }
+  const std::string unit = run.summary.value("run", json::object()).value("time_unit", "s");
+  Chart c;
+  c.title = "frozen front position over time";
+  c.x_label = "time (" + unit + ")";
+  c.y_label = "front position (m)";
+  c.x_include = {0.0};
+  c.y_include = {0.0};
+  c.series.push_back(s);
+  charts.push_back(figure("front", "Frozen front", c, "Position of the frozen front from the cooled face along the problem's main axis."));
+}
+
+}  // namespace
+
+void add_charts(const RunRecord& run, json& view) {
+  json charts = json::array();
+  if (run.shaft()) {
+    wall_charts(run, charts);
+    profile_chart(run, "OA", charts);
+    profile_chart(run, "OB", charts);
+    sensor_chart(run, charts);
+  } else {
+    front_chart(run, charts);
+  }
+  view["charts"] = charts;
+}
+
+}  // namespace frostwall::report::detail

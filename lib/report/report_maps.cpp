@@ -1,0 +1,155 @@
+// The temperature maps: every snapshot of the field on one colour scale,
+// the full ring (output.full_ring) or a window around OA's pipe.
+#include <algorithm>
+#include <cmath>
+#include <fmt/core.h>
+#include <limits>
+#include <numbers>
+#include <regex>
+
+#include "geometry/layout.hpp"
+#include "report/field_map.hpp"
+#include "report/nice_scale.hpp"
+#include "report/report_sections.hpp"
+#include "run/shaft_results.hpp"
+
+namespace frostwall::report::detail {
+
+using nlohmann::json;
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Snapshot {
+  double time = 0.0;  // in the project's time unit
+  std::string file;
+};
+
+// The snapshots a field.pvd lists, in its order.
+std::vector<Snapshot> read_pvd(const fs::path& file) {
+  std::vector<Snapshot> out;
+  const auto text = read_text(file);
+  if (!text) return out;
+  static const std::regex dataset(R"re(<DataSet\s+timestep="([^"]*)"[^>]*\sfile="([^"]*)")re");
+  for (auto it = std::sregex_iterator(text->begin(), text->end(), dataset); it != std::sregex_iterator(); ++it)
+    out.push_back({std::stod((*it)[1].str()), (*it)[2].str()});
+  return out;
+}
+
+WedgeSymmetry wedge_of(const json& summary) {
+  WedgeSymmetry w;
+  const auto& s = summary["wedge"];
+  w.mirror_lines = s.value("mirror_lines", 0);
+  w.start = s.value("start_deg", 0.0) * std::numbers::pi / 180;
+  w.angle = s.value("angle_deg", 360.0) * std::numbers::pi / 180;
+  return w;
+}
+
+}  // namespace
+
+void add_maps(const RunRecord& run, json& view) {
+  view["has_maps"] = false;
+  view["maps"] = json::array();
+  view["colour_bar_svg"] = "";
+  view["maps_note"] = "";
+  if (!run.shaft() || !run.summary.contains("wedge")) {
+    view["maps_note"] = "Temperature maps are drawn for shaft sections; this run is a plain geometry.";
+    return;
+  }
+  const auto snapshots = read_pvd(run.dir / "field.pvd");
+  if (snapshots.empty()) {
+    view["maps_note"] = "No VTK snapshots in this directory (output.vtk is off), so no maps.";
+    return;
+  }
+  const auto& facts = run.summary["run"];
+  const double spacing = facts.value("spacing", 0.0), h = facts.value("smoothing_length", 1.3 * spacing);
+  const std::string kernel = facts.value("kernel", "wendland_c2");
+  const WedgeSymmetry symmetry = wedge_of(run.summary);
+
+  std::vector<geometry::Pipe2> pipes;
+  MapOverlay overlay;
+  if (run.project)
+    if (const auto* s = std::get_if<project::ShaftSection>(&run.project->geometry)) {
+      pipes = geometry::pipe_positions(s->layout);
+      for (const auto& p : pipes) overlay.pipes.push_back({p.x, p.y, 0.5 * s->pipe.diameter});
+      overlay.excavation_radius = s->shaft.excavation_radius.value_or(0.0);
+      overlay.domain_radius = s->outer_radius;
+    }
+  double ring = 0.0, inner = std::numeric_limits<double>::infinity();
+  for (const auto& p : pipes) ring = std::max(ring, std::hypot(p.x, p.y)), inner = std::min(inner, std::hypot(p.x, p.y));
+  if (ring == 0.0) {  // no project recorded: the wall's extent tells where to look
+    for (const auto& w : run.summary["wall"])
+      if (w["OA"]["outer"].is_number()) ring = std::max(ring, w["OA"]["outer"].get<double>());
+    inner = ring;
+  }
+
+  // Read every snapshot first: one colour scale for all of them.
+  std::vector<FieldSnapshot> fields;
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (const auto& s : snapshots) {
+    fields.push_back(read_field(run.dir / s.file));
+    const auto& f = fields.back();
+    for (std::size_t i = 0; i < f.temperature.size(); ++i)
+      if (f.boundary[i] < 0) lo = std::min(lo, f.temperature[i]), hi = std::max(hi, f.temperature[i]);
+  }
+  // The pipe walls' own temperatures too (fixed particles beyond a wall hold
+  // extrapolated values, which would stretch the scale).
+  if (run.project)
+    if (const auto* s = std::get_if<project::ShaftSection>(&run.project->geometry))
+      for (const auto& [t, T] : s->pipe.temperature.points)
+        if (t <= run.project->time.end) lo = std::min(lo, T), hi = std::max(hi, T);
+  const NiceScale ends = nice_scale(lo, hi, 10);  // ends at a round 5 or 10, not far beyond the data
+  const ColourScale colours(ends.lo, ends.hi, run.freezing_point());
+
+  const bool full_ring = run.project ? run.project->output.full_ring : fs::exists(run.dir / "ring.pvd");
+  MapWindow window;
+  window.pixels = 400;
+  std::string where;
+  if (full_ring || ring == 0.0) {
+    double R = ring > 0 ? std::max(1.4 * ring, ring + 1.5) : 0.5 * overlay.domain_radius;
+    if (overlay.domain_radius > 0) R = std::min(R, overlay.domain_radius);
+    window.x0 = window.y0 = -R;
+    window.size = 2 * R;
+    where = "the whole ring";
+  } else {
+    // Around OA's pipe, wide enough for the neighbouring pipes and the wall.
+    const auto planes = run::interface_planes(pipes);
+    const double mid = 0.5 * (ring + inner), gap = std::abs(planes.OB - planes.OA) * 2 * planes.ring_radius;
+    const double half = std::max(1.5 * gap, 0.5 * (ring - inner) + 1.5);
+    window.x0 = mid * std::cos(planes.OA) - half;
+    window.y0 = mid * std::sin(planes.OA) - half;
+    window.size = 2 * half;
+    where = "a window around the pipe on OA";
+  }
+  const FieldMap map(fields.front(), symmetry, kernel, h, spacing, window, overlay.domain_radius);
+
+  const auto& fronts = run.summary.value("interface", json::array());
+  json maps = json::array();
+  for (std::size_t k = 0; k < snapshots.size(); ++k) {
+    // The front files are listed in summary.json in snapshot order.
+    // The whole ring's curves when the run wrote them (closed across the
+    // wedge sides); else the wedge's, copied around by the map.
+    std::vector<post::Polyline> curves;
+    bool whole = false;
+    if (k < fronts.size())
+      for (const char* key : {"full_ring_file", "file"})
+        if (fronts[k].contains(key) && fs::exists(run.dir / fronts[k][key].get<std::string>())) {
+          curves = read_polylines(run.dir / fronts[k][key].get<std::string>());
+          whole = std::string(key) == "full_ring_file";
+          break;
+        }
+    const std::string title = fmt::format("day {:g}", snapshots[k].time);
+    maps.push_back({{"html", map.html(fields[k].temperature, colours, curves, whole, overlay, title)},
+                    {"caption", fmt::format("Temperature on day {:g}; black line: frozen front (liquid fraction 0.5).", snapshots[k].time)}});
+  }
+  view["maps"] = maps;
+  view["has_maps"] = true;
+  view["colour_bar_svg"] = colours.colour_bar_svg(520);
+  view["maps_note"] = fmt::format(
+      "The field of each snapshot resampled from the particles (SPH interpolation) and shown over {}; "
+      "the simulated wedge is copied around by its mirror symmetry. Pipes are black dots, the dashed circle "
+      "is the excavation. Colours turn from blue to red at the freezing point ({} °C).",
+      where, number(run.freezing_point(), 1));
+}
+
+}  // namespace frostwall::report::detail

@@ -1,0 +1,210 @@
+// The project section: what was asked for, as the engineer wrote it.
+#include <cmath>
+#include <fmt/core.h>
+#include <numbers>
+
+#include "geometry/layout.hpp"
+#include "report/layout_drawing.hpp"
+#include "report/report_sections.hpp"
+#include "report/svg_chart.hpp"
+#include "run/shaft_results.hpp"
+
+namespace frostwall::report::detail {
+
+using nlohmann::json;
+
+namespace {
+
+constexpr double day = 86400.0;
+
+json row(const std::string& label, const std::string& value) { return {{"label", label}, {"value", value}}; }
+
+std::string pattern_name(project::Pattern p) {
+  switch (p) {
+    case project::Pattern::single: return "single ring";
+    case project::Pattern::three_hole: return "three-hole double ring (inner ring rotated by half a spacing)";
+    case project::Pattern::four_hole: return "four-hole double ring (inner ring with twice the pipes)";
+    case project::Pattern::rings: return "rings";
+    case project::Pattern::pipes: return "measured pipe positions";
+  }
+  return "";
+}
+
+std::string conductivity(const project::PhaseProperties& p) {
+  return p.anisotropic() ? number(p.conductivity[0], 2) + " / " + number(p.conductivity[1], 2) + " (x / y)"
+                         : number(p.conductivity[0], 2);
+}
+
+WedgeSymmetry wedge_of(const json& summary) {
+  WedgeSymmetry w;
+  if (!summary.contains("wedge")) return w;
+  const auto& s = summary["wedge"];
+  w.mirror_lines = s.value("mirror_lines", 0);
+  w.start = s.value("start_deg", 0.0) * std::numbers::pi / 180;
+  w.angle = s.value("angle_deg", 360.0) * std::numbers::pi / 180;
+  return w;
+}
+
+void add_layout(const RunRecord& run, const project::ShaftSection& section, json& view) {
+  const auto pipes = geometry::pipe_positions(section.layout);
+  const auto& L = section.layout;
+  json rows = json::array();
+  rows.push_back(row("pattern", pattern_name(L.pattern)));
+  if (L.pattern == project::Pattern::single || L.pattern == project::Pattern::three_hole ||
+      L.pattern == project::Pattern::four_hole) {
+    const auto& o = L.outer_ring;
+    rows.push_back(row("outer ring", fmt::format("{} pipes on r = {} m, first at {}°, spacing {} m", o.count,
+                                                 number(o.radius, 2), number(o.offset_deg, 1),
+                                                 number(2 * std::numbers::pi * o.radius / std::max(o.count, 1), 3))));
+    if (L.inner_ring_radius) {
+      const int n = L.pattern == project::Pattern::four_hole ? 2 * o.count : o.count;
+      rows.push_back(row("inner ring", fmt::format("{} pipes on r = {} m", n, number(*L.inner_ring_radius, 2))));
+    }
+  } else if (L.pattern == project::Pattern::rings) {
+    for (std::size_t k = 0; k < L.rings.size(); ++k)
+      rows.push_back(row(fmt::format("ring {}", k), fmt::format("{} pipes on r = {} m, first at {}°", L.rings[k].count,
+                                                                 number(L.rings[k].radius, 2), number(L.rings[k].offset_deg, 1))));
+  }
+  rows.push_back(row("pipes", fmt::format("{} in all, outer diameter {} mm ({} model)", pipes.size(),
+                                          number(section.pipe.diameter * 1000, 1),
+                                          section.pipe.model == project::PipeModel::point ? "point" : "disc")));
+  if (section.shaft.excavation_radius)
+    rows.push_back(row("excavation radius", number(*section.shaft.excavation_radius, 2) + " m"));
+  const WedgeSymmetry w = wedge_of(run.summary);
+  const bool symmetric = run.project->numerics.use_symmetry && w.mirror_lines > 0;
+  rows.push_back(row("simulated", symmetric ? fmt::format("a wedge of {}° between two of {} mirror lines, from {}°",
+                                                          number(w.angle * 180 / std::numbers::pi, 3), w.mirror_lines,
+                                                          number(w.start * 180 / std::numbers::pi, 2))
+                                            : std::string("the full circle")));
+  view["layout_rows"] = rows;
+
+  LayoutDrawing drawing;
+  drawing.section = &section;
+  drawing.pipes = pipes;
+  drawing.wedge = symmetric ? w : WedgeSymmetry{};
+  if (!pipes.empty()) {
+    const auto planes = run::interface_planes(pipes);
+    drawing.OA = planes.OA, drawing.OB = planes.OB;
+  }
+  drawing.sensors = run.project->monitoring;
+  view["layout_svg"] = layout_svg(drawing);
+  view["layout_caption"] =
+      "Plan view. Shaded: the wedge the solver simulated (its sides are mirror planes of the layout). "
+      "OA runs through a pipe of the outer ring, OB halfway to the next one, where the wall is thinnest.";
+}
+
+void add_soil(const project::Soil& s, json& view) {
+  const auto vol = [&](const project::PhaseProperties& p) { return s.density * p.heat_capacity; };
+  const auto alpha = [&](const project::PhaseProperties& p) { return p.conductivity[0] / vol(p) * 1e6; };
+  view["soil_name"] = s.name;
+  view["soil_rows"] = json::array({
+      {{"property", "thermal conductivity"}, {"unfrozen", conductivity(s.unfrozen)}, {"frozen", conductivity(s.frozen)}, {"unit", "W/(m K)"}},
+      {{"property", "specific heat capacity"}, {"unfrozen", number(s.unfrozen.heat_capacity, 1)}, {"frozen", number(s.frozen.heat_capacity, 1)}, {"unit", "J/(kg K)"}},
+      {{"property", "volumetric heat capacity"}, {"unfrozen", number(vol(s.unfrozen) / 1e6, 3)}, {"frozen", number(vol(s.frozen) / 1e6, 3)}, {"unit", "MJ/(m³ K)"}},
+      {{"property", "thermal diffusivity"}, {"unfrozen", number(alpha(s.unfrozen), 3)}, {"frozen", number(alpha(s.frozen), 3)}, {"unit", "10⁻⁶ m²/s"}},
+  });
+  view["soil_common"] = json::array({
+      row("density", number(s.density, 0) + " kg/m³"),
+      row("latent heat", number(s.latent_heat, 1) + " J/kg (" + number(s.latent_heat * s.density / 1e6, 1) + " MJ/m³)"),
+      row("freezing point", number(s.freezing_point, 2) + " °C"),
+      row("freezing range", s.freezing_range > 0 ? number(s.freezing_range, 2) + " K below the freezing point"
+                                                 : std::string("none (isothermal)")),
+  });
+}
+
+void add_schedule(const project::Project& p, const project::TemperatureSchedule& schedule, json& view) {
+  json rows = json::array();
+  for (const auto& [t, T] : schedule.points) rows.push_back({{"day", number(t / day, 1)}, {"temperature", number(T, 1)}});
+  view["schedule_rows"] = rows;
+  view["schedule_note"] = schedule.constant() ? "Constant over the run."
+                                              : "Linear between the points, held at the first and last value outside them.";
+  view["schedule_svg"] = false;
+  if (schedule.constant()) return;
+  Chart chart;
+  chart.title = "pipe wall temperature over time";
+  chart.x_label = "time (d)";
+  chart.y_label = "pipe wall (°C)";
+  chart.width = 440, chart.height = 220;
+  Series s{"", {}, {}, "#0b3c73", false, true};
+  std::vector<double> t{0.0};
+  for (const auto& pt : schedule.points) t.push_back(pt.first);
+  t.push_back(p.time.end);
+  std::sort(t.begin(), t.end());
+  for (double ti : t) s.x.push_back(ti / day), s.y.push_back(schedule.at(ti));
+  chart.series.push_back(s);
+  view["schedule_svg"] = render_svg(chart);
+}
+
+std::string time_unit(project::TimeUnit u) { return u == project::TimeUnit::d ? "d" : (u == project::TimeUnit::h ? "h" : "s"); }
+
+void add_numerics(const RunRecord& run, json& view) {
+  const auto& p = *run.project;
+  const auto& n = p.numerics;
+  const auto& facts = run.summary.value("run", json::object());
+  const double u = p.time.unit_seconds();
+  std::string snapshots;
+  for (double t : p.time.snapshots) snapshots += (snapshots.empty() ? "" : ", ") + fmt::format("{:g}", t / u);
+  json rows = json::array({
+      row("particle spacing", facts.contains("spacing") ? number(facts["spacing"], 4) + " m" +
+                                                              (n.spacing ? "" : " (chosen by frostwall)")
+                                                        : (n.spacing ? number(*n.spacing, 4) + " m" : "default")),
+      row("kernel", fmt::format("{}, h = {} × spacing", n.kernel == project::KernelKind::cubic_spline ? "cubic spline" : "Wendland C2",
+                                number(n.smoothing_ratio, 2))),
+      row("time integration", n.integrator == project::IntegratorKind::implicit
+                                  ? std::string("implicit")
+                                  : fmt::format("explicit (forward Euler), β = {}", number(n.beta, 3))),
+      row("Laplacian", n.laplacian == project::LaplacianForm::renormalised ? "renormalised" : "plain (the paper's)"),
+      row("conductivity between particles", n.conductivity_mean == project::ConductivityMean::harmonic ? "harmonic mean" : "arithmetic (k_i + k_j)"),
+      row("symmetry", n.use_symmetry ? "smallest mirror wedge" : "off: full ring"),
+      row("simulated time", fmt::format("{:g} {}", p.time.end / u, time_unit(p.time.unit))),
+      row("snapshots", snapshots + " " + time_unit(p.time.unit)),
+  });
+  view["numerics_rows"] = rows;
+}
+
+void add_design_and_sensors(const project::Project& p, json& view) {
+  json rows = json::array();
+  rows.push_back(row("required wall thickness", p.design.required_thickness ? number(*p.design.required_thickness, 2) + " m (weakest ray)" : "none"));
+  rows.push_back(row("max. mean wall temperature", p.design.max_mean_temperature ? number(*p.design.max_mean_temperature, 1) + " °C (on OB)" : "none"));
+  view["design_rows"] = rows;
+  json sensors = json::array();
+  for (const auto& s : p.monitoring)
+    sensors.push_back({{"name", s.name}, {"x", number(s.x, 3)}, {"y", number(s.y, 3)}, {"r", number(std::hypot(s.x, s.y), 3)},
+                       {"theta", number(std::atan2(s.y, s.x) * 180 / std::numbers::pi, 3)}});
+  view["has_sensors"] = !sensors.empty();
+  view["sensors"] = sensors;
+}
+
+}  // namespace
+
+void add_project(const RunRecord& run, json& view) {
+  // Every key the template names, so nothing renders from a missing value.
+  for (const char* key : {"layout_rows", "domain_rows", "soil_rows", "soil_common", "schedule_rows", "numerics_rows", "design_rows", "sensors"})
+    view[key] = json::array();
+  for (const char* key : {"layout_svg", "layout_caption", "soil_name", "schedule_note"}) view[key] = "";
+  view["schedule_svg"] = false;
+  view["has_sensors"] = false;
+  view["has_project"] = run.project.has_value();
+  if (!run.project) return;
+  const auto& p = *run.project;
+
+  json domain = json::array({row("initial ground temperature", number(p.domain.initial_temperature, 1) + " °C")});
+  if (const auto* section = std::get_if<project::ShaftSection>(&p.geometry)) {
+    add_layout(run, *section, view);
+    domain.push_back(row("far field", (p.domain.far_field_temperature ? number(*p.domain.far_field_temperature, 1) + " °C" : std::string("adiabatic")) +
+                                          " at r = " + number(section->outer_radius, 1) + " m"));
+    add_schedule(p, section->pipe.temperature, view);
+  } else {
+    const auto& r = std::get<project::Rectangle>(p.geometry);
+    view["layout_svg"] = rectangle_svg(r);
+    view["layout_caption"] = "Plain geometry (a verification problem): the rectangle and its boundary conditions.";
+    view["layout_rows"] = json::array({row("geometry", fmt::format("rectangle {:g} m × {:g} m", r.width, r.height))});
+    view["schedule_note"] = "No freeze pipes: the boundaries are shown beside the drawing.";
+  }
+  view["domain_rows"] = domain;
+  add_soil(p.soil, view);
+  add_numerics(run, view);
+  add_design_and_sensors(p, view);
+}
+
+}  // namespace frostwall::report::detail

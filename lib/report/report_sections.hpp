@@ -1,0 +1,33 @@
+// The parts of the report view, one builder per section (internal to
+// lib/report). Each adds its keys to the view.
+#pragma once
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+
+#include "project/project.hpp"
+
+namespace frostwall::report::detail {
+
+// Everything read from a run's output directory.
+struct RunRecord {
+  std::filesystem::path dir;
+  nlohmann::json summary;
+  std::optional<project::Project> project;  // from project.json, when recorded and valid
+  bool shaft() const { return summary.contains("wall"); }
+  double freezing_point() const { return project ? project->soil.freezing_point : 0.0; }
+};
+
+// "1.23" with a true minus sign; "–" for null/NaN.
+std::string number(double v, int decimals);
+std::string number(const nlohmann::json& v, int decimals);
+
+void add_project(const RunRecord& run, nlohmann::json& view);   // layout, soil, schedule, numerics, design
+void add_headline(const RunRecord& run, nlohmann::json& view);  // closure, thickness, design check, table
+void add_maps(const RunRecord& run, nlohmann::json& view);      // temperature maps and colour bar
+void add_charts(const RunRecord& run, nlohmann::json& view);    // thickness, OB temperature, profiles, sensors
+void add_run_facts(const RunRecord& run, nlohmann::json& view); // run table and file links
+
+}  // namespace frostwall::report::detail

@@ -1,0 +1,139 @@
+#include "report/run_files.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+#include <vtkCellArray.h>
+#include <vtkDataArray.h>
+#include <vtkIdList.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+#include <vtkUnstructuredGrid.h>
+#include <vtkXMLPolyDataReader.h>
+#include <vtkXMLUnstructuredGridReader.h>
+
+namespace frostwall::report {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::vector<std::string> split(const std::string& line) {
+  std::vector<std::string> cells;
+  std::string cell;
+  std::istringstream in(line);
+  while (std::getline(in, cell, ',')) cells.push_back(cell);
+  if (!line.empty() && line.back() == ',') cells.emplace_back();
+  return cells;
+}
+
+void require_file(const fs::path& file) {
+  if (!fs::is_regular_file(file)) throw std::runtime_error("missing output file " + file.string());
+}
+
+}  // namespace
+
+const std::vector<double>* CsvTable::column(const std::string& name) const {
+  for (std::size_t c = 0; c < header.size(); ++c)
+    if (header[c] == name) return &columns[c];
+  return nullptr;
+}
+
+CsvTable read_csv(const fs::path& file) {
+  std::ifstream in(file);
+  if (!in) throw std::runtime_error("cannot read " + file.string());
+  CsvTable t;
+  std::string line;
+  if (!std::getline(in, line)) return t;
+  t.header = split(line);
+  t.columns.resize(t.header.size());
+  while (std::getline(in, line)) {
+    if (line.empty()) continue;
+    const auto cells = split(line);
+    for (std::size_t c = 0; c < t.header.size(); ++c) {
+      double v = std::numeric_limits<double>::quiet_NaN();
+      if (c < cells.size() && !cells[c].empty()) {
+        try {
+          v = std::stod(cells[c]);
+        } catch (const std::exception&) {
+          throw std::runtime_error(file.string() + ": not a number: '" + cells[c] + "'");
+        }
+      }
+      t.columns[c].push_back(v);
+    }
+  }
+  return t;
+}
+
+FieldSnapshot read_field(const fs::path& file) {
+  require_file(file);
+  vtkNew<vtkXMLUnstructuredGridReader> reader;
+  reader->SetFileName(file.c_str());
+  reader->Update();
+  vtkUnstructuredGrid* grid = reader->GetOutput();
+  if (!grid || grid->GetNumberOfPoints() == 0) throw std::runtime_error("no particles in " + file.string());
+  auto array = [&](const char* name) {
+    vtkDataArray* a = grid->GetPointData()->GetArray(name);
+    if (!a) throw std::runtime_error(file.string() + ": no point field '" + name + "'");
+    return a;
+  };
+  vtkDataArray *T = array("temperature"), *V = array("volume"), *B = array("boundary");
+  FieldSnapshot s;
+  const vtkIdType n = grid->GetNumberOfPoints();
+  s.position.reserve(n);
+  for (vtkIdType i = 0; i < n; ++i) {
+    const double* x = grid->GetPoint(i);
+    s.position.emplace_back(x[0], x[1]);
+    s.temperature.push_back(T->GetTuple1(i));
+    s.volume.push_back(V->GetTuple1(i));
+    s.boundary.push_back(static_cast<int>(std::lround(B->GetTuple1(i))));
+  }
+  return s;
+}
+
+std::vector<post::Polyline> read_polylines(const fs::path& file) {
+  require_file(file);
+  vtkNew<vtkXMLPolyDataReader> reader;
+  reader->SetFileName(file.c_str());
+  reader->Update();
+  vtkPolyData* data = reader->GetOutput();
+  std::vector<post::Polyline> lines;
+  if (!data || !data->GetLines()) return lines;
+  vtkCellArray* cells = data->GetLines();
+  vtkNew<vtkIdList> ids;
+  cells->InitTraversal();
+  while (cells->GetNextCell(ids)) {
+    post::Polyline line;
+    for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k) {
+      const double* x = data->GetPoint(ids->GetId(k));
+      line.points.emplace_back(x[0], x[1]);
+    }
+    line.closed = ids->GetNumberOfIds() > 2 && ids->GetId(0) == ids->GetId(ids->GetNumberOfIds() - 1);
+    if (line.closed) line.points.pop_back();
+    lines.push_back(std::move(line));
+  }
+  return lines;
+}
+
+nlohmann::json read_json(const fs::path& file) {
+  std::ifstream in(file);
+  if (!in) throw std::runtime_error("cannot read " + file.string());
+  try {
+    return nlohmann::json::parse(in);
+  } catch (const nlohmann::json::exception& e) {
+    throw std::runtime_error(file.string() + ": not valid JSON");
+  }
+}
+
+std::optional<std::string> read_text(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) return std::nullopt;
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+}  // namespace frostwall::report

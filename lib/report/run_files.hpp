@@ -1,0 +1,43 @@
+// Reading back what a run left in its output directory: summary.json, the
+// project file as given (project.json), the CSV series and the VTK
+// snapshots and front curves. The report is built from these files alone,
+// so `frostwall report <dir>` rebuilds it without running anything.
+#pragma once
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "post/isoline.hpp"
+#include "sph/vec.hpp"
+
+namespace frostwall::report {
+
+// A CSV file of numbers with one header row; an empty cell is NaN.
+struct CsvTable {
+  std::vector<std::string> header;
+  std::vector<std::vector<double>> columns;  // columns[c][row]
+  std::size_t rows() const { return columns.empty() ? 0 : columns.front().size(); }
+  // nullptr when there is no such column.
+  const std::vector<double>* column(const std::string& name) const;
+};
+CsvTable read_csv(const std::filesystem::path& file);
+
+// The particles of a field_XXXX.vtu snapshot and the fields the report uses.
+struct FieldSnapshot {
+  std::vector<sph::Vec<2>> position;
+  std::vector<double> volume;
+  std::vector<int> boundary;  // -1 free
+  std::vector<double> temperature;
+};
+FieldSnapshot read_field(const std::filesystem::path& file);
+
+// The polylines of an interface_XXXX.vtp file (closed ones repeat their first point).
+std::vector<post::Polyline> read_polylines(const std::filesystem::path& file);
+
+nlohmann::json read_json(const std::filesystem::path& file);
+std::optional<std::string> read_text(const std::filesystem::path& file);
+
+}  // namespace frostwall::report

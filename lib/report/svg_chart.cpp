@@ -1,0 +1,189 @@
+#include "report/svg_chart.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <fmt/core.h>
+#include <limits>
+
+#include "report/nice_scale.hpp"
+#include "report/svg.hpp"
+
+namespace frostwall::report {
+
+namespace {
+
+using svg::escape;
+using svg::num;
+
+constexpr double font = 12.0, small_font = 10.5, tick_length = 4.0, legend_swatch = 22.0, legend_row = 17.0;
+
+struct Range {
+  double lo = std::numeric_limits<double>::infinity(), hi = -std::numeric_limits<double>::infinity();
+  void add(double v) {
+    if (std::isfinite(v)) lo = std::min(lo, v), hi = std::max(hi, v);
+  }
+  bool empty() const { return !(lo <= hi); }
+};
+
+// The polyline's pieces between NaNs, as "x,y x,y ..." in pixels.
+template <class ToPx>
+std::vector<std::string> pieces(const Series& s, ToPx&& to_px) {
+  std::vector<std::string> out;
+  std::string current;
+  const std::size_t n = std::min(s.x.size(), s.y.size());
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!std::isfinite(s.x[i]) || !std::isfinite(s.y[i])) {
+      if (!current.empty()) out.push_back(std::move(current)), current.clear();
+      continue;
+    }
+    const auto [px, py] = to_px(s.x[i], s.y[i]);
+    current += (current.empty() ? "" : " ") + num(px) + "," + num(py);
+  }
+  if (!current.empty()) out.push_back(std::move(current));
+  return out;
+}
+
+}  // namespace
+
+const std::vector<std::string>& categorical_colours() {
+  static const std::vector<std::string> colours{"#0072B2", "#D55E00", "#009E73", "#CC79A7",
+                                                "#E69F00", "#56B4E9", "#000000", "#999999"};
+  return colours;
+}
+
+std::vector<std::string> sequential_colours(std::size_t n) {
+  // Matplotlib's plasma, cut before its pale yellow end (unreadable on white).
+  static constexpr std::array<std::array<double, 3>, 5> stops{
+      {{13, 8, 135}, {126, 3, 168}, {204, 71, 120}, {240, 126, 74}, {247, 172, 52}}};
+  std::vector<std::string> out;
+  for (std::size_t k = 0; k < n; ++k) {
+    const double t = n > 1 ? double(k) / double(n - 1) * (stops.size() - 1) : 0.0;
+    const std::size_t i = std::min<std::size_t>(static_cast<std::size_t>(t), stops.size() - 2);
+    const double f = t - double(i);
+    std::array<int, 3> c{};
+    for (int d = 0; d < 3; ++d) c[d] = static_cast<int>(std::lround(stops[i][d] * (1 - f) + stops[i + 1][d] * f));
+    out.push_back(fmt::format("#{:02x}{:02x}{:02x}", c[0], c[1], c[2]));
+  }
+  return out;
+}
+
+std::string render_svg(const Chart& chart) {
+  Range xr, yr;
+  for (const auto& s : chart.series) {
+    const std::size_t n = std::min(s.x.size(), s.y.size());
+    for (std::size_t i = 0; i < n; ++i)
+      if (std::isfinite(s.x[i]) && std::isfinite(s.y[i])) xr.add(s.x[i]), yr.add(s.y[i]);
+  }
+  for (double v : chart.x_include) xr.add(v);
+  for (double v : chart.y_include) yr.add(v);
+  for (const auto& g : chart.guides) (g.vertical ? xr : yr).add(g.value);
+  if (xr.empty()) xr.add(0), xr.add(1);
+  if (yr.empty()) yr.add(0), yr.add(1);
+  const NiceScale xs = tight_scale(xr.lo, xr.hi), ys = tight_scale(yr.lo, yr.hi);
+
+  // Margins from the labels they hold.
+  double y_tick_width = 0;
+  for (double v : ys.ticks) y_tick_width = std::max(y_tick_width, svg::text_width(tick_label(v, ys.decimals), font));
+  std::vector<const Series*> legend;
+  double legend_width = 0;
+  for (const auto& s : chart.series)
+    if (!s.label.empty()) legend.push_back(&s), legend_width = std::max(legend_width, svg::text_width(s.label, font));
+  const double left = y_tick_width + tick_length + 30, bottom = 44, top = 12;
+  const double right = legend.empty() ? 16 : legend_width + legend_swatch + 30;
+  const double W = chart.width, H = chart.height, pw = W - left - right, ph = H - top - bottom;
+  auto px = [&](double x) { return left + (x - xs.lo) / (xs.hi - xs.lo) * pw; };
+  auto py = [&](double y) { return top + (ys.hi - y) / (ys.hi - ys.lo) * ph; };
+  const std::string clip = svg::unique_id("plot");
+
+  std::string o = fmt::format(
+      R"(<svg class="chart" viewBox="0 0 {} {}" width="{}" height="{}" role="img" font-family="{}" font-size="{}">)"
+      "\n<title>{}</title>\n",
+      W, H, W, H, svg::font_family, num(font), escape(chart.title));
+  o += fmt::format(R"(<defs><clipPath id="{}"><rect x="{}" y="{}" width="{}" height="{}"/></clipPath></defs>)" "\n", clip,
+                   num(left), num(top), num(pw), num(ph));
+  // Grid and ticks.
+  o += R"(<g stroke="#e4e4e4" stroke-width="1">)";
+  for (double v : xs.ticks) o += fmt::format(R"(<line x1="{0}" y1="{1}" x2="{0}" y2="{2}"/>)", num(px(v)), num(top), num(top + ph));
+  for (double v : ys.ticks) o += fmt::format(R"(<line x1="{1}" y1="{0}" x2="{2}" y2="{0}"/>)", num(py(v)), num(left), num(left + pw));
+  o += "</g>\n<g stroke=\"#222\" stroke-width=\"1\">";
+  for (double v : xs.ticks)
+    o += fmt::format(R"(<line x1="{0}" y1="{1}" x2="{0}" y2="{2}"/>)", num(px(v)), num(top + ph), num(top + ph + tick_length));
+  for (double v : ys.ticks)
+    o += fmt::format(R"(<line x1="{1}" y1="{0}" x2="{2}" y2="{0}"/>)", num(py(v)), num(left - tick_length), num(left));
+  o += fmt::format(R"(<polyline fill="none" points="{0},{1} {0},{2} {3},{2}"/>)", num(left), num(top), num(top + ph),
+                   num(left + pw));
+  o += "</g>\n<g fill=\"#222\">";
+  for (double v : xs.ticks)
+    o += fmt::format(R"(<text x="{}" y="{}" text-anchor="middle">{}</text>)", num(px(v)), num(top + ph + tick_length + 13),
+                     tick_label(v, xs.decimals));
+  for (double v : ys.ticks)
+    o += fmt::format(R"(<text x="{}" y="{}" text-anchor="end">{}</text>)", num(left - tick_length - 3), num(py(v) + 4),
+                     tick_label(v, ys.decimals));
+  o += fmt::format(R"(<text x="{}" y="{}" text-anchor="middle">{}</text>)", num(left + pw / 2), num(H - 6), escape(chart.x_label));
+  o += fmt::format(R"svg(<text transform="translate({},{}) rotate(-90)" text-anchor="middle">{}</text>)svg", num(13),
+                   num(top + ph / 2), escape(chart.y_label));
+  o += "</g>\n";
+
+  // Reference lines, under the data.
+  o += fmt::format(R"svg(<g clip-path="url(#{})" stroke="#555" stroke-width="1" stroke-dasharray="5 3">)svg", clip);
+  for (const auto& g : chart.guides) {
+    if (g.vertical) o += fmt::format(R"(<line x1="{0}" y1="{1}" x2="{0}" y2="{2}"/>)", num(px(g.value)), num(top), num(top + ph));
+    else o += fmt::format(R"(<line x1="{1}" y1="{0}" x2="{2}" y2="{0}"/>)", num(py(g.value)), num(left), num(left + pw));
+  }
+  // Labels with a white halo, readable where a curve passes under them.
+  o += "</g>\n<g fill=\"#444\" stroke=\"#fff\" stroke-width=\"3\" paint-order=\"stroke\" font-size=\"" + num(small_font) + "\">";
+  for (const auto& g : chart.guides) {
+    if (g.label.empty()) continue;
+    if (g.vertical && px(g.value) > left + 0.7 * pw)  // near the right edge: label to the left of the line
+      o += fmt::format(R"(<text x="{}" y="{}" text-anchor="end">{}</text>)", num(px(g.value) - 3), num(top + 11), escape(g.label));
+    else if (g.vertical)
+      o += fmt::format(R"(<text x="{}" y="{}">{}</text>)", num(px(g.value) + 3), num(top + 11), escape(g.label));
+    else
+      o += fmt::format(R"(<text x="{}" y="{}" text-anchor="end">{}</text>)", num(left + pw - 3), num(py(g.value) - 4),
+                       escape(g.label));
+  }
+  o += "</g>\n";
+
+  // Data.
+  std::size_t next_colour = 0;
+  std::vector<std::string> colour_of(chart.series.size());
+  for (std::size_t k = 0; k < chart.series.size(); ++k)
+    colour_of[k] = chart.series[k].colour.empty()
+                       ? categorical_colours()[next_colour++ % categorical_colours().size()]
+                       : chart.series[k].colour;
+  o += fmt::format(R"svg(<g clip-path="url(#{})" fill="none" stroke-linejoin="round">)svg", clip);
+  for (std::size_t k = 0; k < chart.series.size(); ++k) {
+    const auto& s = chart.series[k];
+    const std::string dash = s.dashed ? R"( stroke-dasharray="6 3")" : "";
+    for (const auto& points : pieces(s, [&](double x, double y) { return std::pair{px(x), py(y)}; }))
+      o += fmt::format(R"(<polyline stroke="{}" stroke-width="{}"{} points="{}"/>)", colour_of[k], num(s.width), dash, points);
+    if (s.markers) {
+      const std::size_t n = std::min(s.x.size(), s.y.size());
+      for (std::size_t i = 0; i < n; ++i)
+        if (std::isfinite(s.x[i]) && std::isfinite(s.y[i]))
+          o += fmt::format(R"(<circle cx="{}" cy="{}" r="2.6" fill="{}" stroke="none"/>)", num(px(s.x[i])), num(py(s.y[i])),
+                           colour_of[k]);
+    }
+  }
+  o += "</g>\n";
+
+  // Legend beside the plot, top aligned.
+  if (!legend.empty()) {
+    const double lx = left + pw + 14;
+    o += "<g>";
+    for (std::size_t k = 0, row = 0; k < chart.series.size(); ++k) {
+      const auto& s = chart.series[k];
+      if (s.label.empty()) continue;
+      const double y = top + 8 + legend_row * static_cast<double>(row++);
+      o += fmt::format(R"(<line x1="{0}" y1="{2}" x2="{1}" y2="{2}" stroke="{3}" stroke-width="2"{4}/>)", num(lx),
+                       num(lx + legend_swatch), num(y), colour_of[k], s.dashed ? R"( stroke-dasharray="6 3")" : "");
+      o += fmt::format(R"(<text x="{}" y="{}" fill="#222">{}</text>)", num(lx + legend_swatch + 6), num(y + 4), escape(s.label));
+    }
+    o += "</g>\n";
+  }
+  o += "</svg>";
+  return o;
+}
+
+}  // namespace frostwall::report

@@ -1,0 +1,80 @@
+#include "study/run_study.hpp"
+
+#include <atomic>
+#include <chrono>
+#include <fmt/core.h>
+#include <mutex>
+#include <omp.h>
+#include <thread>
+
+#include "project/project.hpp"
+#include "report/run_files.hpp"
+#include "run/run_project.hpp"
+
+namespace frostwall::study {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+VariantOutcome run_variant(const Variant& v, const std::function<void(const std::string&)>& note) {
+  const auto start = std::chrono::steady_clock::now();
+  VariantOutcome out;
+  out.name = v.name;
+  out.changes = v.changes;
+  out.directory = v.project["output"]["directory"].get<std::string>();
+  const std::string text = v.project.dump(2) + "\n";
+  try {
+    const project::Project p = project::parse_project(text, v.name);
+    run::RunOptions options;
+    options.project_text = text;
+    options.note = [&](const std::string&) {};  // the wedge notes of every variant would only clutter
+    run::run_project(p, options);
+    out.summary = report::read_json(out.directory / "summary.json");
+    out.ok = true;
+  } catch (const project::ProjectError& e) {
+    out.errors = e.problems();
+  } catch (const std::exception& e) {
+    out.errors = {std::string("run failed: ") + e.what()};
+  }
+  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (note) note(out.ok ? fmt::format("{}: done in {:.1f} s", v.name, out.seconds)
+                        : fmt::format("{}: FAILED: {}", v.name, out.errors.empty() ? "" : out.errors.front()));
+  return out;
+}
+
+}  // namespace
+
+StudyRun run_study(const Study& study, const StudyOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  StudyRun result;
+  const int cores = std::max(1, omp_get_num_procs());
+  const int n = static_cast<int>(study.variants.size());
+  result.jobs = std::clamp(options.jobs > 0 ? options.jobs : cores, 1, std::max(1, n));
+  result.threads = options.threads > 0 ? options.threads : (result.jobs == 1 ? omp_get_max_threads() : 1);
+  result.variants.resize(study.variants.size());
+
+  std::mutex note_lock;
+  auto note = [&](const std::string& line) {
+    if (!options.note) return;
+    std::lock_guard lock(note_lock);
+    options.note(line);
+  };
+  std::atomic<std::size_t> next{0};
+  auto worker = [&] {
+    // Per-thread OpenMP setting: each worker's runs use this many threads.
+    omp_set_num_threads(result.threads);
+    for (std::size_t k; (k = next++) < study.variants.size();) result.variants[k] = run_variant(study.variants[k], note);
+  };
+  if (result.jobs == 1) {
+    worker();
+  } else {
+    std::vector<std::thread> pool;
+    for (int j = 0; j < result.jobs; ++j) pool.emplace_back(worker);
+    for (auto& t : pool) t.join();
+  }
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
+}  // namespace frostwall::study

@@ -1,0 +1,40 @@
+// Running a study's variants: each is a whole project run with its own
+// folder and report. Variants run side by side, one OpenMP thread each
+// (the default, measured faster on this kind of machine: see README), or
+// one after another with every thread inside each run. A variant that
+// fails is recorded with its error; the others go on.
+#pragma once
+
+#include <functional>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "study/study_file.hpp"
+
+namespace frostwall::study {
+
+struct VariantOutcome {
+  std::string name, changes;
+  std::filesystem::path directory;
+  bool ok = false;
+  std::vector<std::string> errors;  // bad variant input (one line per problem) or the run's failure
+  nlohmann::json summary;           // summary.json of a finished run
+  double seconds = 0.0;             // wall time of this variant
+};
+
+struct StudyOptions {
+  int jobs = 0;     // variants at once; 0 = one per core (at most the variant count)
+  int threads = 0;  // OpenMP threads per variant; 0 = all cores when jobs = 1, else 1
+  std::function<void(const std::string&)> note;  // progress lines (thread-safe calls)
+};
+
+struct StudyRun {
+  std::vector<VariantOutcome> variants;  // in the study's order
+  int jobs = 1, threads = 1;
+  double seconds = 0.0;
+};
+
+StudyRun run_study(const Study& study, const StudyOptions& options);
+
+}  // namespace frostwall::study
