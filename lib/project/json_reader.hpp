@@ -1,6 +1,6 @@
 // Reading a JSON document value by value while carrying each value's path,
 // so that every problem can name where it is ("layout.rings[0].radius").
-// Internal to lib/project.
+// Used by lib/project and by lib/study (study files are checked the same way).
 #pragma once
 
 #include <cstddef>

@@ -50,7 +50,7 @@ void wall_charts(const RunRecord& run, json& charts) {
   if (!fs::exists(run.dir / "wall.csv")) return;
   const CsvTable wall = read_csv(run.dir / "wall.csv");
   const auto* day = wall.column("day");
-  if (!day) return;
+  if (!day || day->empty()) return;
   const auto closure = closure_day(run.summary);
   std::vector<Guide> closure_guide;
   if (closure) closure_guide.push_back({true, *closure, fmt::format("closure, day {}", number(*closure, 1))});
@@ -81,8 +81,9 @@ void wall_charts(const RunRecord& run, json& charts) {
     m.title = "mean temperature of the frozen wall on OB over time";
     m.x_label = "time (d)";
     m.y_label = "mean wall temperature on OB (°C)";
-    m.x_include = {0.0};
+    m.x_include = {0.0, day->back()};  // the run's span even while OB has no frozen part
     m.y_include = {run.freezing_point()};
+    m.empty_note = "OB not frozen within the run";
     m.series.push_back({"", *day, *T, "#0b3c73", false, false});
     m.guides = closure_guide;
     if (const auto limit = design_value(run.summary, "max_mean_temperature"))

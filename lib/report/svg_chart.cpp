@@ -38,7 +38,8 @@ std::vector<std::string> pieces(const Series& s, ToPx&& to_px) {
       continue;
     }
     const auto [px, py] = to_px(s.x[i], s.y[i]);
-    current += (current.empty() ? "" : " ") + num(px) + "," + num(py);
+    if (!current.empty()) current += ' ';
+    current.append(num(px)).append(",").append(num(py));
   }
   if (!current.empty()) out.push_back(std::move(current));
   return out;
@@ -70,10 +71,11 @@ std::vector<std::string> sequential_colours(std::size_t n) {
 
 std::string render_svg(const Chart& chart) {
   Range xr, yr;
+  bool has_points = false;
   for (const auto& s : chart.series) {
     const std::size_t n = std::min(s.x.size(), s.y.size());
     for (std::size_t i = 0; i < n; ++i)
-      if (std::isfinite(s.x[i]) && std::isfinite(s.y[i])) xr.add(s.x[i]), yr.add(s.y[i]);
+      if (std::isfinite(s.x[i]) && std::isfinite(s.y[i])) xr.add(s.x[i]), yr.add(s.y[i]), has_points = true;
   }
   for (double v : chart.x_include) xr.add(v);
   for (double v : chart.y_include) yr.add(v);
@@ -132,7 +134,8 @@ std::string render_svg(const Chart& chart) {
     else o += fmt::format(R"(<line x1="{1}" y1="{0}" x2="{2}" y2="{0}"/>)", num(py(g.value)), num(left), num(left + pw));
   }
   // Labels with a white halo, readable where a curve passes under them.
-  o += "</g>\n<g fill=\"#444\" stroke=\"#fff\" stroke-width=\"3\" paint-order=\"stroke\" font-size=\"" + num(small_font) + "\">";
+  o += fmt::format(R"(</g>
+<g fill="#444" stroke="#fff" stroke-width="3" paint-order="stroke" font-size="{}">)", num(small_font));
   for (const auto& g : chart.guides) {
     if (g.label.empty()) continue;
     if (g.vertical && px(g.value) > left + 0.7 * pw)  // near the right edge: label to the left of the line
@@ -167,6 +170,9 @@ std::string render_svg(const Chart& chart) {
     }
   }
   o += "</g>\n";
+  if (!has_points)
+    o += fmt::format(R"(<text x="{}" y="{}" text-anchor="middle" fill="#777">{}</text>)", num(left + pw / 2),
+                     num(top + ph / 2), escape(chart.empty_note));
 
   // Legend beside the plot, top aligned.
   if (!legend.empty()) {

@@ -31,6 +31,7 @@ struct Chart {
   std::vector<Series> series;
   std::vector<Guide> guides;
   std::vector<double> x_include, y_include;  // values the axes must reach (e.g. 0)
+  std::string empty_note = "no values";      // written across the plot when no series has a point
   int width = 540, height = 330;
 };
 

@@ -42,7 +42,7 @@ std::optional<json::json_pointer> parse_path(const std::string& path, std::strin
         error = "not a valid path: '" + path + "' (keys separated by '.', array elements as [0])";
         return std::nullopt;
       }
-      pointer += "/" + index;
+      pointer.append("/").append(index);
       i = close + 1;
       continue;
     }
@@ -54,7 +54,7 @@ std::optional<json::json_pointer> parse_path(const std::string& path, std::strin
     }
     const std::size_t end = path.find_first_of(".[", i);
     const std::string key = path.substr(i, end == std::string::npos ? std::string::npos : end - i);
-    pointer += "/" + escape_token(key);
+    pointer.append("/").append(escape_token(key));
     expect_key = false;
     i = end == std::string::npos ? path.size() : end;
   }
@@ -113,7 +113,7 @@ void merge_at(json& document, const json::json_pointer& where, const json& patch
     } else {
       throw std::invalid_argument((walked.empty() ? "/" : walked) + " is a " + node->type_name() + ", not an object");
     }
-    walked += "/" + t;
+    walked.append("/").append(t);
   }
   node->merge_patch(patch);
 }
