@@ -1,5 +1,6 @@
 #include "post/isoline.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <stdexcept>
@@ -34,13 +35,16 @@ void append(std::vector<sph::Vec<2>>& out, const sph::Vec<2>& x) {
 }
 }  // namespace
 
-std::vector<Polyline> isolines(const std::vector<sph::Vec<2>>& points, const std::vector<double>& values,
-                               double level, double max_edge) {
+namespace {
+// The marching triangles; limit2(a, b, c) is the largest squared edge a
+// triangle of those vertices may have.
+template <class EdgeLimit2>
+std::vector<Polyline> trace_isolines(const std::vector<sph::Vec<2>>& points, const std::vector<double>& values,
+                                     double level, EdgeLimit2&& limit2) {
   if (values.size() != points.size())
     throw std::invalid_argument("isolines: values and points differ in size");
   if (points.size() > 0xffffffffu) throw std::invalid_argument("isolines: too many points");
   if (!std::isfinite(level)) throw std::invalid_argument("isolines: level is not finite");
-  if (!(max_edge > 0.0)) throw std::invalid_argument("isolines: max_edge must be > 0");
   for (std::size_t i = 0; i < points.size(); ++i)
     if (!std::isfinite(values[i]) || !points[i].allFinite())
       throw std::invalid_argument("isolines: non-finite point or value");
@@ -68,7 +72,6 @@ std::vector<Polyline> isolines(const std::vector<sph::Vec<2>>& points, const std
     return it->second;
   };
 
-  const double max_edge2 = max_edge * max_edge;  // inf stays inf
   for (auto f = dt.finite_faces_begin(); f != dt.finite_faces_end(); ++f) {
     std::size_t v[3];
     bool above[3];
@@ -81,7 +84,7 @@ std::vector<Polyline> isolines(const std::vector<sph::Vec<2>>& points, const std
     }
     if (n_above == 0 || n_above == 3) continue;
     for (int k = 0; k < 3; ++k) longest2 = std::max(longest2, (points[v[k]] - points[v[(k + 1) % 3]]).squaredNorm());
-    if (longest2 > max_edge2) continue;
+    if (longest2 > limit2(v[0], v[1], v[2])) continue;
     // The vertex on its own side; the front crosses the two edges at it.
     int k = 0;
     while (above[k] != (n_above == 1)) ++k;
@@ -116,6 +119,26 @@ std::vector<Polyline> isolines(const std::vector<sph::Vec<2>>& points, const std
   for (std::size_t n = 0; n < nodes.size(); ++n)
     if (!nodes[n].visited) trace(n, true);
   return lines;
+}
+
+}  // namespace
+
+std::vector<Polyline> isolines(const std::vector<sph::Vec<2>>& points, const std::vector<double>& values,
+                               double level, double max_edge) {
+  if (!(max_edge > 0.0)) throw std::invalid_argument("isolines: max_edge must be > 0");
+  const double max_edge2 = max_edge * max_edge;  // inf stays inf
+  return trace_isolines(points, values, level, [&](std::size_t, std::size_t, std::size_t) { return max_edge2; });
+}
+
+std::vector<Polyline> isolines(const std::vector<sph::Vec<2>>& points, const std::vector<double>& values,
+                               double level, const std::vector<double>& max_edge_at) {
+  if (max_edge_at.size() != points.size()) throw std::invalid_argument("isolines: one max_edge per point expected");
+  for (double m : max_edge_at)
+    if (!(m > 0.0)) throw std::invalid_argument("isolines: max_edge must be > 0");
+  return trace_isolines(points, values, level, [&](std::size_t a, std::size_t b, std::size_t c) {
+    const double m = std::max({max_edge_at[a], max_edge_at[b], max_edge_at[c]});
+    return m * m;
+  });
 }
 
 }  // namespace frostwall::post

@@ -32,5 +32,10 @@ struct Polyline {
 // level, or max_edge not > 0.
 std::vector<Polyline> isolines(const std::vector<sph::Vec<2>>& points, const std::vector<double>& values,
                                double level, double max_edge = std::numeric_limits<double>::infinity());
+// The same on a graded cloud: each point has its own limit (a few of its
+// local spacings); a triangle is skipped when its longest edge exceeds the
+// largest limit of its three corners.
+std::vector<Polyline> isolines(const std::vector<sph::Vec<2>>& points, const std::vector<double>& values,
+                               double level, const std::vector<double>& max_edge_at);
 
 }  // namespace frostwall::post
