@@ -70,7 +70,7 @@ inline project::Project shipped_project(const std::string& name, const nlohmann:
 // stops at closure or at t_end.
 inline std::optional<double> closure_day(run::Model& m, double t_end) {
   const auto& P = m.particles();
-  post::ClosureDetector detector(P.position, m.model->free_count(), P.spacing, m.shaft->far_field_radius);
+  post::ClosureDetector detector(P, m.shaft->far_field_radius);
   post::ClosureWatch watch(detector);
   thermal::TimeLoopObservers obs;
   obs.after_step = [&](const thermal::ThermalModel& model, double t) { watch.observe(t, model.liquid_fraction(), t_end / 2000.0); };

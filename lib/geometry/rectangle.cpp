@@ -1,6 +1,10 @@
 #include "geometry/rectangle.hpp"
 
+#include <algorithm>
 #include <cmath>
+
+#include "geometry/graded_placement.hpp"
+#include "geometry/voronoi_volumes.hpp"
 #include <fmt/core.h>
 
 namespace frostwall::geometry {
@@ -95,6 +99,111 @@ RectangleScene build_rectangle(const project::Rectangle& rect, double spacing, d
   return scene;
 }
 
+namespace {
+// The coldest fixed side at t = 0 (index left, right, bottom, top), -1 if none.
+int coldest_side(const project::Rectangle& rect) {
+  const std::array<const project::SideCondition*, 4> conditions{&rect.left, &rect.right, &rect.bottom, &rect.top};
+  int coldest = -1;
+  double coldest_T = 0.0;
+  for (int s = 0; s < 4; ++s) {
+    if (!is_fixed(*conditions[s])) continue;
+    const double T = std::get<project::FixedTemperature>(*conditions[s]).temperature.at(0.0);
+    if (coldest < 0 || T < coldest_T) {
+      coldest = s;
+      coldest_T = T;
+    }
+  }
+  return coldest;
+}
+
+// Side s as a line: a point on it and its inward normal.
+std::pair<sph::Vec<2>, sph::Vec<2>> side_line(const project::Rectangle& rect, int s) {
+  using V = sph::Vec<2>;
+  switch (s) {
+    case 0: return {V(0, 0), V(1, 0)};
+    case 1: return {V(rect.width, 0), V(-1, 0)};
+    case 2: return {V(0, 0), V(0, 1)};
+    default: return {V(0, rect.height), V(0, -1)};
+  }
+}
+}  // namespace
+
+SizeField rectangle_size_field(const project::Rectangle& rect, double finest, const project::Grading& grading) {
+  const double coarsest = std::min(grading.coarsening * finest, 0.5 * std::min(rect.width, rect.height));
+  SizeField size(finest, std::max(finest, coarsest));
+  const int s = coldest_side(rect);
+  if (s < 0) return size;  // nothing cooled: as coarse as allowed
+  const auto [point, normal] = side_line(rect, s);
+  const double across = s < 2 ? rect.width : rect.height;
+  const double slope = grading.growth - 1.0;
+  size.near_line(point, normal, 0.0, finest, slope);
+  size.near_line(point, normal, grading.band_width.value_or(across / 3.0), grading.band_coarsening * finest, slope);
+  return size;
+}
+
+RectangleScene build_graded_rectangle(const project::Rectangle& rect, const SizeField& size, double smoothing_ratio) {
+  RectangleScene scene;
+  const std::array<const project::SideCondition*, 4> sides{&rect.left, &rect.right, &rect.bottom, &rect.top};
+  const std::array<const char*, 4> names{"left", "right", "bottom", "top"};
+  std::array<int, 4> id{-1, -1, -1, -1};
+  for (int s = 0; s < 4; ++s)
+    if (is_fixed(*sides[s])) {
+      id[s] = static_cast<int>(scene.boundaries.size());
+      scene.boundaries.push_back({names[s], std::get<project::FixedTemperature>(*sides[s]).temperature});
+    }
+  auto& P = scene.particles;
+  using V = sph::Vec<2>;
+  std::array<ReflectingWall, 4> wall;
+  PlacementRegion region;
+  region.outline = {V(0, 0), V(rect.width, 0), V(rect.width, rect.height), V(0, rect.height)};
+  region.inside = [&](const V& x) { return x[0] > 0 && x[0] < rect.width && x[1] > 0 && x[1] < rect.height; };
+  for (int s = 0; s < 4; ++s) {
+    const auto [point, normal] = side_line(rect, s);
+    wall[s] = {point, normal, 0.0};
+    if (id[s] >= 0) region.walls.push_back(wall[s]);
+    else P.mirrors.push_back({point, V(std::abs(normal[0]), std::abs(normal[1]))});
+  }
+  region.mirrors = P.mirrors;
+  PlacementReport report;
+  const std::vector<V> free = place_graded(region, size, 40, &report);
+
+  for (const auto& x : free) P.add(x, 0.0, -1);
+  // Reflections across the fixed sides, then across two (corners).
+  std::vector<std::size_t> source;
+  auto reach = [&](const V& x) { return 2.2 * smoothing_ratio * size(x); };
+  for (int s = 0; s < 4; ++s) {
+    if (id[s] < 0) continue;
+    for (std::size_t i = 0; i < free.size(); ++i)
+      if (wall[s].distance(free[i]) < reach(free[i])) {
+        P.add(wall[s].reflect(free[i]), 0.0, id[s], free[i]);
+        source.push_back(i);
+      }
+  }
+  for (int a = 0; a < 4; ++a)
+    for (int b = a + 1; b < 4; ++b) {
+      if (id[a] < 0 || id[b] < 0 || (a < 2) == (b < 2)) continue;  // two fixed sides meeting at a corner
+      for (std::size_t i = 0; i < free.size(); ++i)
+        if (wall[a].distance(free[i]) < reach(free[i]) && wall[b].distance(free[i]) < reach(free[i])) {
+          P.add(wall[b].reflect(wall[a].reflect(free[i])), 0.0, id[a]);
+          source.push_back(i);
+        }
+    }
+  P.order_free_first();  // already in order
+  assign_voronoi_volumes(P, 2.0 * smoothing_ratio * size.coarsest());
+  const double scale = assign_free_spacing(P, size);
+  for (std::size_t k = 0; k < source.size(); ++k) {
+    P.volume[P.n_free + k] = P.volume[source[k]];
+    P.local_spacing[P.n_free + k] = P.local_spacing[source[k]];
+  }
+  P.spacing = *std::min_element(P.local_spacing.begin(), P.local_spacing.end());
+  scene.spacing = {P.spacing, P.spacing};
+  scene.notes.push_back(fmt::format(
+      "placement: graded, {} free particles (CVT, {} Lloyd iterations, last move {:.3f} spacings), spacing {:.4g} to "
+      "{:.4g} m, scale {:.3f}",
+      P.n_free, report.iterations, report.last_move, P.spacing, P.coarsest_spacing(), scale));
+  return scene;
+}
+
 std::optional<CooledFace> cooled_face(const project::Rectangle& rect, const RectangleScene& scene) {
   using V = sph::Vec<2>;
   const std::array<CooledFace, 4> faces{{{"left", V(0, 0), V(1, 0), scene.spacing[0]},
@@ -112,6 +221,7 @@ std::optional<CooledFace> cooled_face(const project::Rectangle& rect, const Rect
       coldest_T = T;
     }
   }
+  if (coldest && scene.particles.graded()) coldest->lattice_rows = false;
   return coldest;
 }
 

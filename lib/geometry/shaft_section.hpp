@@ -20,6 +20,7 @@
 
 #include "geometry/layout.hpp"
 #include "geometry/scene.hpp"
+#include "geometry/size_field.hpp"
 #include "geometry/symmetry.hpp"
 #include "project/project.hpp"
 
@@ -36,6 +37,26 @@ struct ShaftScene : Scene {
 
 ShaftScene build_shaft_section(const project::ShaftSection& section, const project::Domain& domain,
                                const Wedge& wedge, double spacing, double h);
+
+// The spacing a graded shaft section asks for (numerics.placement "graded"):
+//  - `finest` at every pipe wall, growing at (growth - 1) per metre away;
+//  - band_coarsening * finest in the wall band, the annulus from
+//    band_width inside the innermost pipe ring to band_width outside the
+//    outermost, growing the same way outside it;
+//  - at most coarsening * finest;
+//  - near a wedge's apex at most the arc between the wedge's mirror images
+//    (r * angle), so the images around the axis still form round cells.
+SizeField shaft_size_field(const project::ShaftSection& section, const Wedge& wedge, double finest,
+                           const project::Grading& grading);
+
+// The same scene on a graded cloud (graded_placement.hpp): free particles
+// from a CVT of the wedge; each pipe disc holds ceil(2h/s) rings of fixed
+// particles at the pipe's spacing s, as on the lattice; the far field is
+// held by the free particles' reflections across the far-field circle
+// (within 2.2 h of it), each the antisymmetric image of its source. Free
+// particles take Voronoi volumes; every particle carries its local spacing.
+ShaftScene build_graded_shaft_section(const project::ShaftSection& section, const project::Domain& domain,
+                                      const Wedge& wedge, const SizeField& size, double smoothing_ratio);
 
 // The whole ring made of the wedge's particles: every particle copied by
 // every element of the wedge's mirror group, the mirror planes dropped.

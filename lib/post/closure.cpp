@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <numeric>
 
+#include "geometry/delaunay.hpp"
 #include "sph/cell_list.hpp"
 
 namespace frostwall::post {
@@ -23,6 +24,35 @@ ClosureDetector::ClosureDetector(const std::vector<sph::Vec<2>>& position, std::
     if (free[i].norm() < free[axis_].norm()) axis_ = static_cast<std::uint32_t>(i);
   }
 }
+
+ClosureDetector::ClosureDetector(const std::vector<sph::Vec<2>>& position, std::size_t n_free,
+                                 const std::vector<double>& local_spacing, double far_field_radius) {
+  std::vector<std::pair<geometry::Kernel2::Point_2, std::size_t>> points;
+  for (std::size_t i = 0; i < n_free; ++i) points.emplace_back(geometry::Kernel2::Point_2(position[i][0], position[i][1]), i);
+  const geometry::IndexedDelaunay dt(points.begin(), points.end());
+  std::vector<std::vector<std::uint32_t>> near(n_free);
+  for (auto e = dt.finite_edges_begin(); e != dt.finite_edges_end(); ++e) {
+    const std::size_t i = e->first->vertex(dt.cw(e->second))->info();
+    const std::size_t j = e->first->vertex(dt.ccw(e->second))->info();
+    if ((position[i] - position[j]).norm() > 3.0 * std::max(local_spacing[i], local_spacing[j])) continue;
+    near[i].push_back(static_cast<std::uint32_t>(j));
+    near[j].push_back(static_cast<std::uint32_t>(i));
+  }
+  start_.assign(n_free + 1, 0);
+  far_field_.assign(n_free, 0);
+  for (std::size_t i = 0; i < n_free; ++i) {
+    std::sort(near[i].begin(), near[i].end());
+    link_.insert(link_.end(), near[i].begin(), near[i].end());
+    start_[i + 1] = link_.size();
+    far_field_[i] = position[i].norm() > far_field_radius - 1.5 * local_spacing[i];
+    if (position[i].norm() < position[axis_].norm()) axis_ = static_cast<std::uint32_t>(i);
+  }
+}
+
+ClosureDetector::ClosureDetector(const sph::ParticleSet<2>& particles, double far_field_radius)
+    : ClosureDetector(particles.graded()
+                          ? ClosureDetector(particles.position, particles.n_free, particles.local_spacing, far_field_radius)
+                          : ClosureDetector(particles.position, particles.n_free, particles.spacing, far_field_radius)) {}
 
 double ClosureDetector::bottleneck(const std::vector<double>& f) const {
   // Kruskal-like: add particles from the most liquid down, joining linked

@@ -11,12 +11,19 @@
 // the liquid fraction of the last particle that keeps the gap open, so it
 // falls continuously while that particle freezes, and the closure time can
 // be interpolated between two steps instead of snapping to one.
+//
+// A graded cloud has no lattice neighbourhood: there the links are the
+// edges of the Delaunay triangulation of the free particles (no longer
+// than three local spacings, so no link crosses a pipe hole; in a wedge's
+// apex, narrower than a spacing, the particles sit two spacings apart). A triangulation is planar, so a frozen wall cuts
+// the unfrozen ground off exactly when it is a chain of linked particles.
 #pragma once
 
 #include <cstdint>
 #include <optional>
 #include <vector>
 
+#include "sph/particle_set.hpp"
 #include "sph/vec.hpp"
 
 namespace frostwall::post {
@@ -25,7 +32,14 @@ class ClosureDetector {
  public:
   ClosureDetector(const std::vector<sph::Vec<2>>& position, std::size_t n_free, double spacing,
                   double far_field_radius);
+  // Graded clouds: links along Delaunay edges; far-field particles within
+  // 1.5 local spacings of the far-field circle.
+  ClosureDetector(const std::vector<sph::Vec<2>>& position, std::size_t n_free,
+                  const std::vector<double>& local_spacing, double far_field_radius);
+  // The lattice rule for a lattice, the Delaunay rule for a graded cloud.
+  ClosureDetector(const sph::ParticleSet<2>& particles, double far_field_radius);
   double bottleneck(const std::vector<double>& liquid_fraction) const;
+  std::size_t links() const { return link_.size(); }
   bool closed(const std::vector<double>& liquid_fraction) const { return bottleneck(liquid_fraction) <= 0.5; }
 
  private:

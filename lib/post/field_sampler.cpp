@@ -12,7 +12,8 @@ namespace frostwall::post {
 
 struct FieldSampler::Cloud {
   const sph::Kernel* kernel = nullptr;
-  double h = 0.0;
+  double h_max = 0.0;                  // the largest smoothing length
+  std::vector<double> h;               // per point (of its source)
   std::size_t n_particles = 0;
   std::vector<Vec2> points;            // real particles, then images
   std::vector<std::uint32_t> source;   // particle a point carries the value of
@@ -20,19 +21,20 @@ struct FieldSampler::Cloud {
   std::unique_ptr<sph::CellList<2>> cells;
 };
 
-FieldSampler::FieldSampler(const sph::ParticleSet<2>& particles, const sph::Kernel& kernel, double h)
+FieldSampler::FieldSampler(const sph::ParticleSet<2>& particles, const sph::Kernel& kernel,
+                           const sph::SmoothingLengths& h)
     : cloud_(std::make_unique<Cloud>()) {
-  if (!(h > 0.0)) throw std::invalid_argument("field sampler: smoothing length must be > 0");
+  if (!(h.smallest() > 0.0)) throw std::invalid_argument("field sampler: smoothing length must be > 0");
   auto& c = *cloud_;
   c.kernel = &kernel;
-  c.h = h;
+  c.h_max = h.largest();
   c.n_particles = particles.size();
-  const double reach = sph::Kernel::support_factor * h;
+  const double reach = sph::Kernel::support_factor * c.h_max;
   // mirror_images keeps images within its reach of a free particle; a sample
   // point is up to about a spacing from the nearest free particle (between
   // a wedge side and the first lattice row), so reach further by a spacing
   // or an image at the rim of its support would be missed.
-  const double spacing = particles.spacing > 0.0 ? particles.spacing : h;
+  const double spacing = particles.spacing > 0.0 ? particles.coarsest_spacing() : c.h_max;
   const auto images = sph::mirror_images(particles, reach + spacing);
   c.points = particles.position;
   c.points.insert(c.points.end(), images.position.begin(), images.position.end());
@@ -40,8 +42,12 @@ FieldSampler::FieldSampler(const sph::ParticleSet<2>& particles, const sph::Kern
   for (std::size_t j = 0; j < particles.size(); ++j) c.source[j] = static_cast<std::uint32_t>(j);
   std::copy(images.source.begin(), images.source.end(), c.source.begin() + particles.size());
   c.volume.resize(c.points.size());
-  for (std::size_t k = 0; k < c.points.size(); ++k) c.volume[k] = particles.volume[c.source[k]];
-  c.cells = std::make_unique<sph::CellList<2>>(c.points, reach);
+  c.h.resize(c.points.size());
+  for (std::size_t k = 0; k < c.points.size(); ++k) {
+    c.volume[k] = particles.volume[c.source[k]];
+    c.h[k] = h.of(c.source[k]);
+  }
+  c.cells = std::make_unique<sph::CellList<2>>(c.points, sph::Kernel::support_factor * h.smallest());
 }
 
 FieldSampler::~FieldSampler() = default;
@@ -49,14 +55,14 @@ FieldSampler::FieldSampler(FieldSampler&&) noexcept = default;
 FieldSampler& FieldSampler::operator=(FieldSampler&&) noexcept = default;
 
 std::size_t FieldSampler::particle_count() const { return cloud_->n_particles; }
-double FieldSampler::support() const { return sph::Kernel::support_factor * cloud_->h; }
+double FieldSampler::support() const { return sph::Kernel::support_factor * cloud_->h_max; }
 
 std::vector<std::pair<std::uint32_t, double>> FieldSampler::weights(const Vec2& x) const {
   const auto& c = *cloud_;
   std::vector<std::pair<std::uint32_t, double>> w;
   double total = 0.0;
   c.cells->for_each_within(x, support(), [&](std::uint32_t k, double r) {
-    const double wk = c.kernel->value(r, c.h) * c.volume[k];
+    const double wk = c.kernel->value(r, c.h[k]) * c.volume[k];
     if (wk <= 0.0) return;
     w.emplace_back(c.source[k], wk);
     total += wk;
@@ -80,7 +86,7 @@ double FieldSampler::value(const Vec2& x, const std::vector<double>& field) cons
     throw std::invalid_argument("field sampler: the field must have one value per particle");
   double sum = 0.0, total = 0.0;
   c.cells->for_each_within(x, support(), [&](std::uint32_t k, double r) {
-    const double wk = c.kernel->value(r, c.h) * c.volume[k];
+    const double wk = c.kernel->value(r, c.h[k]) * c.volume[k];
     sum += wk * field[c.source[k]];
     total += wk;
   });

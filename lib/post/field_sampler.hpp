@@ -12,7 +12,7 @@
 //
 // Nothing field-specific is stored, so one sampler serves temperature and
 // liquid fraction at every snapshot. A point with no particle within the
-// support 2h gets NaN.
+// support 2h gets NaN. On a graded cloud each particle has its own h_j.
 #pragma once
 
 #include <cstdint>
@@ -22,6 +22,7 @@
 
 #include "sph/kernel.hpp"
 #include "sph/particle_set.hpp"
+#include "sph/smoothing_lengths.hpp"
 #include "sph/vec.hpp"
 
 namespace frostwall::post {
@@ -31,14 +32,16 @@ using Vec2 = sph::Vec<2>;
 class FieldSampler {
  public:
   // The kernel must outlive the sampler; the particle set need not.
-  FieldSampler(const sph::ParticleSet<2>& particles, const sph::Kernel& kernel, double h);
+  // h: one smoothing length, or one per particle (a graded cloud: each
+  // particle spreads its value over its own support, W(x - x_j, h_j)).
+  FieldSampler(const sph::ParticleSet<2>& particles, const sph::Kernel& kernel, const sph::SmoothingLengths& h);
   ~FieldSampler();
   FieldSampler(FieldSampler&&) noexcept;
   FieldSampler& operator=(FieldSampler&&) noexcept;
 
   // Number of values a field must have (all particles, free then fixed).
   std::size_t particle_count() const;
-  double support() const;  // 2h
+  double support() const;  // 2h (graded: the largest)
 
   // field has one value per particle; throws std::invalid_argument otherwise.
   double value(const Vec2& x, const std::vector<double>& field) const;

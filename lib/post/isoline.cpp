@@ -41,23 +41,39 @@ std::vector<Polyline> isolines(const std::vector<sph::Vec<2>>& points, const std
   return IsolineMesh(points, max_edge).isolines(values, level);
 }
 
-IsolineMesh::IsolineMesh(std::vector<sph::Vec<2>> points, double max_edge) : points_(std::move(points)) {
+std::vector<Polyline> isolines(const std::vector<sph::Vec<2>>& points, const std::vector<double>& values,
+                               double level, const std::vector<double>& max_edge_at) {
+  if (values.size() != points.size())
+    throw std::invalid_argument("isolines: values and points differ in size");
+  return IsolineMesh(points, max_edge_at).isolines(values, level);
+}
+
+IsolineMesh::IsolineMesh(std::vector<sph::Vec<2>> points, double max_edge)
+    : IsolineMesh(std::move(points), std::vector<double>{max_edge}) {}
+
+IsolineMesh::IsolineMesh(std::vector<sph::Vec<2>> points, const std::vector<double>& max_edge_at)
+    : points_(std::move(points)) {
   const auto& P = points_;
   if (P.size() > 0xffffffffu) throw std::invalid_argument("isolines: too many points");
-  if (!(max_edge > 0.0)) throw std::invalid_argument("isolines: max_edge must be > 0");
+  // One limit for all points, or one per point.
+  const bool one = max_edge_at.size() == 1;
+  if (!one && max_edge_at.size() != P.size()) throw std::invalid_argument("isolines: one max_edge per point expected");
+  for (double m : max_edge_at)
+    if (!(m > 0.0)) throw std::invalid_argument("isolines: max_edge must be > 0");
+  auto limit = [&](std::uint32_t i) { return one ? max_edge_at[0] : max_edge_at[i]; };
   for (const auto& x : P)
     if (!x.allFinite()) throw std::invalid_argument("isolines: non-finite point or value");
   std::vector<std::pair<K::Point_2, std::size_t>> input;
   input.reserve(P.size());
   for (std::size_t i = 0; i < P.size(); ++i) input.emplace_back(K::Point_2(P[i][0], P[i][1]), i);
   const Delaunay dt(input.begin(), input.end());
-  const double max_edge2 = max_edge * max_edge;  // inf stays inf
   for (auto f = dt.finite_faces_begin(); f != dt.finite_faces_end(); ++f) {
     std::array<std::uint32_t, 3> v;
     double longest2 = 0.0;
     for (int k = 0; k < 3; ++k) v[k] = static_cast<std::uint32_t>(f->vertex(k)->info());
     for (int k = 0; k < 3; ++k) longest2 = std::max(longest2, (P[v[k]] - P[v[(k + 1) % 3]]).squaredNorm());
-    if (longest2 <= max_edge2) triangles_.push_back(v);
+    const double m = std::max({limit(v[0]), limit(v[1]), limit(v[2])});
+    if (longest2 <= m * m) triangles_.push_back(v);  // inf stays inf
   }
 }
 

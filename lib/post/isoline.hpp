@@ -35,11 +35,18 @@ struct Polyline {
 std::vector<Polyline> isolines(const std::vector<sph::Vec<2>>& points, const std::vector<double>& values,
                                double level, double max_edge = std::numeric_limits<double>::infinity());
 
+// The same on a graded cloud: each point has its own limit (a few of its
+// local spacings); a triangle is skipped when its longest edge exceeds the
+// largest limit of its three corners.
+std::vector<Polyline> isolines(const std::vector<sph::Vec<2>>& points, const std::vector<double>& values,
+                               double level, const std::vector<double>& max_edge_at);
+
 // The same, with the triangulation built once for points that do not move
 // (our particles): each call then costs one pass over the triangles.
 class IsolineMesh {
  public:
   IsolineMesh(std::vector<sph::Vec<2>> points, double max_edge = std::numeric_limits<double>::infinity());
+  IsolineMesh(std::vector<sph::Vec<2>> points, const std::vector<double>& max_edge_at);
   std::vector<Polyline> isolines(const std::vector<double>& values, double level) const;
   std::size_t size() const { return points_.size(); }
 

@@ -281,7 +281,7 @@ TimeSettings read_time(const Node& n) {
 Numerics read_numerics(const Node& n) {
   Numerics numerics;
   if (!n.object({"spacing", "kernel", "smoothing_ratio", "integrator", "beta", "step_change", "conductivity_mean",
-                 "laplacian", "symmetry"}))
+                 "laplacian", "symmetry", "placement", "coarsening", "growth", "band_coarsening", "band_width"}))
     return numerics;
   numerics.spacing = n["spacing"].positive();
   numerics.kernel = n["kernel"].choice<KernelKind>(
@@ -303,6 +303,34 @@ Numerics read_numerics(const Node& n) {
                            .value_or(numerics.laplacian);
   numerics.use_symmetry = n["symmetry"].choice<bool>("symmetry", {{"auto", true}, {"off", false}})
                               .value_or(numerics.use_symmetry);
+  numerics.placement = n["placement"].choice<Placement>(
+      "placement", {{"lattice", Placement::lattice}, {"graded", Placement::graded}})
+                           .value_or(numerics.placement);
+  // The grading: only with placement "graded" (a lattice would ignore it).
+  Grading& g = numerics.grading;
+  const Node coarsening = n["coarsening"], growth = n["growth"], band = n["band_coarsening"], width = n["band_width"];
+  if (numerics.placement != Placement::graded) {
+    for (const auto& field : {coarsening, growth, band, width})
+      if (field.present()) field.problem(R"(only used with "placement": "graded")");
+    return numerics;
+  }
+  if (const auto c = coarsening.number()) {
+    if (*c < 1.0) coarsening.problem(fmt::format("must be at least 1 (coarsest / finest spacing), got {}", *c));
+    else g.coarsening = *c;
+  }
+  if (const auto r = growth.number()) {
+    if (*r <= 1.0 || *r > 2.0)
+      growth.problem(fmt::format("must be above 1 and at most 2 (ratio of neighbouring spacings), got {}", *r));
+    else g.growth = *r;
+  }
+  if (const auto b = band.number()) {
+    if (*b < 1.0 || *b > g.coarsening)
+      band.problem(fmt::format("must be between 1 and numerics.coarsening ({}), got {}", g.coarsening, *b));
+    else g.band_coarsening = *b;
+  } else if (g.band_coarsening > g.coarsening) {
+    g.band_coarsening = g.coarsening;  // the default band never coarser than the far field
+  }
+  g.band_width = width.non_negative();
   return numerics;
 }
 

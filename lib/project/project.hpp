@@ -120,6 +120,19 @@ enum class KernelKind { wendland_c2, cubic_spline };
 enum class IntegratorKind { explicit_euler, implicit, rkl2 };
 enum class ConductivityMean { harmonic, arithmetic };
 enum class LaplacianForm { renormalised, plain };
+enum class Placement { lattice, graded };
+
+// numerics.placement "graded": the spacing grows from numerics.spacing
+// (finest, at the pipe walls) through a wall band to a coarse far field.
+struct Grading {
+  double coarsening = 8.0;       // coarsest spacing / finest
+  double growth = 1.2;           // largest ratio of the spacings of neighbouring particles
+  double band_coarsening = 2.0;  // spacing in the wall band / finest
+  // Half-width of the wall band, m: beyond the innermost and outermost pipe
+  // rings (shaft sections) or from the cooled face (rectangles). nullopt =
+  // frostwall chooses (2 m round the rings; a third of a rectangle).
+  std::optional<double> band_width;
+};
 
 struct Numerics {
   std::optional<double> spacing;  // m; nullopt = frostwall chooses
@@ -135,6 +148,8 @@ struct Numerics {
   // Shaft sections: simulate the smallest mirror-symmetric wedge ("auto"),
   // or the whole ring ("off"; a check of the wedge, or for asymmetric ground).
   bool use_symmetry = true;
+  Placement placement = Placement::lattice;
+  Grading grading;
 };
 
 struct Design {

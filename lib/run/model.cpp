@@ -21,8 +21,12 @@ Model build_model(const project::Project& p) {
   Model m;
   const double spacing = p.numerics.spacing.value_or(default_spacing(p));
   m.h = p.numerics.smoothing_ratio * spacing;
+  const bool graded = p.numerics.placement == project::Placement::graded;
   if (const auto* rect = std::get_if<project::Rectangle>(&p.geometry)) {
-    auto scene = std::make_unique<geometry::RectangleScene>(geometry::build_rectangle(*rect, spacing, m.h));
+    auto scene = std::make_unique<geometry::RectangleScene>(
+        graded ? geometry::build_graded_rectangle(
+                     *rect, geometry::rectangle_size_field(*rect, spacing, p.numerics.grading), p.numerics.smoothing_ratio)
+               : geometry::build_rectangle(*rect, spacing, m.h));
     m.face = geometry::cooled_face(*rect, *scene);
     m.rectangle = scene.get();
     m.scene = std::move(scene);
@@ -37,8 +41,11 @@ Model build_model(const project::Project& p) {
                                     ? section.layout.rings.front().offset_deg
                                     : section.layout.outer_ring.offset_deg) * M_PI / 180.0;
     const auto wedge = geometry::find_symmetry_wedge(pipes, start);
-    auto scene =
-        std::make_unique<geometry::ShaftScene>(geometry::build_shaft_section(section, p.domain, wedge, spacing, m.h));
+    auto scene = std::make_unique<geometry::ShaftScene>(
+        graded ? geometry::build_graded_shaft_section(
+                     section, p.domain, wedge, geometry::shaft_size_field(section, wedge, spacing, p.numerics.grading),
+                     p.numerics.smoothing_ratio)
+               : geometry::build_shaft_section(section, p.domain, wedge, spacing, m.h));
     scene->notes.push_back(geometry::describe(wedge));
     if (!p.numerics.use_symmetry) {
       geometry::unfold_to_full_ring(*scene);
@@ -47,14 +54,20 @@ Model build_model(const project::Project& p) {
     m.shaft = scene.get();
     m.scene = std::move(scene);
   }
+  // A graded cloud: h_i = smoothing_ratio * local spacing; the explicit
+  // step follows the smallest.
+  m.smoothing = m.particles().graded() ? sph::SmoothingLengths::of_particles(m.particles(), p.numerics.smoothing_ratio)
+                                       : sph::SmoothingLengths(m.h);
+  m.h = m.smoothing.smallest();
   m.kernel = sph::make_kernel<2>(p.numerics.kernel);
   thermal::PhaseChangeLaw law(p.soil);
   sph::LaplacianPairs pairs =
-      sph::build_laplacian_pairs<2>(m.particles(), *m.kernel, {m.h, p.numerics.laplacian, law.anisotropic()});
+      sph::build_laplacian_pairs<2>(m.particles(), *m.kernel,
+                                    {m.smoothing, p.numerics.laplacian, law.anisotropic(), m.particles().graded()});
   m.model = std::make_unique<thermal::ThermalModel>(
       m.particles().volume, m.particles().boundary, std::move(pairs), law, m.scene->boundaries,
       thermal::ConductionOptions{p.numerics.conductivity_mean, p.numerics.laplacian}, p.domain.initial_temperature,
-      sph::build_wall_extrapolation(m.particles(), *m.kernel, m.h));
+      sph::build_wall_extrapolation(m.particles(), *m.kernel, m.smoothing));
   const double explicit_step = p.numerics.beta * m.h * m.h / law.max_diffusivity();
   if (p.numerics.integrator == project::IntegratorKind::implicit) {
     thermal::BackwardEulerSettings settings;

@@ -10,6 +10,7 @@
 #include "geometry/shaft_section.hpp"
 #include "project/project.hpp"
 #include "sph/kernel.hpp"
+#include "sph/smoothing_lengths.hpp"
 #include "thermal/integrator.hpp"
 #include "thermal/thermal_model.hpp"
 
@@ -21,7 +22,9 @@ struct Model {
   const geometry::ShaftScene* shaft = nullptr;          // shaft sections
   std::optional<geometry::CooledFace> face;             // rectangles: where fronts are measured from
   std::unique_ptr<sph::Kernel> kernel;
-  double h = 0.0;
+  // Smoothing lengths: one (lattice) or one per particle (graded placement).
+  sph::SmoothingLengths smoothing;
+  double h = 0.0;  // the smallest smoothing length (it sets the explicit step)
   std::unique_ptr<thermal::ThermalModel> model;
   std::unique_ptr<thermal::Integrator> integrator;
 

@@ -115,7 +115,7 @@ void run_project(const Project& p, const RunOptions& options) {
   std::optional<post::ClosureDetector> closure;
   std::optional<post::ClosureWatch> closure_watch;
   if (built.shaft) {
-    closure.emplace(particles.position, model.free_count(), particles.spacing, built.shaft->far_field_radius);
+    closure.emplace(particles, built.shaft->far_field_radius);
     closure_watch.emplace(*closure);
   }
 
@@ -193,6 +193,8 @@ void run_project(const Project& p, const RunOptions& options) {
         {"threads", omp_get_max_threads()},
         {"integrator", integrator_name(p.numerics.integrator)},
         {"spacing", particles.spacing},
+        {"placement", particles.graded() ? "graded" : "lattice"},
+        {"coarsest_spacing", particles.coarsest_spacing()},
         {"smoothing_length", h},
         {"kernel", built.kernel->name()},
         {"time_unit", p.time.unit == project::TimeUnit::s ? "s" : (p.time.unit == project::TimeUnit::h ? "h" : "d")}}},

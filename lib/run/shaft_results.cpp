@@ -40,7 +40,7 @@ InterfacePlanes interface_planes(const std::vector<geometry::Pipe2>& pipes) {
 }
 
 ShaftResults::ShaftResults(const project::Project& p, const Model& m)
-    : project_(p), model_(m), planes_(interface_planes(m.shaft->pipes)), sampler_(m.particles(), *m.kernel, m.h) {
+    : project_(p), model_(m), planes_(interface_planes(m.shaft->pipes)), sampler_(m.particles(), *m.kernel, m.smoothing) {
   const auto& shaft = *m.shaft;
   const double dx = m.particles().spacing, R = shaft.far_field_radius;
   // The fan over the simulated wedge finds the weakest ray; a second gauge
@@ -80,7 +80,7 @@ ShaftResults::ShaftResults(const project::Project& p, const Model& m)
   const auto& P = m.particles();
   curve_points_ = P.position;
   for (std::uint32_t i = 0; i < P.size(); ++i) curve_source_.push_back(i);
-  const auto images = sph::mirror_images(P, 3.0 * dx);
+  const auto images = sph::mirror_images(P, 3.0 * P.coarsest_spacing());
   curve_points_.insert(curve_points_.end(), images.position.begin(), images.position.end());
   curve_source_.insert(curve_source_.end(), images.source.begin(), images.source.end());
   if (p.output.full_ring && !P.mirrors.empty())
@@ -111,8 +111,17 @@ void ShaftResults::snapshot(double t, const thermal::ThermalModel& model, const 
   profiles_OA_.push_back((*profile_OA_)(model.temperature()));
   profiles_OB_.push_back((*profile_OB_)(model.temperature()));
 
-  // The 0.5 liquid-fraction isoline, kept inside the wedge.
-  const double dx = model_.particles().spacing;
+  // The 0.5 liquid-fraction isoline, kept inside the wedge. Triangles
+  // longer than three spacings (holes, hull) carry no front; on a graded
+  // cloud, three local spacings.
+  const auto& P = model_.particles();
+  // The triangulations are built at the first snapshot and reused.
+  auto mesh_of = [&](const std::vector<sph::Vec<2>>& points, const std::vector<std::uint32_t>& source) {
+    if (!P.graded()) return std::make_unique<post::IsolineMesh>(points, 3.0 * P.spacing);
+    std::vector<double> limit(points.size());
+    for (std::size_t k = 0; k < points.size(); ++k) limit[k] = 3.0 * P.spacing_of(source[k]);
+    return std::make_unique<post::IsolineMesh>(points, limit);
+  };
   auto values = [&](const std::vector<std::uint32_t>& source) {
     std::vector<double> v(source.size());
     for (std::size_t k = 0; k < source.size(); ++k) v[k] = model.liquid_fraction()[source[k]];
@@ -120,7 +129,7 @@ void ShaftResults::snapshot(double t, const thermal::ThermalModel& model, const 
   };
   const auto& wedge = model_.shaft->wedge;
   std::vector<post::Polyline> kept;
-  if (!curve_mesh_) curve_mesh_ = std::make_unique<post::IsolineMesh>(curve_points_, 3.0 * dx);
+  if (!curve_mesh_) curve_mesh_ = mesh_of(curve_points_, curve_source_);
   for (const auto& line : curve_mesh_->isolines(values(curve_source_), 0.5)) {
     post::Polyline piece;
     auto flush = [&] {
@@ -140,7 +149,7 @@ void ShaftResults::snapshot(double t, const thermal::ThermalModel& model, const 
   json entry = {{"day", t / day}, {"file", file}};
   if (!ring_points_.empty()) {
     const std::string ring_file = "interface_ring" + stem.substr(5) + ".vtp";
-    if (!ring_mesh_) ring_mesh_ = std::make_unique<post::IsolineMesh>(ring_points_, 3.0 * dx);
+    if (!ring_mesh_) ring_mesh_ = mesh_of(ring_points_, ring_source_);
     io::write_vtp(out / ring_file, ring_mesh_->isolines(values(ring_source_), 0.5));
     entry["full_ring_file"] = ring_file;
   }

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <vector>
@@ -40,14 +41,20 @@ class CellList {
     for (std::size_t i = 0; i < points.size(); ++i) sorted_[fill[cell_of[i]]++] = static_cast<std::uint32_t>(i);
   }
 
-  // Calls visit(index, distance) for every point within `radius` of x
-  // (radius must not exceed the cell size). Includes a point at x itself.
+  // Calls visit(index, distance) for every point within `radius` of x.
+  // Includes a point at x itself. A radius up to the cell size looks at
+  // 3^Dim cells; a larger one (graded clouds, whose supports differ) at the
+  // box of cells that covers it.
   template <class Visit>
   void for_each_within(const Vec<Dim>& x, double radius, Visit&& visit) const {
-    std::array<long, Dim> c;
-    for (int d = 0; d < Dim; ++d) c[d] = static_cast<long>(std::floor((x[d] - lo_[d]) / cell_));
+    std::array<long, Dim> lo, hi;
+    for (int d = 0; d < Dim; ++d) {
+      lo[d] = std::max<long>(0, static_cast<long>(std::floor((x[d] - radius - lo_[d]) / cell_)));
+      hi[d] = std::min<long>(dims_[d] - 1, static_cast<long>(std::floor((x[d] + radius - lo_[d]) / cell_)));
+      if (lo[d] > hi[d]) return;
+    }
     const double r2 = radius * radius;
-    visit_cells(c, 0, std::array<long, Dim>{}, [&](long cell) {
+    visit_cells(lo, hi, 0, std::array<long, Dim>{}, [&](long cell) {
       for (std::uint32_t k = start_[cell]; k < start_[cell + 1]; ++k) {
         const std::uint32_t j = sorted_[k];
         const double d2 = (points_[j] - x).squaredNorm();
@@ -69,16 +76,13 @@ class CellList {
     return index;
   }
   template <class F>
-  void visit_cells(const std::array<long, Dim>& centre, int d, std::array<long, Dim> c, F&& f) const {
+  void visit_cells(const std::array<long, Dim>& lo, const std::array<long, Dim>& hi, int d, std::array<long, Dim> c,
+                   F&& f) const {
     if (d == Dim) {
       f(linear(c));
       return;
     }
-    for (long o = -1; o <= 1; ++o) {
-      c[d] = centre[d] + o;
-      if (c[d] < 0 || c[d] >= dims_[d]) continue;
-      visit_cells(centre, d + 1, c, f);
-    }
+    for (c[d] = lo[d]; c[d] <= hi[d]; ++c[d]) visit_cells(lo, hi, d + 1, c, f);
   }
 
   const std::vector<Vec<Dim>>& points_;

@@ -9,14 +9,18 @@
 // c_i = -Dim / sum_j V_j F_ij |r_ij|^2: it makes the operator exact for
 // quadratic fields on a lattice (the plain form keeps an O(1) error at
 // fixed h/spacing) while keeping the flux antisymmetric, so energy is exact.
+// On a graded cloud each particle has its own h_i; F_ij uses the pair's
+// h_ij = (h_i + h_j)/2, which keeps V_i G_ij = V_j G_ji.
 #pragma once
 
+#include <Eigen/Core>
 #include <cstdint>
 #include <vector>
 
 #include "project/project.hpp"
 #include "sph/kernel.hpp"
 #include "sph/particle_set.hpp"
+#include "sph/smoothing_lengths.hpp"
 
 namespace frostwall::sph {
 
@@ -30,14 +34,21 @@ struct LaplacianPairs {
   std::vector<double> direction2;
   int dim = 2;
   std::vector<double> renormalisation;    // c_i per free particle (1 for plain)
+  // Moment correction (graded clouds): particles corrected, and the range of
+  // new weight / old weight over the pairs.
+  std::size_t moments_corrected = 0;
+  double smallest_weight_factor = 1.0, largest_weight_factor = 1.0;
 
   std::size_t pairs() const { return column.size(); }
 };
 
 struct LaplacianOptions {
-  double h = 0.0;
+  SmoothingLengths h;  // one h (lattice) or one per particle (graded: pairs use (h_i + h_j) / 2)
   project::LaplacianForm form = project::LaplacianForm::renormalised;
   bool keep_directions = false;  // anisotropic soil
+  // Graded clouds: make the renormalised weights exact for every quadratic
+  // field (moment_correction.hpp); a lattice is exact without it.
+  bool correct_moments = false;
 };
 
 template <int Dim>
@@ -51,6 +62,9 @@ template <int Dim>
 struct MirrorImages {
   std::vector<Vec<Dim>> position;
   std::vector<std::uint32_t> source;
+  // The linear part A of the isometry that made each image (y = A x + b):
+  // vectors and tensors at the source map to the image through it.
+  std::vector<Eigen::Matrix<double, Dim, Dim>> linear;
 };
 template <int Dim>
 MirrorImages<Dim> mirror_images(const ParticleSet<Dim>& particles, double reach);

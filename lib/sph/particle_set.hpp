@@ -3,6 +3,8 @@
 // and the mirror planes that make adiabatic sides. Fields live elsewhere.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <limits>
 #include <vector>
@@ -38,10 +40,21 @@ struct ParticleSet {
   std::vector<Vec<Dim>> reflection;  // fixed particles: see above; free: NaN
   std::size_t n_free = 0;
   std::vector<MirrorPlane<Dim>> mirrors;
-  double spacing = 0.0;  // the lattice spacing the cloud was made with
+  double spacing = 0.0;  // the lattice spacing the cloud was made with (graded: the finest)
+  // Graded clouds: each particle's own spacing (the side of a square of its
+  // volume, so a lattice particle would have the lattice spacing); empty
+  // for a lattice, where every particle has `spacing`.
+  std::vector<double> local_spacing;
 
   std::size_t size() const { return position.size(); }
   bool is_free(std::size_t i) const { return i < n_free; }
+  bool graded() const { return !local_spacing.empty(); }
+  double spacing_of(std::size_t i) const { return local_spacing.empty() ? spacing : local_spacing[i]; }
+  double coarsest_spacing() const {
+    double s = spacing;
+    for (double v : local_spacing) s = std::max(s, v);
+    return s;
+  }
 
   static Vec<Dim> on_wall() { return Vec<Dim>::Constant(std::numeric_limits<double>::quiet_NaN()); }
   void add(const Vec<Dim>& x, double v, int boundary_id, const Vec<Dim>& reflected = on_wall()) {
@@ -67,7 +80,10 @@ void ParticleSet<Dim>::order_free_first() {
   sorted.mirrors = mirrors;
   sorted.spacing = spacing;
   sorted.n_free = n_free;
-  for (std::size_t i : order) sorted.add(position[i], volume[i], boundary[i], reflection[i]);
+  for (std::size_t i : order) {
+    sorted.add(position[i], volume[i], boundary[i], reflection[i]);
+    if (graded()) sorted.local_spacing.push_back(local_spacing[i]);
+  }
   *this = std::move(sorted);
 }
 

@@ -8,8 +8,11 @@
 namespace frostwall::sph {
 
 template <int Dim>
-WallExtrapolation build_wall_extrapolation(const ParticleSet<Dim>& particles, const Kernel& kernel, double h) {
-  const double reach = Kernel::support_factor * h;
+WallExtrapolation build_wall_extrapolation(const ParticleSet<Dim>& particles, const Kernel& kernel,
+                                           const SmoothingLengths& smoothing) {
+  // Graded clouds: each fixed particle's own support (its spacing is the
+  // spacing of the ground it mirrors).
+  const double reach = Kernel::support_factor * smoothing.largest();
   // Free particles and their mirror images (folded onto their sources).
   std::vector<Vec<Dim>> points(particles.position.begin(), particles.position.begin() + particles.n_free);
   std::vector<std::uint32_t> source(particles.n_free);
@@ -20,7 +23,7 @@ WallExtrapolation build_wall_extrapolation(const ParticleSet<Dim>& particles, co
       points.push_back(images.position[k]);
       source.push_back(images.source[k]);
     }
-  const CellList<Dim> cells(points, reach);
+  const CellList<Dim> cells(points, Kernel::support_factor * smoothing.smallest());
 
   WallExtrapolation w;
   const std::size_t n_fixed = particles.size() - particles.n_free;
@@ -28,6 +31,7 @@ WallExtrapolation build_wall_extrapolation(const ParticleSet<Dim>& particles, co
   using P = Eigen::Matrix<double, Dim + 1, 1>;
   for (std::size_t f = 0; f < n_fixed; ++f) {
     const Vec<Dim>& x = particles.reflection[particles.n_free + f];
+    const double h = smoothing.of(particles.n_free + f);
     w.row_start[f + 1] = w.row_start[f];
     if (x.hasNaN()) continue;
     std::vector<std::pair<std::uint32_t, double>> near;
@@ -38,7 +42,7 @@ WallExtrapolation build_wall_extrapolation(const ParticleSet<Dim>& particles, co
       p.template tail<Dim>() = (y - x) / h;  // scaled: M stays well conditioned
       return p;
     };
-    cells.for_each_within(x, reach, [&](std::uint32_t k, double r) {
+    cells.for_each_within(x, Kernel::support_factor * h, [&](std::uint32_t k, double r) {
       const double W = kernel.value(r, h);
       if (W <= 0.0) return;
       near.emplace_back(k, W);
@@ -62,6 +66,6 @@ WallExtrapolation build_wall_extrapolation(const ParticleSet<Dim>& particles, co
   return w;
 }
 
-template WallExtrapolation build_wall_extrapolation<2>(const ParticleSet<2>&, const Kernel&, double);
+template WallExtrapolation build_wall_extrapolation<2>(const ParticleSet<2>&, const Kernel&, const SmoothingLengths&);
 
 }  // namespace frostwall::sph

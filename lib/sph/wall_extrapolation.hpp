@@ -10,6 +10,7 @@
 
 #include "sph/kernel.hpp"
 #include "sph/particle_set.hpp"
+#include "sph/smoothing_lengths.hpp"
 
 namespace frostwall::sph {
 
@@ -28,6 +29,7 @@ struct WallExtrapolation {
 };
 
 template <int Dim>
-WallExtrapolation build_wall_extrapolation(const ParticleSet<Dim>& particles, const Kernel& kernel, double h);
+WallExtrapolation build_wall_extrapolation(const ParticleSet<Dim>& particles, const Kernel& kernel,
+                                           const SmoothingLengths& h);
 
 }  // namespace frostwall::sph
