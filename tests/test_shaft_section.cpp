@@ -83,15 +83,19 @@ TEST_CASE("Single ring: wedge and full ring close on the same day", "[shaft]") {
 // of the stored enthalpy: the boundary pairs and the state are accounted
 // independently, so a leak (a mirror image missing its partner) shows.
 TEST_CASE("Shaft section: pipes + far field = change of stored heat", "[shaft][energy]") {
-  auto m = run::build_model(test::shipped_project("single_ring_sand.json", coarse(0.1, 5)));
+  // On the lattice (explicit) and on a graded cloud with the default integrator.
+  const bool graded = GENERATE(false, true);
+  auto m = run::build_model(test::shipped_project(
+      "single_ring_sand.json",
+      graded ? coarse(0.05, 5, {{"numerics", {{"placement", "graded"}, {"integrator", "rkl2"}}}}) : coarse(0.1, 5)));
   const double before = m.model->stored_heat();
   thermal::TimeLoopObservers none;
   const auto result = thermal::run_time_loop(*m.model, *m.integrator, 5 * 86400.0, {5 * 86400.0}, none);
   const double change = m.model->stored_heat() - before;
   double boundary = 0.0;
   for (double q : result.boundary_heat) boundary += q;
-  fmt::print("\nShaft energy over 5 days: stored change {:.9e} J/m, pipes {:.9e}, far field {:.3e}\n", change,
-             result.boundary_heat[m.shaft->pipe_boundary], result.boundary_heat[m.shaft->far_field_boundary]);
+  fmt::print("\nShaft energy over 5 days ({}): stored change {:.9e} J/m, pipes {:.9e}, far field {:.3e}\n", graded ? "graded, rkl2" : "lattice, explicit",
+             change, result.boundary_heat[m.shaft->pipe_boundary], result.boundary_heat[m.shaft->far_field_boundary]);
   CHECK(change < 0.0);
   CHECK(std::abs(change - boundary) < 1e-6 * std::abs(change));
 }
