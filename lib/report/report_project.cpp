@@ -150,9 +150,13 @@ void add_numerics(const RunRecord& run, json& view) {
                                                         : (n.spacing ? number(*n.spacing, 4) + " m" : "default")),
       row("kernel", fmt::format("{}, h = {} × spacing", n.kernel == project::KernelKind::cubic_spline ? "cubic spline" : "Wendland C2",
                                 number(n.smoothing_ratio, 2))),
-      row("time integration", n.integrator == project::IntegratorKind::implicit
-                                  ? std::string("implicit")
-                                  : fmt::format("explicit (forward Euler), β = {}", number(n.beta, 3))),
+      row("time integration",
+          n.integrator == project::IntegratorKind::explicit_euler
+              ? fmt::format("explicit (forward Euler), β = {}", number(n.beta, 3))
+              : fmt::format("{}, step: at most {} of the latent heat per particle",
+                            n.integrator == project::IntegratorKind::rkl2 ? "RKL2 super-time-stepping"
+                                                                           : "implicit (backward Euler)",
+                            number(n.step_change, 3))),
       row("Laplacian", n.laplacian == project::LaplacianForm::renormalised ? "renormalised" : "plain (the paper's)"),
       row("conductivity between particles", n.conductivity_mean == project::ConductivityMean::harmonic ? "harmonic mean" : "arithmetic (k_i + k_j)"),
       row("symmetry", n.use_symmetry ? "smallest mirror wedge" : "off: full ring"),
