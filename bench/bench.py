@@ -23,8 +23,8 @@ KERNEL = os.path.join(ROOT, "build", "bench", "kernel_rate")
 CASE = os.path.join(ROOT, "projects", "single_ring_sand.json")
 CONVERGED = os.path.join(ROOT, "bench", "converged.json")
 
-PAPER = {"integrator": "explicit", "beta": 0.1, "spacing": 0.025}
-CONVERGED_NUMERICS = {"integrator": "rkl2", "spacing": 0.0125, "step_change": 0.05}
+PAPER = {"integrator": "explicit", "beta": 0.1, "spacing": 0.025, "placement": "lattice"}
+CONVERGED_NUMERICS = {"integrator": "rkl2", "spacing": 0.0125, "step_change": 0.05, "placement": "lattice"}
 
 
 def run(numerics, threads, workdir, name, exe=EXE):

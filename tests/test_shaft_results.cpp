@@ -50,7 +50,7 @@ TEST_CASE("A shaft run writes the summary of the contract, CSV files and front c
   test::TempDir dir("frostwall-results");
   auto p = test::shipped_project(
       "single_ring_sand.json",
-      {{"numerics", {{"spacing", 0.1}, {"integrator", "explicit"}}},
+      {{"numerics", {{"spacing", 0.1}, {"integrator", "explicit"}, {"placement", "lattice"}}},
        {"time", {{"end", 20}, {"unit", "d"}, {"snapshots", {10, 20}}}},
        {"monitoring", {{{"name", "C1"}, {"r", 5.0}, {"theta_deg", 6.923}}, {{"name", "C2"}, {"x", -4.0}, {"y", 1.0}}}},
        {"output", {{"directory", (dir.path / "out").string()}, {"vtk", false}}}});

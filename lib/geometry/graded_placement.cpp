@@ -17,6 +17,9 @@ namespace frostwall::geometry {
 
 namespace {
 
+// Lloyd stops once no particle moves more than this many of its spacings.
+constexpr double settled_move = 0.05;
+
 using K = Kernel2;
 using MeshVertex = CGAL::Delaunay_mesh_vertex_base_2<K>;
 using MeshFace = CGAL::Delaunay_mesh_face_base_2<K>;
@@ -203,6 +206,10 @@ std::vector<Vec2> place_graded(const PlacementRegion& region, const SizeField& s
     points = std::move(moved);
     r.iterations = it + 1;
     r.last_move = largest;
+    // Settled: on the single ring, stopping here (about 20 iterations)
+    // instead of after 40 moved the closure day by 0.07 % and the wall
+    // thickness by 0.2 cm, well inside the spacing's own error.
+    if (largest < settled_move) break;
   }
   if (report) *report = r;
   return points;

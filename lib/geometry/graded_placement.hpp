@@ -58,6 +58,8 @@ struct PlacementReport {
   double last_move = 0.0;      // largest move of the last iteration, in local spacings
 };
 
+// At most `iterations` Lloyd iterations; fewer once the cloud has settled
+// (no particle moves more than 5 % of its spacing).
 std::vector<Vec2> place_graded(const PlacementRegion& region, const SizeField& size, int iterations,
                                PlacementReport* report = nullptr);
 

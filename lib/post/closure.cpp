@@ -5,6 +5,7 @@
 
 #include "geometry/delaunay.hpp"
 #include "sph/cell_list.hpp"
+#include "sph/laplacian.hpp"
 
 namespace frostwall::post {
 
@@ -26,22 +27,37 @@ ClosureDetector::ClosureDetector(const std::vector<sph::Vec<2>>& position, std::
 }
 
 ClosureDetector::ClosureDetector(const std::vector<sph::Vec<2>>& position, std::size_t n_free,
-                                 const std::vector<double>& local_spacing, double far_field_radius) {
+                                 const std::vector<double>& local_spacing, double far_field_radius,
+                                 const std::vector<sph::Vec<2>>& image_position,
+                                 const std::vector<std::uint32_t>& image_source) {
+  // Vertex k: free particle k (k < n_free), else image k - n_free.
   std::vector<std::pair<geometry::Kernel2::Point_2, std::size_t>> points;
-  for (std::size_t i = 0; i < n_free; ++i) points.emplace_back(geometry::Kernel2::Point_2(position[i][0], position[i][1]), i);
+  std::vector<sph::Vec<2>> where(position.begin(), position.begin() + n_free);
+  std::vector<std::uint32_t> source(n_free);
+  for (std::size_t i = 0; i < n_free; ++i) source[i] = static_cast<std::uint32_t>(i);
+  for (std::size_t k = 0; k < image_position.size(); ++k)
+    if (image_source[k] < n_free) {
+      where.push_back(image_position[k]);
+      source.push_back(image_source[k]);
+    }
+  for (std::size_t k = 0; k < where.size(); ++k) points.emplace_back(geometry::Kernel2::Point_2(where[k][0], where[k][1]), k);
   const geometry::IndexedDelaunay dt(points.begin(), points.end());
   std::vector<std::vector<std::uint32_t>> near(n_free);
   for (auto e = dt.finite_edges_begin(); e != dt.finite_edges_end(); ++e) {
-    const std::size_t i = e->first->vertex(dt.cw(e->second))->info();
-    const std::size_t j = e->first->vertex(dt.ccw(e->second))->info();
-    if ((position[i] - position[j]).norm() > 3.0 * std::max(local_spacing[i], local_spacing[j])) continue;
-    near[i].push_back(static_cast<std::uint32_t>(j));
-    near[j].push_back(static_cast<std::uint32_t>(i));
+    const std::size_t a = e->first->vertex(dt.cw(e->second))->info();
+    const std::size_t b = e->first->vertex(dt.ccw(e->second))->info();
+    if (a >= n_free && b >= n_free) continue;  // between two images: a copy of an edge at the real particles
+    const std::uint32_t i = source[a], j = source[b];
+    if (i == j) continue;
+    if ((where[a] - where[b]).norm() > 3.0 * std::max(local_spacing[i], local_spacing[j])) continue;
+    near[i].push_back(j);
+    near[j].push_back(i);
   }
   start_.assign(n_free + 1, 0);
   far_field_.assign(n_free, 0);
   for (std::size_t i = 0; i < n_free; ++i) {
     std::sort(near[i].begin(), near[i].end());
+    near[i].erase(std::unique(near[i].begin(), near[i].end()), near[i].end());
     link_.insert(link_.end(), near[i].begin(), near[i].end());
     start_[i + 1] = link_.size();
     far_field_[i] = position[i].norm() > far_field_radius - 1.5 * local_spacing[i];
@@ -49,9 +65,17 @@ ClosureDetector::ClosureDetector(const std::vector<sph::Vec<2>>& position, std::
   }
 }
 
+namespace {
+ClosureDetector graded_detector(const sph::ParticleSet<2>& particles, double far_field_radius) {
+  const auto images = sph::mirror_images(particles, 3.0 * particles.coarsest_spacing());
+  return ClosureDetector(particles.position, particles.n_free, particles.local_spacing, far_field_radius,
+                         images.position, images.source);
+}
+}  // namespace
+
 ClosureDetector::ClosureDetector(const sph::ParticleSet<2>& particles, double far_field_radius)
     : ClosureDetector(particles.graded()
-                          ? ClosureDetector(particles.position, particles.n_free, particles.local_spacing, far_field_radius)
+                          ? graded_detector(particles, far_field_radius)
                           : ClosureDetector(particles.position, particles.n_free, particles.spacing, far_field_radius)) {}
 
 double ClosureDetector::bottleneck(const std::vector<double>& f) const {

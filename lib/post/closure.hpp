@@ -15,8 +15,14 @@
 // A graded cloud has no lattice neighbourhood: there the links are the
 // edges of the Delaunay triangulation of the free particles (no longer
 // than three local spacings, so no link crosses a pipe hole; in a wedge's
-// apex, narrower than a spacing, the particles sit two spacings apart). A triangulation is planar, so a frozen wall cuts
-// the unfrozen ground off exactly when it is a chain of linked particles.
+// apex, narrower than a spacing, the particles sit two spacings apart). A
+// triangulation is planar, so a frozen wall cuts the unfrozen ground off
+// exactly when it is a chain of linked particles. On a wedge the mirror
+// images of the free particles are triangulated with them (a link to an
+// image is a link to its source): the wedge's own hull would run along
+// each mirror line, and such an edge passes between a frozen particle and
+// its image, a way round the wall that the symmetric field does not have
+// (a wedge then closed a day later than its full ring).
 #pragma once
 
 #include <cstdint>
@@ -34,8 +40,12 @@ class ClosureDetector {
                   double far_field_radius);
   // Graded clouds: links along Delaunay edges; far-field particles within
   // 1.5 local spacings of the far-field circle.
+  // image_position / image_source: mirror images of free particles (none
+  // for a full ring).
   ClosureDetector(const std::vector<sph::Vec<2>>& position, std::size_t n_free,
-                  const std::vector<double>& local_spacing, double far_field_radius);
+                  const std::vector<double>& local_spacing, double far_field_radius,
+                  const std::vector<sph::Vec<2>>& image_position = {},
+                  const std::vector<std::uint32_t>& image_source = {});
   // The lattice rule for a lattice, the Delaunay rule for a graded cloud.
   ClosureDetector(const sph::ParticleSet<2>& particles, double far_field_radius);
   double bottleneck(const std::vector<double>& liquid_fraction) const;

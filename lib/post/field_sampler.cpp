@@ -1,6 +1,7 @@
 #include "post/field_sampler.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <stdexcept>
 
@@ -18,7 +19,26 @@ struct FieldSampler::Cloud {
   std::vector<Vec2> points;            // real particles, then images
   std::vector<std::uint32_t> source;   // particle a point carries the value of
   std::vector<double> volume;          // V of the source
-  std::unique_ptr<sph::CellList<2>> cells;
+  // Points grouped by smoothing length (each level within a factor 2), one
+  // cell list per level sized to its supports: a query near fine particles
+  // then scans cells of their size, not of the far field's.
+  struct Level {
+    double reach = 0.0;                 // largest support in the level
+    std::vector<Vec2> points;
+    std::vector<std::uint32_t> index;   // into the cloud's points
+    std::unique_ptr<sph::CellList<2>> cells;
+  };
+  std::vector<Level> levels;
+
+  // visit(k, r) for every point k whose support reaches x.
+  template <class Visit>
+  void for_each_reaching(const Vec2& x, Visit&& visit) const {
+    for (const auto& level : levels)
+      level.cells->for_each_within(x, level.reach, [&](std::uint32_t m, double r) {
+        const std::uint32_t k = level.index[m];
+        if (r < sph::Kernel::support_factor * h[k]) visit(k, r);
+      });
+  }
 };
 
 FieldSampler::FieldSampler(const sph::ParticleSet<2>& particles, const sph::Kernel& kernel,
@@ -47,7 +67,17 @@ FieldSampler::FieldSampler(const sph::ParticleSet<2>& particles, const sph::Kern
     c.volume[k] = particles.volume[c.source[k]];
     c.h[k] = h.of(c.source[k]);
   }
-  c.cells = std::make_unique<sph::CellList<2>>(c.points, sph::Kernel::support_factor * h.smallest());
+  const double h_min = h.smallest();
+  for (std::size_t k = 0; k < c.points.size(); ++k) {
+    const auto L = static_cast<std::size_t>(std::max(0.0, std::floor(std::log2(c.h[k] / h_min) + 1e-9)));
+    if (c.levels.size() <= L) c.levels.resize(L + 1);
+    c.levels[L].points.push_back(c.points[k]);
+    c.levels[L].index.push_back(static_cast<std::uint32_t>(k));
+    c.levels[L].reach = std::max(c.levels[L].reach, sph::Kernel::support_factor * c.h[k]);
+  }
+  // (Empty levels go first: a cell list refers to its level's points.)
+  std::erase_if(c.levels, [](const Cloud::Level& level) { return level.points.empty(); });
+  for (auto& level : c.levels) level.cells = std::make_unique<sph::CellList<2>>(level.points, level.reach);
 }
 
 FieldSampler::~FieldSampler() = default;
@@ -61,7 +91,7 @@ std::vector<std::pair<std::uint32_t, double>> FieldSampler::weights(const Vec2& 
   const auto& c = *cloud_;
   std::vector<std::pair<std::uint32_t, double>> w;
   double total = 0.0;
-  c.cells->for_each_within(x, support(), [&](std::uint32_t k, double r) {
+  c.for_each_reaching(x, [&](std::uint32_t k, double r) {
     const double wk = c.kernel->value(r, c.h[k]) * c.volume[k];
     if (wk <= 0.0) return;
     w.emplace_back(c.source[k], wk);
@@ -85,7 +115,7 @@ double FieldSampler::value(const Vec2& x, const std::vector<double>& field) cons
   if (field.size() != c.n_particles)
     throw std::invalid_argument("field sampler: the field must have one value per particle");
   double sum = 0.0, total = 0.0;
-  c.cells->for_each_within(x, support(), [&](std::uint32_t k, double r) {
+  c.for_each_reaching(x, [&](std::uint32_t k, double r) {
     const double wk = c.kernel->value(r, c.h[k]) * c.volume[k];
     sum += wk * field[c.source[k]];
     total += wk;
@@ -119,14 +149,16 @@ PointProbe::PointProbe(const FieldSampler& sampler, std::vector<Vec2> where)
 std::vector<double> PointProbe::operator()(const std::vector<double>& field) const {
   if (field.size() != particle_count_)
     throw std::invalid_argument("point probe: the field must have one value per particle");
-  std::vector<double> out(where_.size(), std::numeric_limits<double>::quiet_NaN());
-  for (std::size_t i = 0; i < where_.size(); ++i) {
-    if (start_[i] == start_[i + 1]) continue;
-    double sum = 0.0;
-    for (std::size_t e = start_[i]; e < start_[i + 1]; ++e) sum += weight_[e] * field[index_[e]];
-    out[i] = sum;
-  }
+  std::vector<double> out(where_.size());
+  for (std::size_t i = 0; i < where_.size(); ++i) out[i] = at(i, field);
   return out;
+}
+
+double PointProbe::at(std::size_t i, const std::vector<double>& field) const {
+  if (start_[i] == start_[i + 1]) return std::numeric_limits<double>::quiet_NaN();
+  double sum = 0.0;
+  for (std::size_t e = start_[i]; e < start_[i + 1]; ++e) sum += weight_[e] * field[index_[e]];
+  return sum;
 }
 
 }  // namespace frostwall::post

@@ -67,6 +67,8 @@ class PointProbe {
   std::size_t size() const { return where_.size(); }
   // NaN at points with no particle within reach.
   std::vector<double> operator()(const std::vector<double>& field) const;
+  // The value at point i alone (NaN as above), for readers that need few.
+  double at(std::size_t i, const std::vector<double>& field) const;
 
  private:
   std::vector<Vec2> where_;

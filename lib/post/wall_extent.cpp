@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <stdexcept>
 #include <string>
@@ -162,16 +163,42 @@ std::vector<Vec2> last_ray(const RayFan& fan) {
 }  // namespace
 
 WallGauge::WallGauge(const FieldSampler& sampler, RayFan fan, double ring_radius)
-    : fan_(fan), ring_radius_(ring_radius), fan_probe_(sampler, fan.points()), OB_probe_(sampler, last_ray(fan)) {}
+    : fan_(fan), ring_radius_(ring_radius), radii_(fan.radii()), fan_probe_(sampler, fan.points()),
+      OB_probe_(sampler, last_ray(fan)) {}
 
 WallReading WallGauge::measure(const std::vector<double>& liquid_fraction,
                                const std::vector<double>& temperature) const {
+  // A ray's frozen stretch needs its samples only from the ring outward, on
+  // either side, to the first unfrozen one: those are read, the rest stay
+  // NaN (skipped as "no particle within reach"). The answer is the same as
+  // from every sample, at a fraction of the reads once the wall is thin
+  // against the domain.
+  const std::size_t n = radii_.size();
+  const std::size_t m = std::lower_bound(radii_.begin(), radii_.end(), ring_radius_) - radii_.begin();
+  std::vector<double> f(n * fan_.rays, std::numeric_limits<double>::quiet_NaN());
+  std::vector<std::pair<std::size_t, std::size_t>> read(fan_.rays);  // [first, last] index read per ray
+  for (int k = 0; k < fan_.rays; ++k) {
+    double* ray = f.data() + k * n;
+    const std::size_t offset = k * n;
+    std::size_t first = std::min(m, n - 1), last = first;
+    for (std::size_t i = m; i-- > 0;) {
+      first = i;
+      ray[i] = fan_probe_.at(offset + i, liquid_fraction);
+      if (ray[i] > frozen_level) break;
+    }
+    for (std::size_t i = m; i < n; ++i) {
+      last = i;
+      ray[i] = fan_probe_.at(offset + i, liquid_fraction);
+      if (ray[i] > frozen_level) break;
+    }
+    read[k] = {first, last};
+  }
   WallReading reading;
-  const std::vector<double> f = fan_probe_(liquid_fraction);
   reading.extents = wall_extents(fan_, f, ring_radius_);
   const int OB = fan_.rays - 1;
-  reading.mean_temperature_OB =
-      mean_over_frozen(fan_.radii(), fan_.on_ray(f, OB), OB_probe_(temperature), reading.extents.OB());
+  std::vector<double> T(n, std::numeric_limits<double>::quiet_NaN());
+  for (std::size_t i = read[OB].first; i <= read[OB].second && i < n; ++i) T[i] = OB_probe_.at(i, temperature);
+  reading.mean_temperature_OB = mean_over_frozen(radii_, fan_.on_ray(f, OB), T, reading.extents.OB());
   return reading;
 }
 

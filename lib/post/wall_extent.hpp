@@ -96,6 +96,7 @@ class WallGauge {
  private:
   RayFan fan_;
   double ring_radius_;
+  std::vector<double> radii_;
   PointProbe fan_probe_;
   PointProbe OB_probe_;
 };

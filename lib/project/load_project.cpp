@@ -278,11 +278,23 @@ TimeSettings read_time(const Node& n) {
   return time;
 }
 
-Numerics read_numerics(const Node& n) {
+// Defaults that depend on the problem: a shaft section is graded (fine at
+// the pipes and through the wall, coarse far out: the same accuracy from a
+// third of the particles); the plain rectangles of the verification
+// problems keep the lattice. RKL2 steps may change a particle's enthalpy by
+// one latent heat (its stages follow the front), an implicit step by a
+// quarter (its Newton iteration needs it); bench/README.md has the numbers.
+Numerics read_numerics(const Node& n, bool shaft) {
   Numerics numerics;
+  numerics.placement = shaft ? Placement::graded : Placement::lattice;
+  auto default_step_change = [&] {
+    if (!n["step_change"].present()) numerics.step_change = numerics.integrator == IntegratorKind::rkl2 ? 1.0 : 0.25;
+  };
   if (!n.object({"spacing", "kernel", "smoothing_ratio", "integrator", "beta", "step_change", "conductivity_mean",
-                 "laplacian", "symmetry", "placement", "coarsening", "growth", "band_coarsening", "band_width"}))
+                 "laplacian", "symmetry", "placement", "coarsening", "growth", "band_coarsening", "band_width"})) {
+    default_step_change();
     return numerics;
+  }
   numerics.spacing = n["spacing"].positive();
   numerics.kernel = n["kernel"].choice<KernelKind>(
       "kernel", {{"wendland_c2", KernelKind::wendland_c2}, {"cubic_spline", KernelKind::cubic_spline}})
@@ -295,6 +307,7 @@ Numerics read_numerics(const Node& n) {
                             .value_or(numerics.integrator);
   numerics.beta = n["beta"].positive().value_or(numerics.beta);
   numerics.step_change = n["step_change"].positive().value_or(numerics.step_change);
+  default_step_change();
   numerics.conductivity_mean = n["conductivity_mean"].choice<ConductivityMean>(
       "conductivity mean", {{"harmonic", ConductivityMean::harmonic}, {"arithmetic", ConductivityMean::arithmetic}})
                                    .value_or(numerics.conductivity_mean);
@@ -444,7 +457,7 @@ Project read_project(const Node& root) {
   }
 
   project.time = read_time(root["time"].required());
-  project.numerics = read_numerics(root["numerics"]);
+  project.numerics = read_numerics(root["numerics"], shaft);
   if (const double s = project.numerics.smoothing_ratio; s < 1.0 || s > 2.5)
     project.warnings.push_back(fmt::format(
         "numerics.smoothing_ratio: {} is outside the usual 1.0..2.5 (too few neighbours below, "

@@ -127,7 +127,7 @@ enum class Placement { lattice, graded };
 struct Grading {
   double coarsening = 8.0;       // coarsest spacing / finest
   double growth = 1.2;           // largest ratio of the spacings of neighbouring particles
-  double band_coarsening = 2.0;  // spacing in the wall band / finest
+  double band_coarsening = 1.0;  // spacing in the wall band / finest
   // Half-width of the wall band, m: beyond the innermost and outermost pipe
   // rings (shaft sections) or from the cooled face (rectangles). nullopt =
   // frostwall chooses (2 m round the rings; a third of a rectangle).
@@ -140,15 +140,16 @@ struct Numerics {
   double smoothing_ratio = 1.3;   // h / spacing
   IntegratorKind integrator = IntegratorKind::rkl2;
   double beta = 0.1;              // explicit step: dt = beta h^2 / alpha_max
-  // Implicit step: the largest enthalpy change of a particle per step, as a
-  // fraction of the latent heat (the step adapts to hold it).
+  // RKL2 and implicit steps: the largest enthalpy change of a particle per
+  // step, as a fraction of the latent heat (the step adapts to hold it).
+  // Default 1 for RKL2, 0.25 for implicit (load_project).
   double step_change = 0.25;
   ConductivityMean conductivity_mean = ConductivityMean::harmonic;
   LaplacianForm laplacian = LaplacianForm::renormalised;
   // Shaft sections: simulate the smallest mirror-symmetric wedge ("auto"),
   // or the whole ring ("off"; a check of the wedge, or for asymmetric ground).
   bool use_symmetry = true;
-  Placement placement = Placement::lattice;
+  Placement placement = Placement::lattice;  // default graded for shaft sections (load_project)
   Grading grading;
 };
 

@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fmt/core.h>
 #include <nlohmann/json.hpp>
@@ -127,7 +128,7 @@ void run_project(const Project& p, const RunOptions& options) {
   std::vector<io::PvdEntry> pvd, ring_pvd;
   const bool write_ring = p.output.vtk && p.output.full_ring && built.shaft && !particles.mirrors.empty();
   nlohmann::json front = nlohmann::json::array();
-  const std::vector<double> times = sample_times(p.time, 200);
+  const std::vector<double> times = sample_times(p.time, std::getenv("FW_SAMPLES") ? std::atoi(std::getenv("FW_SAMPLES")) : 200);
   std::unique_ptr<ShaftResults> results;
   if (built.shaft) results = std::make_unique<ShaftResults>(p, built);
   const double heat_before = model.stored_heat();

@@ -60,6 +60,23 @@ class CellList {
         const double d2 = (points_[j] - x).squaredNorm();
         if (d2 < r2) visit(j, std::sqrt(d2));
       }
+      return false;
+    });
+  }
+
+  // Whether any point lies within `radius` of x: stops at the first.
+  bool any_within(const Vec<Dim>& x, double radius) const {
+    std::array<long, Dim> lo, hi;
+    for (int d = 0; d < Dim; ++d) {
+      lo[d] = std::max<long>(0, static_cast<long>(std::floor((x[d] - radius - lo_[d]) / cell_)));
+      hi[d] = std::min<long>(dims_[d] - 1, static_cast<long>(std::floor((x[d] + radius - lo_[d]) / cell_)));
+      if (lo[d] > hi[d]) return false;
+    }
+    const double r2 = radius * radius;
+    return visit_cells(lo, hi, 0, std::array<long, Dim>{}, [&](long cell) {
+      for (std::uint32_t k = start_[cell]; k < start_[cell + 1]; ++k)
+        if ((points_[sorted_[k]] - x).squaredNorm() < r2) return true;
+      return false;
     });
   }
 
@@ -75,14 +92,14 @@ class CellList {
     for (int d = Dim - 1; d >= 0; --d) index = index * dims_[d] + c[d];
     return index;
   }
+  // Visits the cells of the box [lo, hi]; stops as soon as f returns true.
   template <class F>
-  void visit_cells(const std::array<long, Dim>& lo, const std::array<long, Dim>& hi, int d, std::array<long, Dim> c,
+  bool visit_cells(const std::array<long, Dim>& lo, const std::array<long, Dim>& hi, int d, std::array<long, Dim> c,
                    F&& f) const {
-    if (d == Dim) {
-      f(linear(c));
-      return;
-    }
-    for (c[d] = lo[d]; c[d] <= hi[d]; ++c[d]) visit_cells(lo, hi, d + 1, c, f);
+    if (d == Dim) return f(linear(c));
+    for (c[d] = lo[d]; c[d] <= hi[d]; ++c[d])
+      if (visit_cells(lo, hi, d + 1, c, f)) return true;
+    return false;
   }
 
   const std::vector<Vec<Dim>>& points_;

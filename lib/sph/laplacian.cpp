@@ -19,6 +19,32 @@ MirrorImages<Dim> mirror_images(const ParticleSet<Dim>& particles, double reach)
   const std::vector<Vec<Dim>> free_points(particles.position.begin(),
                                           particles.position.begin() + particles.n_free);
   const CellList<Dim> free_cells(free_points, reach);
+  // The free particles' box grown by the reach: most images of a narrow
+  // wedge fall outside it, and that test is far cheaper than a query.
+  Vec<Dim> box_lo = Vec<Dim>::Constant(1e300), box_hi = Vec<Dim>::Constant(-1e300);
+  for (const auto& x : free_points) {
+    box_lo = box_lo.cwiseMin(x);
+    box_hi = box_hi.cwiseMax(x);
+  }
+  box_lo.array() -= reach;
+  box_hi.array() += reach;
+  // The free particles lie on one side of each plane (the fundamental
+  // domain); an image further than the reach beyond any plane is too far.
+  std::vector<double> side(particles.mirrors.size(), 0.0);
+  for (std::size_t p = 0; p < side.size(); ++p) {
+    const auto& m = particles.mirrors[p];
+    double sum = 0.0;
+    for (const auto& x : free_points) sum += (x - m.point).dot(m.normal);
+    side[p] = sum >= 0.0 ? 1.0 : -1.0;
+  }
+  auto beyond_reach = [&](const Vec<Dim>& y) {
+    if ((y.array() < box_lo.array()).any() || (y.array() > box_hi.array()).any()) return true;
+    for (std::size_t p = 0; p < side.size(); ++p) {
+      const auto& m = particles.mirrors[p];
+      if (-side[p] * (y - m.point).dot(m.normal) > reach) return true;
+    }
+    return false;
+  };
   double scale = particles.spacing;
   for (const auto& x : particles.position) scale = std::max(scale, x.norm());
 
@@ -43,9 +69,7 @@ MirrorImages<Dim> mirror_images(const ParticleSet<Dim>& particles, double reach)
         const Vec<Dim> y = next(particles.position[j]);
         // A particle on a plane is its own image: nothing to add.
         if ((y - particles.position[j]).norm() < 1e-9 * particles.spacing) continue;
-        bool near = false;
-        free_cells.for_each_within(y, reach, [&](std::uint32_t, double) { near = true; });
-        if (!near) continue;
+        if (beyond_reach(y) || !free_cells.any_within(y, reach)) continue;
         reaches = true;
         images.position.push_back(y);
         images.source.push_back(static_cast<std::uint32_t>(j));

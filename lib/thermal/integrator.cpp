@@ -10,7 +10,7 @@ std::vector<double> ExplicitEuler::advance(ThermalModel& model, double t, double
   std::vector<double> heat = model.boundary_heat_rate();
   for (double& q : heat) q *= dt;
   const auto& H = model.enthalpy();
-  sph::for_each_particle(model.free_count(), [&](std::size_t i) { model.set_enthalpy(i, H[i] + dt * rate_[i]); });
+  model.update_free([&](std::size_t i) { return H[i] + dt * rate_[i]; });
   return heat;
 }
 

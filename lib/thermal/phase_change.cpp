@@ -13,7 +13,11 @@ PhaseChangeLaw::PhaseChangeLaw(const project::Soil& soil)
       rho_L_(soil.density * soil.latent_heat),
       H_l_(rho_L_ + 0.5 * (rho_cs_ + rho_cl_) * soil.freezing_range),
       k_frozen_(soil.frozen.conductivity),
-      k_unfrozen_(soil.unfrozen.conductivity) {}
+      k_unfrozen_(soil.unfrozen.conductivity),
+      inv_rho_cs_(1.0 / rho_cs_),
+      inv_rho_cl_(1.0 / rho_cl_),
+      inv_H_l_(H_l_ > 0.0 ? 1.0 / H_l_ : 0.0),
+      range_per_H_l_(range_ > 0.0 ? range_ / H_l_ : 0.0) {}
 
 double PhaseChangeLaw::enthalpy(double T) const {
   if (T < Ts_) return rho_cs_ * (T - Ts_);

@@ -95,13 +95,21 @@ void ThermalModel::conduction_rate(std::vector<double>& rate) const {
   const std::size_t* start = pairs_.row_start.data();
   const std::uint32_t* column = pairs_.column.data();
   const double* T = T_.data();
+  // Four partial sums: one sum would chain every pair's multiply-add on the
+  // one before (the add's latency, not memory, would set the pace).
   sph::for_each_particle(n, [&](std::size_t i) {
-    double flow = 0.0, total = 0.0;
-    for (std::size_t e = start[i]; e < start[i + 1]; ++e) {
-      flow += a[e] * T[column[e]];
-      total += a[e];
+    const double Ti = T[i];
+    double s0 = 0.0, s1 = 0.0, s2 = 0.0, s3 = 0.0;
+    std::size_t e = start[i];
+    const std::size_t end = start[i + 1];
+    for (; e + 4 <= end; e += 4) {
+      s0 += a[e] * (T[column[e]] - Ti);
+      s1 += a[e + 1] * (T[column[e + 1]] - Ti);
+      s2 += a[e + 2] * (T[column[e + 2]] - Ti);
+      s3 += a[e + 3] * (T[column[e + 3]] - Ti);
     }
-    rate[i] = flow - total * T[i];
+    for (; e < end; ++e) s0 += a[e] * (T[column[e]] - Ti);
+    rate[i] = (s0 + s1) + (s2 + s3);
   });
 }
 

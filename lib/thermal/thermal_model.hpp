@@ -9,6 +9,7 @@
 
 #include "project/project.hpp"
 #include "sph/laplacian.hpp"
+#include "sph/parallel.hpp"
 #include "sph/wall_extrapolation.hpp"
 #include "thermal/boundary.hpp"
 #include "thermal/phase_change.hpp"
@@ -55,6 +56,10 @@ class ThermalModel {
   std::vector<double> boundary_heat_rate() const;
   // Sets the enthalpy of free particle i and the fields derived from it.
   void set_enthalpy(std::size_t i, double H) { set_state(i, H); }
+  // Sets every free particle's enthalpy to new_enthalpy(i), in one pass
+  // (the integrators' update: the law's constants stay in registers).
+  template <class NewEnthalpy>
+  void update_free(NewEnthalpy&& new_enthalpy);
   // Heat stored in the free particles, sum V_i H_i, J (per metre in 2-D).
   double stored_heat() const;
 
@@ -105,6 +110,27 @@ inline void ThermalModel::set_state(std::size_t i, double H) {
   if (kx != k_[2 * i] || ky != k_[2 * i + 1]) k_changed_[i] = 1;
   k_[2 * i] = kx;
   k_[2 * i + 1] = ky;
+}
+
+template <class NewEnthalpy>
+void ThermalModel::update_free(NewEnthalpy&& new_enthalpy) {
+  const PhaseChangeLaw law = law_;
+  double* H_out = H_.data();
+  double* T_out = T_.data();
+  double* f_out = f_.data();
+  double* k_out = k_.data();
+  char* changed = k_changed_.data();
+  sph::for_each_particle(pairs_.n_free, [&](std::size_t i) {
+    const double H = new_enthalpy(i);
+    const double f = law.liquid_fraction(H);
+    const double kx = law.conductivity(f, 0), ky = law.conductivity(f, 1);
+    H_out[i] = H;
+    T_out[i] = law.temperature(H);
+    f_out[i] = f;
+    if (kx != k_out[2 * i] || ky != k_out[2 * i + 1]) changed[i] = 1;
+    k_out[2 * i] = kx;
+    k_out[2 * i + 1] = ky;
+  });
 }
 
 }  // namespace frostwall::thermal
