@@ -16,6 +16,10 @@
 
 namespace frostwall::run {
 
+// Regular samples of the time curves over a run (wall.csv, monitoring); no
+// RKL2 step of a run is longer than one interval (run_project).
+inline constexpr std::size_t time_series_points = 200;
+
 struct Model {
   std::unique_ptr<geometry::Scene> scene;
   const geometry::RectangleScene* rectangle = nullptr;  // plain geometries

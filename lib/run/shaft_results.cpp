@@ -93,21 +93,22 @@ ShaftResults::ShaftResults(const project::Project& p, const Model& m)
 
 ShaftResults::~ShaftResults() = default;
 
-ShaftResults::Reading ShaftResults::read(double t, const thermal::ThermalModel& model) const {
-  const auto fan = fan_gauge_->measure(model.liquid_fraction(), model.temperature());
-  const auto planes = planes_gauge_->measure(model.liquid_fraction(), model.temperature());
+ShaftResults::Reading ShaftResults::read(double t, const std::vector<double>& liquid_fraction,
+                                         const std::vector<double>& temperature) const {
+  const auto fan = fan_gauge_->measure(liquid_fraction, temperature);
+  const auto planes = planes_gauge_->measure(liquid_fraction, temperature);
   return {t / day, planes.extents.OA(), planes.extents.OB(), fan.extents.min_thickness, planes.mean_temperature_OB};
 }
 
-void ShaftResults::sample(double t, const thermal::ThermalModel& model) {
-  series_.push_back(read(t, model));
-  const auto T = (*sensors_)(model.temperature());
+void ShaftResults::sample(double t, const std::vector<double>& liquid_fraction, const std::vector<double>& temperature) {
+  series_.push_back(read(t, liquid_fraction, temperature));
+  const auto T = (*sensors_)(temperature);
   for (std::size_t s = 0; s < T.size(); ++s) sensor_readings_[s].emplace_back(t / day, T[s]);
 }
 
 void ShaftResults::snapshot(double t, const thermal::ThermalModel& model, const std::filesystem::path& out,
                             const std::string& stem) {
-  snapshots_.push_back(read(t, model));
+  snapshots_.push_back(read(t, model.liquid_fraction(), model.temperature()));
   profiles_OA_.push_back((*profile_OA_)(model.temperature()));
   profiles_OB_.push_back((*profile_OB_)(model.temperature()));
 

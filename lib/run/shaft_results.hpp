@@ -34,7 +34,9 @@ class ShaftResults {
   ShaftResults(const project::Project& p, const Model& m);
   ~ShaftResults();
 
-  void sample(double t, const thermal::ThermalModel& model);    // every output interval
+  // Every output interval: the liquid fraction and temperature of every
+  // particle at t (the model's state, or one interpolated between steps).
+  void sample(double t, const std::vector<double>& liquid_fraction, const std::vector<double>& temperature);
   void snapshot(double t, const thermal::ThermalModel& model, const std::filesystem::path& out,
                 const std::string& stem);                         // at each snapshot day
   // Summary entries (wall, design, monitoring, interface) and the CSV files.
@@ -47,7 +49,7 @@ class ShaftResults {
     double min_thickness;
     std::optional<double> mean_temperature_OB;
   };
-  Reading read(double t, const thermal::ThermalModel& model) const;
+  Reading read(double t, const std::vector<double>& liquid_fraction, const std::vector<double>& temperature) const;
 
   const project::Project& project_;
   const Model& model_;

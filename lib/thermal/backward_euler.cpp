@@ -4,7 +4,6 @@
 #include <Eigen/Sparse>
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 
 #include "sph/parallel.hpp"
 
@@ -147,7 +146,7 @@ bool BackwardEuler::try_step(ThermalModel& model, double t, double dt) {
       residual_[i] = flow - (H[i] - H_old[i]) / dt;
       return std::abs(residual_[i]) * dt / scale;
     });
-    static const double ntol = std::getenv("FW_NTOL") ? std::atof(std::getenv("FW_NTOL")) : settings_.newton_tolerance;
+    const double ntol = settings_.newton_tolerance;
     if (worst <= ntol) return true;
     ++stats_.newton_iterations;
 
@@ -156,7 +155,7 @@ bool BackwardEuler::try_step(ThermalModel& model, double t, double dt) {
       rhs[i] = slope[i] == 0.0 ? 0.0 : residual_[i];
     });
     system_->assemble(model, a_, slope, dt);
-    static const double linear_tol = std::getenv("FW_LTOL") ? std::atof(std::getenv("FW_LTOL")) : 1e-8;
+    constexpr double linear_tol = 1e-8;
     system_->solver.setTolerance(linear_tol);
     system_->solver.compute(system_->A);
     x = system_->solver.solveWithGuess(rhs, Eigen::VectorXd::Zero(n));
@@ -180,8 +179,7 @@ bool BackwardEuler::try_step(ThermalModel& model, double t, double dt) {
         dH = dt * inflow;
       }
       double next = H[i] + dH;
-      static const bool noclip = std::getenv("FW_NOCLIP") != nullptr;
-      if (!noclip) for (double k : kinks)
+      for (double k : kinks)
         if ((H[i] < k && next > k) || (H[i] > k && next < k)) next = k;  // stop on the kink
       next_H_[i] = next;
     });

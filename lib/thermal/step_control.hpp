@@ -36,6 +36,10 @@ class ActivityStepControl {
     step_ = std::min(max_step_, std::clamp(proposed, 0.25 * step_, growth_ * step_));
   }
   void shorten_to(double dt) { step_ = std::min(step_, dt); }
+  void limit(double max_step) {
+    max_step_ = max_step;
+    step_ = std::min(step_, max_step);
+  }
 
   // The latent heat, or for a soil without one the enthalpy of 2 K.
   static double enthalpy_scale(const PhaseChangeLaw& law) {

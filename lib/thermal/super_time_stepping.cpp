@@ -51,8 +51,8 @@ double smallest_capacity(const PhaseChangeLaw& law) {
 
 }  // namespace
 
-SuperTimeStepping::SuperTimeStepping(double step_change, double first_step)
-    : control_(step_change, first_step, std::numeric_limits<double>::infinity()) {}
+SuperTimeStepping::SuperTimeStepping(double step_change, double first_step, double max_step)
+    : control_(step_change, first_step, max_step) {}
 
 double SuperTimeStepping::preferred_step(const ThermalModel&) const {
   const int s = max_stages;
@@ -141,11 +141,14 @@ std::vector<double> SuperTimeStepping::advance(ThermalModel& model, double t, do
     const std::vector<double> q = model.boundary_heat_rate();
     for (std::size_t k = 0; k < nb; ++k)
       Qnext[k] = mu * Qprev[k] + nu * Qprev2[k] + (1.0 - mu - nu) * Q0[k] + mu_t * dt * q[k] + gamma_t * dt * q0[k];
-    model.update_free([&](std::size_t i) {
-      const double Y = mu * Yprev_[i] + nu * Yprev2_[i] + (1.0 - mu - nu) * Y0_[i] + mu_t * dt * L_[i] +
-                       gamma_t * dt * L0_[i];
-      Yprev2_[i] = Yprev_[i];
-      Yprev_[i] = Y;
+    double* const Y1 = Yprev_.data();
+    double* const Y2 = Yprev2_.data();
+    const double *const Y0 = Y0_.data(), *const L = L_.data(), *const L0 = L0_.data();
+    const double c0 = 1.0 - mu - nu, cL = mu_t * dt, cL0 = gamma_t * dt;
+    model.update_free([=](std::size_t i) {
+      const double Y = mu * Y1[i] + nu * Y2[i] + c0 * Y0[i] + cL * L[i] + cL0 * L0[i];
+      Y2[i] = Y1[i];
+      Y1[i] = Y;
       return Y;
     });
     std::swap(Qprev2, Qprev);

@@ -93,7 +93,9 @@ class ThermalModel {
   // changed (a freezing particle) are recomputed. incoming_* lists, per
   // particle, the pairs (row, index) in which it is the neighbour.
   mutable std::vector<double> coefficient_;
-  mutable std::vector<char> k_changed_;
+  // (int, not char: a char store may alias anything, and the state update
+  // then reloaded every pointer after each flag it set.)
+  mutable std::vector<int> k_changed_;
   mutable bool all_changed_ = true;
   std::vector<std::size_t> incoming_start_;
   std::vector<std::uint32_t> incoming_row_;
@@ -119,7 +121,7 @@ void ThermalModel::update_free(NewEnthalpy&& new_enthalpy) {
   double* T_out = T_.data();
   double* f_out = f_.data();
   double* k_out = k_.data();
-  char* changed = k_changed_.data();
+  int* changed = k_changed_.data();
   sph::for_each_particle(pairs_.n_free, [&](std::size_t i) {
     const double H = new_enthalpy(i);
     const double f = law.liquid_fraction(H);
