@@ -12,7 +12,7 @@ Accuracy is judged against the converged run stored in bench/converged.json
 default mode on 1 and 2 OpenMP threads, and the kernel's pair-update rate
 (build/bench/kernel_rate). Usage, from the repository root after set-up:
 
-  python3 bench/bench.py                 # everything (about 5 minutes here)
+  python3 bench/bench.py                 # everything (about 4 minutes here)
   python3 bench/bench.py --converged     # (re)make bench/converged.json
 """
 import argparse, copy, json, os, subprocess, sys, tempfile, time
@@ -90,6 +90,8 @@ def main():
     modes = [("paper", PAPER), ("default", None)]
     results = {name: facts(run(numerics, threads, work, name)) for name, numerics in modes}
     scaling = {t: facts(run(None, t, work, f"default_t{t}"))["wall"] for t in (1, 2)}
+    paper_scaling = {t: facts(run(PAPER, t, work, f"paper_t{t}"))["wall"] for t in (1,)}
+    paper_scaling[threads] = results["paper"]["wall"]
 
     def err_day(x):
         return 100.0 * (x - ref["closure_day"]) / ref["closure_day"] if x is not None else float("nan")
@@ -110,9 +112,13 @@ def main():
               f"{r['OB60']:.3f} m | {err_cm(r['OB60'], 'OB60'):+.1f} cm | {r['OB100']:.3f} m | "
               f"{err_cm(r['OB100'], 'OB100'):+.1f} cm | {r['pair_updates_per_s']:.2e} | {r['peak_mb']:.0f} |")
     ratio = results["paper"]["wall"] / results["default"]["wall"]
-    print(f"\nwall-time ratio paper / default: {ratio:.1f}x")
+    print(f"\nwall-time ratio paper / default, {threads} threads: {ratio:.1f}x")
+    print(f"wall-time ratio paper / default, 1 thread: {paper_scaling[1] / scaling[1]:.1f}x "
+          f"({paper_scaling[1]:.1f} s / {scaling[1]:.1f} s)")
     print(f"OpenMP scaling, default mode: 1 thread {scaling[1]:.1f} s, 2 threads {scaling[2]:.1f} s, "
           f"speed-up {scaling[1] / scaling[2]:.2f}x")
+    print(f"OpenMP scaling, paper mode: 1 thread {paper_scaling[1]:.1f} s, {threads} threads "
+          f"{paper_scaling[threads]:.1f} s, speed-up {paper_scaling[1] / paper_scaling[threads]:.2f}x")
     if os.path.exists(KERNEL):
         print("\nkernel (build/bench/kernel_rate):")
         sys.stdout.flush()

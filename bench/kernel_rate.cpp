@@ -36,6 +36,7 @@ int main() {
   project::Project p = project::load_project(FROSTWALL_SOURCE_DIR "/projects/single_ring_sand.json");
   p.numerics.integrator = project::IntegratorKind::explicit_euler;
   p.numerics.spacing = 0.025;
+  p.numerics.placement = project::Placement::lattice;  // paper mode's cloud
   run::Model m = run::build_model(p);
   const auto& model = *m.model;
   const auto& P = model.pairs();

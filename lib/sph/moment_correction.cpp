@@ -32,8 +32,11 @@ Features<Dim> features(const Vec<Dim>& d, double l) {
 // Cholesky preconditioner take about 120 iterations (to 1e-8) on a graded shaft
 // wedge (25 000 unknowns) and cost half of a sparse LDLT, whose fill on
 // these 3x3-block rows is large; the LDLT stays as the fallback.
-Eigen::VectorXd solve_moment_system(const Eigen::SparseMatrix<double>& K, const Eigen::VectorXd& rhs) {
-  Eigen::ConjugateGradient<Eigen::SparseMatrix<double>, Eigen::Lower | Eigen::Upper,
+Eigen::VectorXd solve_moment_system(const Eigen::SparseMatrix<double>& K_columns, const Eigen::VectorXd& rhs) {
+  // Row-major with both triangles: Eigen then runs the product on all
+  // OpenMP threads.
+  const Eigen::SparseMatrix<double, Eigen::RowMajor> K = K_columns;
+  Eigen::ConjugateGradient<Eigen::SparseMatrix<double, Eigen::RowMajor>, Eigen::Lower | Eigen::Upper,
                            Eigen::IncompleteCholesky<double, Eigen::Lower, Eigen::AMDOrdering<int>>>
       cg;
   cg.setTolerance(1e-8);
@@ -43,7 +46,7 @@ Eigen::VectorXd solve_moment_system(const Eigen::SparseMatrix<double>& K, const 
     Eigen::VectorXd z = cg.solve(rhs);
     if (cg.info() == Eigen::Success) return z;
   }
-  const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(K);
+  const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(K_columns);
   if (solver.info() != Eigen::Success) throw std::runtime_error("moment correction: the moment system is singular");
   return solver.solve(rhs);
 }
