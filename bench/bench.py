@@ -90,8 +90,7 @@ def main():
     modes = [("paper", PAPER), ("default", None)]
     results = {name: facts(run(numerics, threads, work, name)) for name, numerics in modes}
     scaling = {t: facts(run(None, t, work, f"default_t{t}"))["wall"] for t in (1, 2)}
-    paper_scaling = {t: facts(run(PAPER, t, work, f"paper_t{t}"))["wall"] for t in (1,)}
-    paper_scaling[threads] = results["paper"]["wall"]
+    paper_scaling = {1: facts(run(PAPER, 1, work, "paper_t1"))["wall"], threads: results["paper"]["wall"]}
 
     def err_day(x):
         return 100.0 * (x - ref["closure_day"]) / ref["closure_day"] if x is not None else float("nan")

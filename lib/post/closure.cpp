@@ -30,7 +30,8 @@ ClosureDetector::ClosureDetector(const std::vector<sph::Vec<2>>& position, std::
                                  const std::vector<double>& local_spacing, double far_field_radius,
                                  const std::vector<sph::Vec<2>>& image_position,
                                  const std::vector<std::uint32_t>& image_source) {
-  // Vertex k: free particle k (k < n_free), else image k - n_free.
+  // Vertex k at where[k], carrying the value of free particle source[k]:
+  // the free particles first, then the images of free particles.
   std::vector<std::pair<geometry::Kernel2::Point_2, std::size_t>> points;
   std::vector<sph::Vec<2>> where(position.begin(), position.begin() + n_free);
   std::vector<std::uint32_t> source(n_free);

@@ -48,11 +48,7 @@ class CellList {
   template <class Visit>
   void for_each_within(const Vec<Dim>& x, double radius, Visit&& visit) const {
     std::array<long, Dim> lo, hi;
-    for (int d = 0; d < Dim; ++d) {
-      lo[d] = std::max<long>(0, static_cast<long>(std::floor((x[d] - radius - lo_[d]) / cell_)));
-      hi[d] = std::min<long>(dims_[d] - 1, static_cast<long>(std::floor((x[d] + radius - lo_[d]) / cell_)));
-      if (lo[d] > hi[d]) return;
-    }
+    if (!cell_box(x, radius, lo, hi)) return;
     const double r2 = radius * radius;
     visit_cells(lo, hi, 0, std::array<long, Dim>{}, [&](long cell) {
       for (std::uint32_t k = start_[cell]; k < start_[cell + 1]; ++k) {
@@ -67,11 +63,7 @@ class CellList {
   // Whether any point lies within `radius` of x: stops at the first.
   bool any_within(const Vec<Dim>& x, double radius) const {
     std::array<long, Dim> lo, hi;
-    for (int d = 0; d < Dim; ++d) {
-      lo[d] = std::max<long>(0, static_cast<long>(std::floor((x[d] - radius - lo_[d]) / cell_)));
-      hi[d] = std::min<long>(dims_[d] - 1, static_cast<long>(std::floor((x[d] + radius - lo_[d]) / cell_)));
-      if (lo[d] > hi[d]) return false;
-    }
+    if (!cell_box(x, radius, lo, hi)) return false;
     const double r2 = radius * radius;
     return visit_cells(lo, hi, 0, std::array<long, Dim>{}, [&](long cell) {
       for (std::uint32_t k = start_[cell]; k < start_[cell + 1]; ++k)
@@ -81,6 +73,16 @@ class CellList {
   }
 
  private:
+  // The box of cells [lo, hi] that covers the ball (x, radius); false when
+  // it misses the grid.
+  bool cell_box(const Vec<Dim>& x, double radius, std::array<long, Dim>& lo, std::array<long, Dim>& hi) const {
+    for (int d = 0; d < Dim; ++d) {
+      lo[d] = std::max<long>(0, static_cast<long>(std::floor((x[d] - radius - lo_[d]) / cell_)));
+      hi[d] = std::min<long>(dims_[d] - 1, static_cast<long>(std::floor((x[d] + radius - lo_[d]) / cell_)));
+      if (lo[d] > hi[d]) return false;
+    }
+    return true;
+  }
   std::array<long, Dim> coords(const Vec<Dim>& p) const {
     std::array<long, Dim> c;
     for (int d = 0; d < Dim; ++d)

@@ -19,17 +19,9 @@ MirrorImages<Dim> mirror_images(const ParticleSet<Dim>& particles, double reach)
   const std::vector<Vec<Dim>> free_points(particles.position.begin(),
                                           particles.position.begin() + particles.n_free);
   const CellList<Dim> free_cells(free_points, reach);
-  // The free particles' box grown by the reach: most images of a narrow
-  // wedge fall outside it, and that test is far cheaper than a query.
-  Vec<Dim> box_lo = Vec<Dim>::Constant(1e300), box_hi = Vec<Dim>::Constant(-1e300);
-  for (const auto& x : free_points) {
-    box_lo = box_lo.cwiseMin(x);
-    box_hi = box_hi.cwiseMax(x);
-  }
-  box_lo.array() -= reach;
-  box_hi.array() += reach;
   // The free particles lie on one side of each plane (the fundamental
-  // domain); an image further than the reach beyond any plane is too far.
+  // domain); an image further than the reach beyond any plane is too far,
+  // a test far cheaper than a cell query.
   std::vector<double> side(particles.mirrors.size(), 0.0);
   for (std::size_t p = 0; p < side.size(); ++p) {
     const auto& m = particles.mirrors[p];
@@ -38,7 +30,6 @@ MirrorImages<Dim> mirror_images(const ParticleSet<Dim>& particles, double reach)
     side[p] = sum >= 0.0 ? 1.0 : -1.0;
   }
   auto beyond_reach = [&](const Vec<Dim>& y) {
-    if ((y.array() < box_lo.array()).any() || (y.array() > box_hi.array()).any()) return true;
     for (std::size_t p = 0; p < side.size(); ++p) {
       const auto& m = particles.mirrors[p];
       if (-side[p] * (y - m.point).dot(m.normal) > reach) return true;

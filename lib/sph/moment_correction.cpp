@@ -4,7 +4,6 @@
 #include <Eigen/IterativeLinearSolvers>
 #include <Eigen/SparseCholesky>
 #include <cmath>
-#include <cstdlib>
 #include <stdexcept>
 
 namespace frostwall::sph {

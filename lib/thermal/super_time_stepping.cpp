@@ -10,9 +10,6 @@ namespace frostwall::thermal {
 namespace {
 constexpr double safety = 0.8;  // of the Gershgorin limit: k rises as particles freeze within a step
 constexpr double spectral_safety = 0.9;  // of the eigenvalue's limit: the power iteration's estimate is from below
-}  // namespace
-
-namespace {
 
 // Largest |eigenvalue| of dT/dt = J T for the model's coefficients now and
 // heat capacity C (boundaries held at zero, beyond-wall particles
@@ -51,8 +48,8 @@ double smallest_capacity(const PhaseChangeLaw& law) {
 
 }  // namespace
 
-SuperTimeStepping::SuperTimeStepping(double step_change, double first_step, double max_step)
-    : control_(step_change, first_step, max_step) {}
+SuperTimeStepping::SuperTimeStepping(double step_change, double first_step)
+    : control_(step_change, first_step, std::numeric_limits<double>::infinity()) {}
 
 double SuperTimeStepping::preferred_step(const ThermalModel&) const {
   const int s = max_stages;

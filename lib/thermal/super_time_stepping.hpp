@@ -14,7 +14,6 @@
 // eigenvalue over all states (power iteration, once).
 #pragma once
 
-#include <limits>
 #include <vector>
 
 #include "thermal/integrator.hpp"
@@ -28,9 +27,8 @@ struct SuperTimeSteppingStatistics {
 
 class SuperTimeStepping final : public Integrator {
  public:
-  // step_change: see ActivityStepControl; first_step and max_step in seconds.
-  SuperTimeStepping(double step_change, double first_step,
-                    double max_step = std::numeric_limits<double>::infinity());
+  // step_change: see ActivityStepControl; first_step in seconds.
+  SuperTimeStepping(double step_change, double first_step);
   // No step longer than max_step from now on.
   void limit_step(double max_step) { control_.limit(max_step); }
   // The activity's step, at most max_stages stages long at the last

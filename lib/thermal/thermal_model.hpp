@@ -24,6 +24,23 @@ struct ConductionOptions {
   project::LaplacianForm form = project::LaplacianForm::renormalised;
 };
 
+// The fields of particle i from its enthalpy H, through raw pointers so a
+// loop over particles keeps them (and the law, passed by value) in registers.
+struct StateView {
+  double *H, *T, *f, *k;
+  int* k_changed;
+  void set(const PhaseChangeLaw& law, std::size_t i, double enthalpy) const {
+    const double fi = law.liquid_fraction(enthalpy);
+    const double kx = law.conductivity(fi, 0), ky = law.conductivity(fi, 1);
+    H[i] = enthalpy;
+    T[i] = law.temperature(enthalpy);
+    f[i] = fi;
+    if (kx != k[2 * i] || ky != k[2 * i + 1]) k_changed[i] = 1;
+    k[2 * i] = kx;
+    k[2 * i + 1] = ky;
+  }
+};
+
 class ThermalModel {
  public:
   // volume and boundary_id cover all particles (free first, then fixed);
@@ -72,6 +89,7 @@ class ThermalModel {
 
  private:
   void set_state(std::size_t i, double H);
+  StateView state_view() { return {H_.data(), T_.data(), f_.data(), k_.data(), k_changed_.data()}; }
   // a[e] of one pair, from the conductivities now.
   double coefficient(std::size_t i, std::size_t j, std::size_t e) const;
   double pair_conductivity(double ki, double kj) const;
@@ -104,35 +122,13 @@ class ThermalModel {
   std::vector<std::pair<std::uint32_t, std::size_t>> boundary_pairs_;
 };
 
-inline void ThermalModel::set_state(std::size_t i, double H) {
-  H_[i] = H;
-  T_[i] = law_.temperature(H);
-  f_[i] = law_.liquid_fraction(H);
-  const double kx = law_.conductivity(f_[i], 0), ky = law_.conductivity(f_[i], 1);
-  if (kx != k_[2 * i] || ky != k_[2 * i + 1]) k_changed_[i] = 1;
-  k_[2 * i] = kx;
-  k_[2 * i + 1] = ky;
-}
+inline void ThermalModel::set_state(std::size_t i, double H) { state_view().set(law_, i, H); }
 
 template <class NewEnthalpy>
 void ThermalModel::update_free(NewEnthalpy&& new_enthalpy) {
   const PhaseChangeLaw law = law_;
-  double* H_out = H_.data();
-  double* T_out = T_.data();
-  double* f_out = f_.data();
-  double* k_out = k_.data();
-  int* changed = k_changed_.data();
-  sph::for_each_particle(pairs_.n_free, [&](std::size_t i) {
-    const double H = new_enthalpy(i);
-    const double f = law.liquid_fraction(H);
-    const double kx = law.conductivity(f, 0), ky = law.conductivity(f, 1);
-    H_out[i] = H;
-    T_out[i] = law.temperature(H);
-    f_out[i] = f;
-    if (kx != k_out[2 * i] || ky != k_out[2 * i + 1]) changed[i] = 1;
-    k_out[2 * i] = kx;
-    k_out[2 * i + 1] = ky;
-  });
+  const StateView state = state_view();
+  sph::for_each_particle(pairs_.n_free, [&](std::size_t i) { state.set(law, i, new_enthalpy(i)); });
 }
 
 }  // namespace frostwall::thermal
