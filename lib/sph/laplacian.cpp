@@ -171,7 +171,7 @@ LaplacianPairs build_laplacian_pairs(const ParticleSet<Dim>& particles, const Ke
       }
     std::vector<double> scale(n);
     for (std::size_t i = 0; i < n; ++i) scale[i] = h.of(i);
-    const auto report = correct_pair_moments<Dim>(pairs, particles.volume, pair_vector, to_image, scale);
+    const auto report = correct_pair_moments<Dim>(pairs, particles.position, particles.volume, pair_vector, to_image, scale);
     pairs.moments_corrected = report.corrected;
     pairs.smallest_weight_factor = report.smallest_factor;
     pairs.largest_weight_factor = report.largest_factor;

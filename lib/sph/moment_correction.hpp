@@ -38,8 +38,22 @@
 #include <vector>
 
 #include "sph/laplacian.hpp"
+#include "sph/two_level_solver.hpp"
 
 namespace frostwall::sph {
+
+// The system for the multipliers, one block row (lambda, mu, scaled by the
+// particle's length) per corrected particle.
+template <int Dim>
+struct MomentSystem {
+  static constexpr int unknowns = Dim + 1;
+  // Shifts, rotations, the dilation, a common mu (moment_correction.cpp).
+  static constexpr int modes = Dim + Dim * (Dim - 1) / 2 + 2;
+  std::vector<long> slot;  // per free particle: its block row, -1 = weights kept
+  BlockMatrix<unknowns> K;
+  Eigen::VectorXd rhs;
+  std::vector<Eigen::Matrix<double, unknowns, modes>> near_null;  // per block row
+};
 
 struct MomentCorrectionReport {
   std::size_t corrected = 0;     // free particles whose moments were set
@@ -48,14 +62,26 @@ struct MomentCorrectionReport {
   double residual = 0.0;         // largest moment error left, relative
 };
 
+// position: the free particles' (their first n_free entries are used);
 // pair_vector[e] = x_j - x_i for pair e (the image's position for an image
 // pair); to_image[e] the linear part of the isometry that made that image
 // (identity for a real neighbour); length_scale[i] a length of particle i
 // (its h), for conditioning.
 template <int Dim>
-MomentCorrectionReport correct_pair_moments(LaplacianPairs& pairs, const std::vector<double>& volume,
+MomentCorrectionReport correct_pair_moments(LaplacianPairs& pairs, const std::vector<Vec<Dim>>& position,
+                                            const std::vector<double>& volume,
                                             const std::vector<Vec<Dim>>& pair_vector,
                                             const std::vector<Eigen::Matrix<double, Dim, Dim>>& to_image,
                                             const std::vector<double>& length_scale);
+
+// The pieces of correct_pair_moments (apart for the solver's tests).
+template <int Dim>
+MomentSystem<Dim> moment_system(const LaplacianPairs& pairs, const std::vector<Vec<Dim>>& position,
+                                const std::vector<double>& volume, const std::vector<Vec<Dim>>& pair_vector,
+                                const std::vector<Eigen::Matrix<double, Dim, Dim>>& to_image,
+                                const std::vector<double>& length_scale);
+// Two-level CG to 1e-8; a sparse LDLT if that fails.
+template <int Dim>
+Eigen::VectorXd solve_moment_system(const MomentSystem<Dim>& system, TwoLevelReport* report = nullptr);
 
 }  // namespace frostwall::sph
