@@ -155,7 +155,13 @@ std::vector<Vec2> place_graded(const PlacementRegion& region, const SizeField& s
     for (const auto& w : region.walls)
       for (const auto& x : points)
         if (w.distance(x) < 2.5 * size(x)) cloud.add(w.reflect(x), 0.0, 0);
-    const auto images = sph::mirror_images(cloud, reach);
+    // A cell is bounded by neighbours a spacing or so away: images of
+    // points within 2.5 of their own spacings of a mirror are enough (the
+    // coarsest spacing's reach imaged most of a narrow wedge, and tripled
+    // the triangulation).
+    std::vector<double> own_reach(cloud.size());
+    for (std::size_t i = 0; i < cloud.size(); ++i) own_reach[i] = 2.5 * size(cloud.position[i]);
+    const auto images = sph::mirror_images(cloud, reach, own_reach);
 
     constexpr std::size_t not_free = static_cast<std::size_t>(-1);
     std::vector<std::pair<K::Point_2, std::size_t>> input;

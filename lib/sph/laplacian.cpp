@@ -13,7 +13,7 @@ namespace frostwall::sph {
 
 
 template <int Dim>
-MirrorImages<Dim> mirror_images(const ParticleSet<Dim>& particles, double reach) {
+MirrorImages<Dim> mirror_images(const ParticleSet<Dim>& particles, double reach, const std::vector<double>& own_reach) {
   MirrorImages<Dim> images;
   if (particles.mirrors.empty()) return images;
   const std::vector<Vec<Dim>> free_points(particles.position.begin(),
@@ -29,10 +29,10 @@ MirrorImages<Dim> mirror_images(const ParticleSet<Dim>& particles, double reach)
     for (const auto& x : free_points) sum += (x - m.point).dot(m.normal);
     side[p] = sum >= 0.0 ? 1.0 : -1.0;
   }
-  auto beyond_reach = [&](const Vec<Dim>& y) {
+  auto beyond_reach = [&](const Vec<Dim>& y, double r) {
     for (std::size_t p = 0; p < side.size(); ++p) {
       const auto& m = particles.mirrors[p];
-      if (-side[p] * (y - m.point).dot(m.normal) > reach) return true;
+      if (-side[p] * (y - m.point).dot(m.normal) > r) return true;
     }
     return false;
   };
@@ -60,7 +60,9 @@ MirrorImages<Dim> mirror_images(const ParticleSet<Dim>& particles, double reach)
         const Vec<Dim> y = next(particles.position[j]);
         // A particle on a plane is its own image: nothing to add.
         if ((y - particles.position[j]).norm() < 1e-9 * particles.spacing) continue;
-        if (beyond_reach(y) || !free_cells.any_within(y, reach)) continue;
+        if (beyond_reach(y, own_reach.empty() ? reach : std::min(reach, own_reach[j])) ||
+            !free_cells.any_within(y, reach))
+          continue;
         reaches = true;
         images.position.push_back(y);
         images.source.push_back(static_cast<std::uint32_t>(j));
@@ -213,7 +215,7 @@ std::vector<Isometry<Dim>> symmetry_group(const std::vector<MirrorPlane<Dim>>& p
 }
 
 template std::vector<Isometry<2>> symmetry_group<2>(const std::vector<MirrorPlane<2>>&, double);
-template MirrorImages<2> mirror_images<2>(const ParticleSet<2>&, double);
+template MirrorImages<2> mirror_images<2>(const ParticleSet<2>&, double, const std::vector<double>&);
 template LaplacianPairs build_laplacian_pairs<2>(const ParticleSet<2>&, const Kernel&,
                                                  const LaplacianOptions&);
 
