@@ -171,24 +171,22 @@ std::vector<Vec2> place_graded(const PlacementRegion& region, const SizeField& s
     for (const auto& y : images.position) input.emplace_back(K::Point_2(y[0], y[1]), not_free);
     const IndexedDelaunay dt(input.begin(), input.end());
 
+    // Each free point to the density-weighted centroid of its Voronoi cell
+    // (the triangulation is only read: the points run in parallel).
+    std::vector<IndexedDelaunay::Vertex_handle> vertex(points.size());
+    for (auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v)
+      if (v->info() != not_free) vertex[v->info()] = v;
     std::vector<Vec2> moved = points;
-    double largest = 0.0;
-    for (auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v) {
-      const std::size_t i = v->info();
-      if (i == not_free) continue;
+    const double largest = sph::max_over_particles(points.size(), [&](std::size_t i) {
+      if (vertex[i] == IndexedDelaunay::Vertex_handle()) return 0.0;  // merged with a coincident point
       const Vec2 xi = points[i];
-      auto f = dt.incident_faces(v), done = f;
+      auto f = dt.incident_faces(vertex[i]), done = f;
       std::vector<Vec2> corners;
-      bool bounded = true;
       do {
-        if (dt.is_infinite(f)) {
-          bounded = false;
-          break;
-        }
+        if (dt.is_infinite(f)) return 0.0;  // unbounded cell
         const auto c = dt.circumcenter(f);
         corners.emplace_back(c.x(), c.y());
       } while (++f != done);
-      if (!bounded) continue;
       // Density-weighted centroid over the triangles (x_i, c_k, c_k+1),
       // density s^-4 at each triangle's centroid.
       Vec2 sum = Vec2::Zero();
@@ -203,12 +201,12 @@ std::vector<Vec2> place_graded(const PlacementRegion& region, const SizeField& s
         sum += w * g;
         mass += w;
       }
-      if (!(mass > 0.0)) continue;
+      if (!(mass > 0.0)) return 0.0;
       const Vec2 target = sum / mass;
-      if (!region.inside(target)) continue;
+      if (!region.inside(target)) return 0.0;
       moved[i] = target;
-      largest = std::max(largest, (target - xi).norm() / size(xi));
-    }
+      return (target - xi).norm() / size(xi);
+    });
     points = std::move(moved);
     r.iterations = it + 1;
     r.last_move = largest;
