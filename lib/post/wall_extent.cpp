@@ -7,6 +7,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "sph/parallel.hpp"
+
 namespace frostwall::post {
 
 namespace {
@@ -177,7 +179,7 @@ WallReading WallGauge::measure(const std::vector<double>& liquid_fraction,
   const std::size_t m = std::lower_bound(radii_.begin(), radii_.end(), ring_radius_) - radii_.begin();
   std::vector<double> f(n * fan_.rays, std::numeric_limits<double>::quiet_NaN());
   std::vector<std::pair<std::size_t, std::size_t>> read(fan_.rays);  // [first, last] index read per ray
-  for (int k = 0; k < fan_.rays; ++k) {
+  sph::for_each_item(fan_.rays, [&](std::size_t k) {
     double* ray = f.data() + k * n;
     const std::size_t offset = k * n;
     std::size_t first = std::min(m, n - 1), last = first;
@@ -192,7 +194,7 @@ WallReading WallGauge::measure(const std::vector<double>& liquid_fraction,
       if (ray[i] > frozen_level) break;
     }
     read[k] = {first, last};
-  }
+  });
   WallReading reading;
   reading.extents = wall_extents(fan_, f, ring_radius_);
   const int OB = fan_.rays - 1;

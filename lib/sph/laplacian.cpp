@@ -41,6 +41,8 @@ MirrorImages<Dim> mirror_images(const ParticleSet<Dim>& particles, double reach,
 
   // Breadth-first over the group the planes generate; an element is kept
   // (and extended) only while it still puts some image within reach.
+  std::vector<Vec<Dim>> image(particles.size());
+  std::vector<char> wanted(particles.size());
   std::vector<Isometry<Dim>> seen{Isometry<Dim>{}};
   std::deque<Isometry<Dim>> queue{Isometry<Dim>{}};
   constexpr std::size_t max_elements = 4096;
@@ -55,16 +57,21 @@ MirrorImages<Dim> mirror_images(const ParticleSet<Dim>& particles, double reach,
       seen.push_back(next);
       if (seen.size() > max_elements)
         throw std::runtime_error("mirror planes generate too many images (planes not a finite symmetry?)");
+      // Which particles' images under `next` are wanted (in parallel), then
+      // those images in particle order.
+      for_each_particle(particles.size(), [&](std::size_t j) {
+        const Vec<Dim> y = next(particles.position[j]);
+        image[j] = y;
+        // A particle on a plane is its own image: nothing to add.
+        wanted[j] = (y - particles.position[j]).norm() >= 1e-9 * particles.spacing &&
+                    !beyond_reach(y, own_reach.empty() ? reach : std::min(reach, own_reach[j])) &&
+                    free_cells.any_within(y, reach);
+      });
       bool reaches = false;
       for (std::size_t j = 0; j < particles.size(); ++j) {
-        const Vec<Dim> y = next(particles.position[j]);
-        // A particle on a plane is its own image: nothing to add.
-        if ((y - particles.position[j]).norm() < 1e-9 * particles.spacing) continue;
-        if (beyond_reach(y, own_reach.empty() ? reach : std::min(reach, own_reach[j])) ||
-            !free_cells.any_within(y, reach))
-          continue;
+        if (!wanted[j]) continue;
         reaches = true;
-        images.position.push_back(y);
+        images.position.push_back(image[j]);
         images.source.push_back(static_cast<std::uint32_t>(j));
         images.linear.push_back(next.A);
       }

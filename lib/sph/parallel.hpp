@@ -21,6 +21,15 @@ void for_each_particle(std::size_t n, Body&& body) {
   for (long long i = 0; i < count; ++i) body(static_cast<std::size_t>(i));
 }
 
+// A few items of much work each (the rays of a fan): shared among the
+// threads whatever their count, each taking the next free item.
+template <class Body>
+void for_each_item(std::size_t n, Body&& body) {
+  const long long count = static_cast<long long>(n);
+#pragma omp parallel for schedule(dynamic)
+  for (long long i = 0; i < count; ++i) body(static_cast<std::size_t>(i));
+}
+
 // Sum over particles of body(i), reduced across threads.
 template <class Body>
 double sum_over_particles(std::size_t n, Body&& body) {
