@@ -66,9 +66,17 @@ ClosureDetector::ClosureDetector(const std::vector<sph::Vec<2>>& position, std::
   }
 }
 
+std::vector<double> image_reach(const sph::ParticleSet<2>& particles) {
+  std::vector<double> reach;
+  if (!particles.graded()) return reach;
+  reach.resize(particles.size());
+  for (std::size_t j = 0; j < particles.size(); ++j) reach[j] = 4.5 * particles.spacing_of(j);
+  return reach;
+}
+
 namespace {
 ClosureDetector graded_detector(const sph::ParticleSet<2>& particles, double far_field_radius) {
-  const auto images = sph::mirror_images(particles, 3.0 * particles.coarsest_spacing());
+  const auto images = sph::mirror_images(particles, 3.0 * particles.coarsest_spacing(), image_reach(particles));
   return ClosureDetector(particles.position, particles.n_free, particles.local_spacing, far_field_radius,
                          images.position, images.source);
 }

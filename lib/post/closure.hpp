@@ -34,6 +34,13 @@
 
 namespace frostwall::post {
 
+// Triangulations of a graded wedge with its mirror images (the closure
+// links, the front curves) use links of a few local spacings: an image of
+// particle j matters only up to 4.5 of its own spacings beyond a mirror
+// (three spacings, and a neighbour across may be coarser). For
+// mirror_images' own_reach; empty for a lattice (one reach serves).
+std::vector<double> image_reach(const sph::ParticleSet<2>& particles);
+
 class ClosureDetector {
  public:
   ClosureDetector(const std::vector<sph::Vec<2>>& position, std::size_t n_free, double spacing,

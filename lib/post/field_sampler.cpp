@@ -55,7 +55,12 @@ FieldSampler::FieldSampler(const sph::ParticleSet<2>& particles, const sph::Kern
   // a wedge side and the first lattice row), so reach further by a spacing
   // or an image at the rim of its support would be missed.
   const double spacing = particles.spacing > 0.0 ? particles.coarsest_spacing() : c.h_max;
-  const auto images = sph::mirror_images(particles, reach + spacing);
+  // An image adds to a sample (inside the wedge) only within its own
+  // support 2 h_j, so it need not lie further beyond a mirror than that.
+  std::vector<double> own_reach(particles.size());
+  for (std::size_t j = 0; j < particles.size(); ++j)
+    own_reach[j] = sph::Kernel::support_factor * h.of(j) + particles.spacing_of(j);
+  const auto images = sph::mirror_images(particles, reach + spacing, own_reach);
   c.points = particles.position;
   c.points.insert(c.points.end(), images.position.begin(), images.position.end());
   c.source.resize(c.points.size());

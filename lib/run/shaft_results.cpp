@@ -6,6 +6,7 @@
 
 #include "io/atomic_file.hpp"
 #include "io/polyline_vtk.hpp"
+#include "post/closure.hpp"
 #include "post/isoline.hpp"
 #include "sph/laplacian.hpp"
 #include "sph/symmetry_group.hpp"
@@ -80,7 +81,7 @@ ShaftResults::ShaftResults(const project::Project& p, const Model& m)
   const auto& P = m.particles();
   curve_points_ = P.position;
   for (std::uint32_t i = 0; i < P.size(); ++i) curve_source_.push_back(i);
-  const auto images = sph::mirror_images(P, 3.0 * P.coarsest_spacing());
+  const auto images = sph::mirror_images(P, 3.0 * P.coarsest_spacing(), post::image_reach(P));
   curve_points_.insert(curve_points_.end(), images.position.begin(), images.position.end());
   curve_source_.insert(curve_source_.end(), images.source.begin(), images.source.end());
   if (p.output.full_ring && !P.mirrors.empty())
