@@ -5,17 +5,21 @@
                 (the SPH paper's method; pipes as discs as everywhere else)
   default mode  whatever frostwall ships as default (no numerics given)
 
-Both run in this one invocation, one after the other, with the same output
-settings (summary and CSV only: VTK writing is disk speed, not the engine).
+Both run in this one invocation, back to back (paper then default, on 2 and on
+1 thread, three times by default: the wall times are medians, and the ratio
+is the median of the back-to-back pairs' ratios, since this shared machine's
+speed drifts), with the same output settings (summary and CSV only: VTK
+writing is disk speed, not the engine).
 Accuracy is judged against the converged run stored in bench/converged.json
 (made once with --converged; its settings are stored with it). Also: the
 default mode on 1 and 2 OpenMP threads, and the kernel's pair-update rate
 (build/bench/kernel_rate). Usage, from the repository root after set-up:
 
-  python3 bench/bench.py                 # everything (about 4 minutes here)
+  python3 bench/bench.py                 # everything (about 6 minutes here)
+  python3 bench/bench.py --repeats 1     # one run each (about 2 minutes)
   python3 bench/bench.py --converged     # (re)make bench/converged.json
 """
-import argparse, copy, json, os, subprocess, sys, tempfile, time
+import argparse, copy, json, os, statistics, subprocess, sys, tempfile, time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 EXE = os.path.join(ROOT, "build", "app", "frostwall")
@@ -69,6 +73,7 @@ def facts(r):
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--converged", action="store_true", help="make bench/converged.json (slow) and stop")
+    ap.add_argument("--repeats", type=int, default=3, help="interleaved runs per mode and thread count (default 3)")
     args = ap.parse_args()
     work = tempfile.mkdtemp(prefix="frostwall-bench-")
 
@@ -87,10 +92,24 @@ def main():
     with open(CONVERGED) as f:
         ref = json.load(f)
     threads = os.cpu_count() or 1
+    thread_counts = [threads] if threads == 1 else [threads, 1]
     modes = [("paper", PAPER), ("default", None)]
-    results = {name: facts(run(numerics, threads, work, name)) for name, numerics in modes}
-    scaling = {t: facts(run(None, t, work, f"default_t{t}"))["wall"] for t in (1, 2)}
-    paper_scaling = {1: facts(run(PAPER, 1, work, "paper_t1"))["wall"], threads: results["paper"]["wall"]}
+    # Interleaved repeats: paper then default, on each thread count, N times.
+    # This machine is shared and its speed drifts from minute to minute, so a
+    # ratio is taken within each back-to-back pair and the median reported.
+    walls = {(name, t): [] for name, _ in modes for t in thread_counts}
+    results = {}
+    for r in range(args.repeats):
+        for t in thread_counts:
+            for name, numerics in modes:
+                res = facts(run(numerics, t, work, f"{name}_t{t}_r{r}"))
+                walls[(name, t)].append(res["wall"])
+                if t == threads and name not in results:
+                    results[name] = res
+    for name, _ in modes:
+        results[name]["wall"] = statistics.median(walls[(name, threads)])
+        results[name]["pair_updates_per_s"] = (results[name]["evaluations"] * results[name]["pairs"] /
+                                               results[name]["wall"])
 
     def err_day(x):
         return 100.0 * (x - ref["closure_day"]) / ref["closure_day"] if x is not None else float("nan")
@@ -100,24 +119,29 @@ def main():
 
     print(f"frostwall bench: single ring, sand, 120 days, {threads} threads; converged reference "
           f"(spacing {ref['numerics']['spacing']} m, {ref['numerics']['integrator']}): closure {ref['closure_day']:.3f} d, "
-          f"OB {ref['OB60']:.3f} m @60 d, {ref['OB100']:.3f} m @100 d\n")
+          f"OB {ref['OB60']:.3f} m @60 d, {ref['OB100']:.3f} m @100 d; wall times are medians of {args.repeats} "
+          f"interleaved runs\n")
     head = ("| mode | integrator | spacing | particles | steps | rate evaluations | wall s | closure day | error | "
             "OB 60 d | error | OB 100 d | error | pair-updates/s | peak MB |")
     print(head)
     print("|" + "---|" * (head.count("|") - 1))
     for name, r in results.items():
-        print(f"| {name} | {r['integrator']} | {r['spacing']} | {r['particles']} | {r['steps']} | {r['evaluations']} | "
+        print(f"| {name} | {r['integrator']} | {r['spacing']:.4g} | {r['particles']} | {r['steps']} | {r['evaluations']} | "
               f"{r['wall']:.1f} | {r['closure_day']:.3f} | {err_day(r['closure_day']):+.2f} % | "
               f"{r['OB60']:.3f} m | {err_cm(r['OB60'], 'OB60'):+.1f} cm | {r['OB100']:.3f} m | "
               f"{err_cm(r['OB100'], 'OB100'):+.1f} cm | {r['pair_updates_per_s']:.2e} | {r['peak_mb']:.0f} |")
-    ratio = results["paper"]["wall"] / results["default"]["wall"]
-    print(f"\nwall-time ratio paper / default, {threads} threads: {ratio:.1f}x")
-    print(f"wall-time ratio paper / default, 1 thread: {paper_scaling[1] / scaling[1]:.1f}x "
-          f"({paper_scaling[1]:.1f} s / {scaling[1]:.1f} s)")
-    print(f"OpenMP scaling, default mode: 1 thread {scaling[1]:.1f} s, 2 threads {scaling[2]:.1f} s, "
-          f"speed-up {scaling[1] / scaling[2]:.2f}x")
-    print(f"OpenMP scaling, paper mode: 1 thread {paper_scaling[1]:.1f} s, {threads} threads "
-          f"{paper_scaling[threads]:.1f} s, speed-up {paper_scaling[1] / paper_scaling[threads]:.2f}x")
+    print()
+    for t in thread_counts:
+        ratios = [p / d for p, d in zip(walls[("paper", t)], walls[("default", t)])]
+        print(f"wall-time ratio paper / default, {t} thread{'s' if t > 1 else ''}: "
+              f"{statistics.median(ratios):.1f}x (median; pairs {', '.join(f'{x:.1f}' for x in ratios)}; "
+              f"paper {', '.join(f'{x:.1f}' for x in walls[('paper', t)])} s, "
+              f"default {', '.join(f'{x:.2f}' for x in walls[('default', t)])} s)")
+    if len(thread_counts) > 1:
+        for name, _ in modes:
+            one, many = statistics.median(walls[(name, 1)]), statistics.median(walls[(name, threads)])
+            print(f"OpenMP scaling, {name} mode: 1 thread {one:.2f} s, {threads} threads {many:.2f} s, "
+                  f"speed-up {one / many:.2f}x")
     if os.path.exists(KERNEL):
         print("\nkernel (build/bench/kernel_rate):")
         sys.stdout.flush()
