@@ -1,8 +1,9 @@
 // Story: the building blocks against independent answers. Kernels integrate
 // to one and their derivative matches a finite difference; the cell list
 // finds exactly the neighbours brute force finds (PySPH's check); mirror
-// images fill corners; the renormalised Laplacian is exact for a quadratic
-// field on a lattice, where the plain form is off by the lattice-sum error;
+// images fill corners and stop at each particle's own reach; the
+// renormalised Laplacian is exact for a quadratic field on a lattice, where
+// the plain form is off by the lattice-sum error;
 // on an irregular cloud the moment-corrected weights are exact for linear
 // and quadratic fields; the two-level solver under that correction agrees
 // with a direct factorisation and needs as many iterations on a big
@@ -83,6 +84,28 @@ TEST_CASE("Mirror images: a corner particle sees its three images", "[sph]") {
   for (std::size_t k = 0; k < images.source.size(); ++k)
     if ((P.position[images.source[k]] - Vec<2>(0.05, 0.05)).norm() < 1e-12) ++of_corner;
   CHECK(of_corner == 3);  // across x = 0, across y = 0, and across both
+}
+
+TEST_CASE("Mirror images: each particle's own reach bounds how far beyond a plane its images go", "[sph]") {
+  // Own reach 1.5 spacings for the left half of the square, 3 for the right:
+  // the images kept are those of the full list that lie no further than
+  // their source's own reach beyond every plane, no more, no fewer.
+  const int n = 20;
+  const auto P = insulated_square(n);
+  const double d = 1.0 / n, reach = 4 * d;
+  std::vector<double> own(P.size());
+  for (std::size_t j = 0; j < P.size(); ++j) own[j] = (P.position[j][0] < 0.5 ? 1.5 : 3.0) * d;
+  const auto all = sph::mirror_images(P, reach);
+  const auto some = sph::mirror_images(P, reach, own);
+  auto beyond = [](const Vec<2>& y) {  // distance outside the unit square, along the worst axis
+    return std::max({-y[0], y[0] - 1.0, -y[1], y[1] - 1.0, 0.0});
+  };
+  std::size_t expected = 0;
+  for (std::size_t k = 0; k < all.position.size(); ++k)
+    if (beyond(all.position[k]) <= own[all.source[k]]) ++expected;
+  CHECK(some.position.size() == expected);
+  CHECK(expected < all.position.size());
+  for (std::size_t k = 0; k < some.position.size(); ++k) CHECK(beyond(some.position[k]) <= own[some.source[k]]);
 }
 
 TEST_CASE("Renormalised Laplacian is exact for a quadratic field on a lattice", "[sph]") {
