@@ -46,9 +46,13 @@ Features<Dim> far_features_of(const Vec<Dim>& d, const Eigen::Matrix<double, Dim
 // the slow modes of plain CG; they span the solver's coarse space, with
 // a common mu. (They are the linear members of a larger family: any
 // lambda whose symmetric gradient is 2 mu I, a conformal field in 2-D, is
-// nearly ignored too. A narrow wedge's mirrors pin those; a full ring
-// without mirrors (16 000 particles at 0.1 m) took 280 iterations, about
-// 4 s; incomplete-Cholesky CG took 195, 5.5 s with its factorisation.)
+// nearly ignored too; adding the quadratic ones gained little: 38 -> 33
+// iterations on the single ring. A full ring of measured pipes with no
+// symmetry, 16 000 particles at 0.1 m, takes 49 iterations; the same
+// ring unfolded from the wedge (numerics.symmetry "off") took 280, about
+// 4 s, where incomplete-Cholesky CG took 195 and 5.5 s with its
+// factorisation: the unfolding leaves 52 pairs of nearly coincident
+// particles at the axis, the likely cause.)
 template <int Dim>
 Eigen::Matrix<double, unknowns<Dim>, MomentSystem<Dim>::modes> near_null_modes(const Vec<Dim>& x, double l) {
   Eigen::Matrix<double, unknowns<Dim>, MomentSystem<Dim>::modes> m =
