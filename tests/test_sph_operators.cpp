@@ -212,13 +212,7 @@ TEST_CASE("Two-level block CG agrees with a direct solve; its iterations do not 
     const auto system = shaken_square_system(sizes[s]);
     const auto& K = system.K;
     REQUIRE(K.rows() == std::size_t(sizes[s] * sizes[s]));  // every particle surrounded
-    std::vector<Eigen::Triplet<double>> triplets;
-    for (std::size_t r = 0; r < K.rows(); ++r)
-      for (std::size_t e = K.row_start[r]; e < K.row_start[r + 1]; ++e)
-        for (int a = 0; a < 3; ++a)
-          for (int c = 0; c < 3; ++c) triplets.emplace_back(3 * r + a, 3 * K.column[e] + c, K.block[e](a, c));
-    Eigen::SparseMatrix<double> A(system.rhs.size(), system.rhs.size());
-    A.setFromTriplets(triplets.begin(), triplets.end());
+    const Eigen::SparseMatrix<double> A = K.sparse();
     const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> direct(A);
     REQUIRE(direct.info() == Eigen::Success);
     const Eigen::VectorXd exact = direct.solve(system.rhs);

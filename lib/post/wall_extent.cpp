@@ -156,17 +156,8 @@ WallExtents wall_extents(const RayFan& fan, const std::vector<double>& liquid_fr
   return w;
 }
 
-namespace {
-std::vector<Vec2> last_ray(const RayFan& fan) {
-  const std::vector<Vec2> all = fan.points();
-  const std::size_t n = fan.radii().size();
-  return {all.end() - n, all.end()};
-}
-}  // namespace
-
 WallGauge::WallGauge(const FieldSampler& sampler, RayFan fan, double ring_radius)
-    : fan_(fan), ring_radius_(ring_radius), radii_(fan.radii()), fan_probe_(sampler, fan.points()),
-      OB_probe_(sampler, last_ray(fan)) {}
+    : fan_(fan), ring_radius_(ring_radius), radii_(fan.radii()), fan_probe_(sampler, fan.points()) {}
 
 WallReading WallGauge::measure(const std::vector<double>& liquid_fraction,
                                const std::vector<double>& temperature) const {
@@ -181,25 +172,22 @@ WallReading WallGauge::measure(const std::vector<double>& liquid_fraction,
   std::vector<std::pair<std::size_t, std::size_t>> read(fan_.rays);  // [first, last] index read per ray
   sph::for_each_item(fan_.rays, [&](std::size_t k) {
     double* ray = f.data() + k * n;
-    const std::size_t offset = k * n;
+    auto unfrozen_at = [&](std::size_t i) {  // reads sample i of the ray
+      ray[i] = fan_probe_.at(k * n + i, liquid_fraction);
+      return ray[i] > frozen_level;
+    };
     std::size_t first = std::min(m, n - 1), last = first;
-    for (std::size_t i = m; i-- > 0;) {
-      first = i;
-      ray[i] = fan_probe_.at(offset + i, liquid_fraction);
-      if (ray[i] > frozen_level) break;
-    }
-    for (std::size_t i = m; i < n; ++i) {
-      last = i;
-      ray[i] = fan_probe_.at(offset + i, liquid_fraction);
-      if (ray[i] > frozen_level) break;
-    }
+    for (std::size_t i = m; i-- > 0;)
+      if (first = i; unfrozen_at(i)) break;
+    for (std::size_t i = m; i < n; ++i)
+      if (last = i; unfrozen_at(i)) break;
     read[k] = {first, last};
   });
   WallReading reading;
   reading.extents = wall_extents(fan_, f, ring_radius_);
   const int OB = fan_.rays - 1;
   std::vector<double> T(n, std::numeric_limits<double>::quiet_NaN());
-  for (std::size_t i = read[OB].first; i <= read[OB].second && i < n; ++i) T[i] = OB_probe_.at(i, temperature);
+  for (std::size_t i = read[OB].first; i <= read[OB].second && i < n; ++i) T[i] = fan_probe_.at(OB * n + i, temperature);
   reading.mean_temperature_OB = mean_over_frozen(radii_, fan_.on_ray(f, OB), T, reading.extents.OB());
   return reading;
 }

@@ -97,8 +97,7 @@ class WallGauge {
   RayFan fan_;
   double ring_radius_;
   std::vector<double> radii_;
-  PointProbe fan_probe_;
-  PointProbe OB_probe_;
+  PointProbe fan_probe_;  // OB is its last ray
 };
 
 }  // namespace frostwall::post

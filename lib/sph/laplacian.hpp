@@ -58,9 +58,6 @@ LaplacianPairs build_laplacian_pairs(const ParticleSet<Dim>& particles, const Ke
 // Mirror images of real particles within reach (2h) of a free particle,
 // through every composition of the mirror planes that still reaches the
 // domain (corners, wedge apex). source[k] is the real particle imaged.
-// own_reach (optional, one per particle): an image of particle j further
-// than own_reach[j] beyond a plane is not wanted either (a graded cloud's
-// fine particles need images only a few of their own spacings out).
 template <int Dim>
 struct MirrorImages {
   std::vector<Vec<Dim>> position;
@@ -69,6 +66,9 @@ struct MirrorImages {
   // vectors and tensors at the source map to the image through it.
   std::vector<Eigen::Matrix<double, Dim, Dim>> linear;
 };
+// own_reach (optional, one per particle): an image of particle j further
+// than own_reach[j] beyond a plane is not wanted either (a graded cloud's
+// fine particles need images only a few of their own spacings out).
 template <int Dim>
 MirrorImages<Dim> mirror_images(const ParticleSet<Dim>& particles, double reach,
                                 const std::vector<double>& own_reach = {});

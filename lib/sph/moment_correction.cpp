@@ -162,15 +162,7 @@ Eigen::VectorXd solve_moment_system(const MomentSystem<Dim>& system, TwoLevelRep
   const Eigen::VectorXd& rhs = system.rhs;
   Eigen::VectorXd z;
   if (solve_two_level(K, rhs, system.near_null, 1e-8, 500, z, report)) return z;
-  constexpr int P = unknowns<Dim>;
-  std::vector<Eigen::Triplet<double>> triplets;
-  for (std::size_t r = 0; r < K.rows(); ++r)
-    for (std::size_t e = K.row_start[r]; e < K.row_start[r + 1]; ++e)
-      for (int a = 0; a < P; ++a)
-        for (int b = 0; b < P; ++b) triplets.emplace_back(P * r + a, P * K.column[e] + b, K.block[e](a, b));
-  Eigen::SparseMatrix<double> A(rhs.size(), rhs.size());
-  A.setFromTriplets(triplets.begin(), triplets.end());
-  const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(A);
+  const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(K.sparse());
   if (solver.info() != Eigen::Success) throw std::runtime_error("moment correction: the moment system is singular");
   return solver.solve(rhs);
 }

@@ -18,6 +18,19 @@ void BlockMatrix<B>::multiply(const Eigen::VectorXd& x, Eigen::VectorXd& y) cons
   });
 }
 
+template <int B>
+Eigen::SparseMatrix<double> BlockMatrix<B>::sparse() const {
+  std::vector<Eigen::Triplet<double>> triplets;
+  triplets.reserve(block.size() * B * B);
+  for (std::size_t r = 0; r < rows(); ++r)
+    for (std::size_t e = row_start[r]; e < row_start[r + 1]; ++e)
+      for (int a = 0; a < B; ++a)
+        for (int b = 0; b < B; ++b) triplets.emplace_back(B * r + a, B * column[e] + b, block[e](a, b));
+  Eigen::SparseMatrix<double> A(B * rows(), B * rows());
+  A.setFromTriplets(triplets.begin(), triplets.end());
+  return A;
+}
+
 namespace {
 
 // Greedy aggregation on the block graph: a row whose neighbours are all

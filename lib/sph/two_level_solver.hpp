@@ -11,6 +11,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <Eigen/SparseCore>
 #include <Eigen/StdVector>
 #include <cstdint>
 #include <vector>
@@ -28,6 +29,7 @@ struct BlockMatrix {
 
   std::size_t rows() const { return row_start.size() - 1; }
   void multiply(const Eigen::VectorXd& x, Eigen::VectorXd& y) const;  // y = K x
+  Eigen::SparseMatrix<double> sparse() const;                         // the same matrix, scalar entries
 };
 
 struct TwoLevelReport {

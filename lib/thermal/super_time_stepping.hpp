@@ -9,9 +9,9 @@
 // is handled exactly as in the paper's forward Euler. Second order in time.
 //
 // The step is chosen by the freezing activity (step_control.hpp); the
-// stage count then follows from the forward-Euler limit: the larger of the
-// Gershgorin bound now and the limit from the operator's largest
-// eigenvalue over all states (power iteration, once).
+// stage count then follows from the forward-Euler limit of the operator's
+// largest eigenvalue over all states (power iteration, once), or the
+// Gershgorin bound of the state now if that failed.
 #pragma once
 
 #include <vector>
@@ -55,7 +55,7 @@ class SuperTimeStepping final : public Integrator {
   double dt_fe_ = 0.0;        // forward-Euler limit at the last step (0: none yet)
   double dt_spectral_ = 0.0;  // spectral_limit, found at the first step
   SuperTimeSteppingStatistics stats_;
-  std::vector<double> Y0_, Yprev_, Yprev2_, L0_, L_, a_;
+  std::vector<double> Y0_, Yprev_, Yprev2_, L0_, L_;
 };
 
 }  // namespace frostwall::thermal
