@@ -54,7 +54,7 @@ inline double observed_order(double coarse_error, double fine_error) { return st
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "post/closure.hpp"
+#include "run/closure_tracker.hpp"
 
 namespace frostwall::test {
 
@@ -66,18 +66,21 @@ inline project::Project shipped_project(const std::string& name, const nlohmann:
   return project::parse_project(j.dump());
 }
 
-// Closure day of a shaft model (interpolated between steps); the run
-// stops at closure or at t_end.
-inline std::optional<double> closure_day(run::Model& m, double t_end) {
-  const auto& P = m.particles();
-  post::ClosureDetector detector(P, m.shaft->far_field_radius);
-  post::ClosureWatch watch(detector);
+// Closure (a fully frozen path) and front contact (liquid fraction 0.5)
+// days of a shaft model, interpolated between steps as run_project does;
+// the run stops at closure or at t_end.
+struct ClosureDays {
+  std::optional<double> closure, contact;
+};
+inline ClosureDays closure_days(run::Model& m, double t_end) {
+  run::ClosureTracker tracker(m, t_end, t_end / run::time_series_points);
   thermal::TimeLoopObservers obs;
-  obs.after_step = [&](const thermal::ThermalModel& model, double t) { watch.observe(t, model.liquid_fraction(), t_end / 2000.0); };
-  obs.finished = [&] { return watch.closure_time().has_value(); };
+  obs.after_step = [&](const thermal::ThermalModel& model, double t) { tracker.after_step(model, t); };
+  obs.finished = [&] { return tracker.closure_time().has_value(); };
   thermal::run_time_loop(*m.model, *m.integrator, t_end, {t_end}, obs);
-  if (!watch.closure_time()) return std::nullopt;
-  return *watch.closure_time() / 86400.0;
+  auto days = [](const std::optional<double>& t) { return t ? std::optional(*t / 86400.0) : std::nullopt; };
+  return {days(tracker.closure_time()), days(tracker.contact_time())};
 }
+inline std::optional<double> closure_day(run::Model& m, double t_end) { return closure_days(m, t_end).closure; }
 
 }  // namespace frostwall::test

@@ -116,12 +116,12 @@ TEST_CASE("closure: a frozen ring around the axis is closed, b = 0", "[closure]"
 
   // All ground unfrozen: wide open, b is the largest level.
   CHECK(detector.bottleneck(std::vector<double>(disc.size(), 1.0)) == 1.0);
-  CHECK_FALSE(detector.closed(std::vector<double>(disc.size(), 1.0)));
+  CHECK_FALSE(detector.touching(std::vector<double>(disc.size(), 1.0)));
 
   // The ring: no unfrozen connection, the first frozen particle joining the
   // two sides completes it at its own level, 0.
   CHECK(detector.bottleneck(f) == 0.0);
-  CHECK(detector.closed(f));
+  CHECK(detector.touching(f));
 
   // Ring frozen to 0.2 instead of 0: b is that level, not 0.
   auto g = f;
@@ -173,13 +173,13 @@ TEST_CASE("closure: a one-particle gap through the ring sets b to its liquid fra
     return f;
   };
   CHECK(detector.bottleneck(with_gap(1.0)) == 1.0);
-  CHECK_FALSE(detector.closed(with_gap(1.0)));
+  CHECK_FALSE(detector.touching(with_gap(1.0)));
   CHECK(detector.bottleneck(with_gap(0.7)) == 0.7);
-  CHECK_FALSE(detector.closed(with_gap(0.7)));
+  CHECK_FALSE(detector.touching(with_gap(0.7)));
   CHECK(detector.bottleneck(with_gap(0.3)) == 0.3);
-  CHECK(detector.closed(with_gap(0.3)));
+  CHECK(detector.touching(with_gap(0.3)));
   CHECK(detector.bottleneck(with_gap(0.5)) == 0.5);  // frozen means f <= 0.5
-  CHECK(detector.closed(with_gap(0.5)));
+  CHECK(detector.touching(with_gap(0.5)));
 
   // The gap is as open as its most frozen particle.
   auto f = with_gap(0.9);
@@ -249,12 +249,12 @@ TEST_CASE("closure: the particle nearest the axis frozen closes", "[closure]") {
   std::vector<double> f(disc.size(), 1.0);
   f[origin] = 0.0;
   CHECK(detector.bottleneck(f) == 0.0);
-  CHECK(detector.closed(f));
+  CHECK(detector.touching(f));
   f[origin] = 0.4;  // b never exceeds the axis particle's own level
   CHECK(detector.bottleneck(f) == 0.4);
   f[origin] = 0.6;
   CHECK(detector.bottleneck(f) == 0.6);
-  CHECK_FALSE(detector.closed(f));
+  CHECK_FALSE(detector.touching(f));
 
   // A lattice shifted off the axis: the nearest particle is (0.3 d, 0.1 d),
   // one particle; freezing it closes, freezing its neighbour (-0.7 d, 0.1 d)

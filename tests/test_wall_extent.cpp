@@ -334,7 +334,7 @@ TEST_CASE("Wall extents on a wedge lattice: thinnest section of an analytic froz
     auto P = wedge_lattice(start, alpha, 7.0, d);
     if (voronoi) geometry::assign_voronoi_volumes(P, 2 * h);
     const post::FieldSampler sampler(P, kernel, h);
-    const post::WallGauge gauge(sampler, fan, R);
+    const post::WallGauge gauge(sampler, fan, {R});
     for (const Case& c : {Case{"single ring, smooth front", 0.6, 0.35, false, 0.3},
                           Case{"single ring, sharp front", 0.6, 0.35, false, d},
                           Case{"double ring, smooth front", 0.7, 0.3, true, 0.3},

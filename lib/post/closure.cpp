@@ -1,6 +1,8 @@
 #include "post/closure.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <numeric>
 
 #include "geometry/delaunay.hpp"
@@ -118,18 +120,23 @@ double ClosureDetector::bottleneck(const std::vector<double>& f) const {
     }
     if (reaches_far[ri] && holds_axis[ri]) return f[i];
   }
-  return 0.0;  // no unfrozen ground joins them at any level
+  return -std::numeric_limits<double>::infinity();  // nothing joins them at any level
 }
 
-void ClosureWatch::observe(double t, const std::vector<double>& f, double min_interval) {
-  if (closure_ || (t < next_check_ && b_prev_ >= 1.0)) return;
+void ClosureWatch::observe(double t, const std::vector<double>& g, double min_interval) {
+  if (!due(t)) return;
   next_check_ = t + min_interval;
-  const double b = detector_.bottleneck(f);
-  if (b <= 0.5) {
-    // Linear in time between the last open observation and this one.
-    closure_ = b_prev_ > b ? t_prev_ + (b_prev_ - 0.5) / (b_prev_ - b) * (t - t_prev_) : t;
+  const double b = detector_.bottleneck(g);
+  // Linear in time between the last observation above a level and this one.
+  auto crossing = [&](double level) {
+    return b_prev_ > b && std::isfinite(b) ? t_prev_ + (b_prev_ - level) / (b_prev_ - b) * (t - t_prev_) : t;
+  };
+  if (!contact_ && b <= contact_level) contact_ = crossing(contact_level);
+  if (b <= closure_level) {
+    closure_ = crossing(closure_level);
     return;
   }
+  if (t > t_prev_) rate_ = (b_prev_ - b) / (t - t_prev_);
   t_prev_ = t;
   b_prev_ = b;
 }

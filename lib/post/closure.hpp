@@ -4,13 +4,22 @@
 // a full ring, a frozen wall around the shaft.
 //
 // The detector measures how close that is with one number, the bottleneck
-// liquid fraction b: the largest level such that particles with liquid
-// fraction >= b still connect the axis to the far field (links between
-// particles up to 1.5 spacings apart: the lattice's 8-neighbourhood). The
-// wall is closed when b <= 0.5 (frozen = liquid fraction <= 0.5). b is
-// the liquid fraction of the last particle that keeps the gap open, so it
-// falls continuously while that particle freezes, and the closure time can
-// be interpolated between two steps instead of snapping to one.
+// b of a per-particle field g: the largest level such that particles with
+// g >= b still connect the axis to the far field (links between particles
+// up to 1.5 spacings apart: the lattice's 8-neighbourhood). The run passes
+// g = H / H_latent, the latent heat a particle still holds (1 at the start
+// of freezing, 0 fully frozen, negative once colder: unclamped, so b keeps
+// falling smoothly through 0). The columns touch when b <= 0.5 (frozen =
+// liquid fraction <= 0.5); the wall is closed when b <= 0: a path of fully
+// frozen ground (project-format.md section 2). Near closure the neck sits
+// within hundredths of a kelvin of the freezing point for days, so the
+// half-frozen path forms early and drifts with resolution; the fully
+// frozen one does not. b is the value of the last particle that keeps the
+// gap open, so it falls continuously while that particle freezes, and both
+// times are interpolated between two steps instead of snapping to one.
+// On a triangulation (below) the particle graph's bottleneck is exactly
+// the saddle of the piecewise-linear interpolant of g: a sub-particle
+// measure, not a count of frozen particles.
 //
 // A graded cloud has no lattice neighbourhood: there the links are the
 // edges of the Delaunay triangulation of the free particles (no longer
@@ -55,9 +64,11 @@ class ClosureDetector {
                   const std::vector<std::uint32_t>& image_source = {});
   // The lattice rule for a lattice, the Delaunay rule for a graded cloud.
   ClosureDetector(const sph::ParticleSet<2>& particles, double far_field_radius);
-  double bottleneck(const std::vector<double>& liquid_fraction) const;
+  // -infinity when nothing joins the axis to the far field at any level.
+  double bottleneck(const std::vector<double>& g) const;
   std::size_t links() const { return link_.size(); }
-  bool closed(const std::vector<double>& liquid_fraction) const { return bottleneck(liquid_fraction) <= 0.5; }
+  // Liquid fractions: the columns touch (some path frozen to f <= 0.5).
+  bool touching(const std::vector<double>& liquid_fraction) const { return bottleneck(liquid_fraction) <= 0.5; }
 
  private:
   std::vector<std::size_t> start_;
@@ -66,23 +77,36 @@ class ClosureDetector {
   std::uint32_t axis_ = 0;      // the free particle nearest the shaft axis
 };
 
-// Follows the bottleneck in time and interpolates the instant it crosses 0.5.
+// Follows the bottleneck of g = H / H_latent in time and interpolates the
+// instants it crosses 0.5 (the frozen columns touch) and 0 (closure: a
+// fully frozen path).
 class ClosureWatch {
  public:
+  static constexpr double contact_level = 0.5, closure_level = 0.0;
   explicit ClosureWatch(const ClosureDetector& detector) : detector_(detector) {}
-  // Call after each step (from t = 0 on) with the time and the liquid
-  // fraction. While the gap is wide open (b = 1) the detector runs only
-  // every `min_interval` seconds; once a particle of the gap is freezing
-  // (b < 1) it runs at every call.
-  void observe(double t, const std::vector<double>& liquid_fraction, double min_interval);
+  // Whether observe at time t would run the detector: while the gap is
+  // wide open (b >= 1, nothing in it freezing) only every `min_interval`;
+  // once a particle of the gap is freezing, at every call until closure.
+  bool due(double t) const { return !closure_ && (t >= next_check_ || b_prev_ < 1.0); }
+  // Call after each step (from t = 0 on) with the time and g per particle.
+  void observe(double t, const std::vector<double>& g, double min_interval);
+  std::optional<double> contact_time() const { return contact_; }
   std::optional<double> closure_time() const { return closure_; }
-  // The last time the wall was seen open and the bottleneck then.
+  // The last time the wall was seen open (not closed) and b then.
   double last_open_time() const { return t_prev_; }
+  // While the gap freezes (0 < b < 1, falling): the time b takes to fall
+  // by `change` at its last rate. A run holds its steps to that, so the
+  // closure is resolved by steps, not bridged by one (run_project).
+  std::optional<double> time_to_fall(double change) const {
+    if (closure_ || !(b_prev_ < 1.0) || !(rate_ > 0.0)) return std::nullopt;
+    return change / rate_;
+  }
 
  private:
   const ClosureDetector& detector_;
-  std::optional<double> closure_;
+  std::optional<double> contact_, closure_;
   double t_prev_ = 0.0, b_prev_ = 1.0, next_check_ = 0.0;
+  double rate_ = 0.0;  // -db/dt between the last two observations
 };
 
 }  // namespace frostwall::post

@@ -80,6 +80,15 @@ FrozenStretch frozen_stretch(const std::vector<double>& r, const std::vector<dou
   return {inner, outer, outer - inner};
 }
 
+FrozenStretch frozen_stretch(const std::vector<double>& r, const std::vector<double>& liquid_fraction,
+                             const std::vector<double>& ring_radii) {
+  FrozenStretch longest;
+  for (double ring : ring_radii)
+    if (const auto s = frozen_stretch(r, liquid_fraction, ring); s.frozen() && (!longest.frozen() || s.thickness > longest.thickness))
+      longest = s;
+  return longest;
+}
+
 std::optional<double> mean_over_frozen(const std::vector<double>& r, const std::vector<double>& liquid_fraction,
                                        const std::vector<double>& temperature, const FrozenStretch& stretch) {
   if (liquid_fraction.size() != r.size())
@@ -142,12 +151,13 @@ std::vector<double> RayFan::on_ray(const std::vector<double>& fan_values, int k)
   return {fan_values.begin() + k * n, fan_values.begin() + (k + 1) * n};
 }
 
-WallExtents wall_extents(const RayFan& fan, const std::vector<double>& liquid_fraction_on_fan, double ring_radius) {
+WallExtents wall_extents(const RayFan& fan, const std::vector<double>& liquid_fraction_on_fan,
+                         const std::vector<double>& ring_radii) {
   const std::vector<double> r = fan.radii();
   WallExtents w;
   w.rays.reserve(fan.rays);
   for (int k = 0; k < fan.rays; ++k) {
-    w.rays.push_back(frozen_stretch(r, fan.on_ray(liquid_fraction_on_fan, k), ring_radius));
+    w.rays.push_back(frozen_stretch(r, fan.on_ray(liquid_fraction_on_fan, k), ring_radii));
     if (k == 0 || w.rays.back().thickness < w.min_thickness) {
       w.min_thickness = w.rays.back().thickness;
       w.thinnest_ray = k;
@@ -156,35 +166,37 @@ WallExtents wall_extents(const RayFan& fan, const std::vector<double>& liquid_fr
   return w;
 }
 
-WallGauge::WallGauge(const FieldSampler& sampler, RayFan fan, double ring_radius)
-    : fan_(fan), ring_radius_(ring_radius), radii_(fan.radii()), fan_probe_(sampler, fan.points()) {}
+WallGauge::WallGauge(const FieldSampler& sampler, RayFan fan, std::vector<double> ring_radii)
+    : fan_(fan), ring_radii_(std::move(ring_radii)), radii_(fan.radii()), fan_probe_(sampler, fan.points()) {}
 
 WallReading WallGauge::measure(const std::vector<double>& liquid_fraction,
                                const std::vector<double>& temperature) const {
-  // A ray's frozen stretch needs its samples only from the ring outward, on
-  // either side, to the first unfrozen one: those are read, the rest stay
-  // NaN (skipped as "no particle within reach"). The answer is the same as
-  // from every sample, at a fraction of the reads once the wall is thin
-  // against the domain.
+  // A ray's frozen stretches need their samples only from each ring
+  // outward, on either side, to the first unfrozen one: those are read, the
+  // rest stay NaN (skipped as "no particle within reach"). The answer is
+  // the same as from every sample, at a fraction of the reads once the wall
+  // is thin against the domain.
   const std::size_t n = radii_.size();
-  const std::size_t m = std::lower_bound(radii_.begin(), radii_.end(), ring_radius_) - radii_.begin();
   std::vector<double> f(n * fan_.rays, std::numeric_limits<double>::quiet_NaN());
-  std::vector<std::pair<std::size_t, std::size_t>> read(fan_.rays);  // [first, last] index read per ray
+  std::vector<std::pair<std::size_t, std::size_t>> read(fan_.rays, {n, 0});  // [first, last] index read per ray
   sph::for_each_item(fan_.rays, [&](std::size_t k) {
     double* ray = f.data() + k * n;
     auto unfrozen_at = [&](std::size_t i) {  // reads sample i of the ray
-      ray[i] = fan_probe_.at(k * n + i, liquid_fraction);
+      if (std::isnan(ray[i])) ray[i] = fan_probe_.at(k * n + i, liquid_fraction);
       return ray[i] > frozen_level;
     };
-    std::size_t first = std::min(m, n - 1), last = first;
-    for (std::size_t i = m; i-- > 0;)
-      if (first = i; unfrozen_at(i)) break;
-    for (std::size_t i = m; i < n; ++i)
-      if (last = i; unfrozen_at(i)) break;
-    read[k] = {first, last};
+    for (double ring : ring_radii_) {
+      const std::size_t m = std::lower_bound(radii_.begin(), radii_.end(), ring) - radii_.begin();
+      std::size_t first = std::min(m, n - 1), last = first;
+      for (std::size_t i = m; i-- > 0;)
+        if (first = i; unfrozen_at(i)) break;
+      for (std::size_t i = m; i < n; ++i)
+        if (last = i; unfrozen_at(i)) break;
+      read[k] = {std::min(read[k].first, first), std::max(read[k].second, last)};
+    }
   });
   WallReading reading;
-  reading.extents = wall_extents(fan_, f, ring_radius_);
+  reading.extents = wall_extents(fan_, f, ring_radii_);
   const int OB = fan_.rays - 1;
   std::vector<double> T(n, std::numeric_limits<double>::quiet_NaN());
   for (std::size_t i = read[OB].first; i <= read[OB].second && i < n; ++i) T[i] = fan_probe_.at(OB * n + i, temperature);

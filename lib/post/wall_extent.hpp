@@ -1,5 +1,5 @@
 // Where the frozen wall is along rays from the shaft axis: on each ray, the
-// frozen stretch (liquid fraction <= 0.5) that contains the pipe ring, its
+// longest frozen stretch (liquid fraction <= 0.5) that contains a pipe ring, its
 // inner and outer radius and thickness = outer - inner; the summary's
 // `wall` entries (OA, OB, min_thickness, mean_temperature_OB) come from a
 // fan of such rays across the wedge.
@@ -32,6 +32,11 @@ struct FrozenStretch {
 // sizes or radii not ascending.
 FrozenStretch frozen_stretch(const std::vector<double>& r, const std::vector<double>& liquid_fraction,
                              double ring_radius);
+// Double rings: the longest of the stretches that contain a ring radius
+// (the inner ring's alone, or both rings once their stretches merge), so a
+// wall that closed on its inner ring has a thickness from that day on.
+FrozenStretch frozen_stretch(const std::vector<double>& r, const std::vector<double>& liquid_fraction,
+                             const std::vector<double>& ring_radii);
 
 // Mean of T over the stretch, (1 / thickness) * integral of T dr by the
 // trapezoid rule on the samples inside it, with T interpolated linearly at
@@ -76,8 +81,10 @@ struct WallExtents {
   const FrozenStretch& OB() const { return rays.back(); }
 };
 
-// liquid_fraction_on_fan: values at fan.points().
-WallExtents wall_extents(const RayFan& fan, const std::vector<double>& liquid_fraction_on_fan, double ring_radius);
+// liquid_fraction_on_fan: values at fan.points(); on each ray the longest
+// frozen stretch containing one of ring_radii.
+WallExtents wall_extents(const RayFan& fan, const std::vector<double>& liquid_fraction_on_fan,
+                         const std::vector<double>& ring_radii);
 
 // One snapshot's wall entry of the summary.
 struct WallReading {
@@ -88,14 +95,14 @@ struct WallReading {
 // A fan whose sample weights are computed once, then read at every snapshot.
 class WallGauge {
  public:
-  WallGauge(const FieldSampler& sampler, RayFan fan, double ring_radius);
+  WallGauge(const FieldSampler& sampler, RayFan fan, std::vector<double> ring_radii);
   const RayFan& fan() const { return fan_; }
   // Fields over all particles (free then fixed).
   WallReading measure(const std::vector<double>& liquid_fraction, const std::vector<double>& temperature) const;
 
  private:
   RayFan fan_;
-  double ring_radius_;
+  std::vector<double> ring_radii_;
   std::vector<double> radii_;
   PointProbe fan_probe_;  // OB is its last ray
 };

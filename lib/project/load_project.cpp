@@ -291,11 +291,13 @@ Numerics read_numerics(const Node& n, bool shaft) {
     if (!n["step_change"].present()) numerics.step_change = numerics.integrator == IntegratorKind::rkl2 ? 1.0 : 0.25;
   };
   if (!n.object({"spacing", "kernel", "smoothing_ratio", "integrator", "beta", "step_change", "conductivity_mean",
-                 "laplacian", "symmetry", "placement", "coarsening", "growth", "band_coarsening", "band_width"})) {
+                 "laplacian", "symmetry", "placement", "coarsening", "growth", "band_coarsening", "band_width",
+                 "max_particles"})) {
     default_step_change();
     return numerics;
   }
   numerics.spacing = n["spacing"].positive();
+  numerics.max_particles = n["max_particles"].positive();
   numerics.kernel = n["kernel"].choice<KernelKind>(
       "kernel", {{"wendland_c2", KernelKind::wendland_c2}, {"cubic_spline", KernelKind::cubic_spline}})
                         .value_or(numerics.kernel);

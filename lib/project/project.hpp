@@ -151,6 +151,9 @@ struct Numerics {
   bool use_symmetry = true;
   Placement placement = Placement::lattice;  // default graded for shaft sections (load_project)
   Grading grading;
+  // Refuse a project estimated to need more free particles than this
+  // (nullopt: from the machine's memory, run/capacity.hpp).
+  std::optional<double> max_particles;
 };
 
 struct Design {

@@ -1,5 +1,10 @@
 #include "run/model.hpp"
 
+#include "run/capacity.hpp"
+
+#include <cmath>
+#include <limits>
+
 #include "geometry/layout.hpp"
 #include "geometry/symmetry.hpp"
 #include "sph/laplacian.hpp"
@@ -9,6 +14,16 @@
 
 namespace frostwall::run {
 
+double narrowest_gap(const project::ShaftSection& s) {
+  const auto pipes = geometry::pipe_positions(s.layout);
+  double gap = std::numeric_limits<double>::infinity();
+  for (std::size_t a = 0; a < pipes.size(); ++a)
+    for (std::size_t b = a + 1; b < pipes.size(); ++b)
+      gap = std::min(gap, std::hypot(pipes[a].x - pipes[b].x, pipes[a].y - pipes[b].y));
+  const double wall = s.pipe.model == project::PipeModel::disc ? s.pipe.diameter : 0.0;
+  return std::isfinite(gap) ? std::max(gap - wall, s.pipe.diameter) : std::numeric_limits<double>::infinity();
+}
+
 double default_spacing(const project::Project& p) {
   if (const auto* r = std::get_if<project::Rectangle>(&p.geometry))
     return std::min(std::max(r->width, r->height) / 200.0, std::min(r->width, r->height) / 4.0);
@@ -17,12 +32,28 @@ double default_spacing(const project::Project& p) {
   // single ring that puts the closure day within 0.5 % and the wall
   // thickness within 1 cm of converged, as 1.8 or 1.5 cm do, with fewer
   // particles (bench/README.md); the lattice's 2.5 cm is within about 2 cm.
+  // Closure is decided in the narrowest gap between two pipe walls: a
+  // fixed number of particles across it (25) keeps the closure day within
+  // about 1 % where pipes stand close (the four-hole inner ring's 0.38 m:
+  // 1.5 cm; at 2 cm it closed 0.03 d late). bench/README.md has the numbers.
   const auto& s = std::get<project::ShaftSection>(p.geometry);
-  if (p.numerics.placement == project::Placement::graded) return std::min(0.02, 0.3 * s.pipe.diameter);
-  return std::min(0.025, 0.4 * s.pipe.diameter);
+  const double gap = narrowest_gap(s);
+  if (p.numerics.placement == project::Placement::graded) return std::min({0.02, 0.3 * s.pipe.diameter, gap / 25.0});
+  return std::min({0.025, 0.4 * s.pipe.diameter, gap / 25.0});
+}
+
+geometry::Wedge symmetry_wedge(const project::ShaftSection& section) {
+  const auto pipes = geometry::pipe_positions(section.layout);
+  const double start = section.layout.pattern == project::Pattern::pipes
+                           ? std::atan2(pipes.front().y, pipes.front().x)
+                           : (section.layout.pattern == project::Pattern::rings
+                                  ? section.layout.rings.front().offset_deg
+                                  : section.layout.outer_ring.offset_deg) * M_PI / 180.0;
+  return geometry::find_symmetry_wedge(pipes, start);
 }
 
 Model build_model(const project::Project& p) {
+  check_capacity(p);
   Model m;
   const double spacing = p.numerics.spacing.value_or(default_spacing(p));
   m.h = p.numerics.smoothing_ratio * spacing;
@@ -39,13 +70,7 @@ Model build_model(const project::Project& p) {
     const auto& section = std::get<project::ShaftSection>(p.geometry);
     if (const auto problems = geometry::layout_problems(section); !problems.empty())
       throw project::ProjectError(problems);
-    const auto pipes = geometry::pipe_positions(section.layout);
-    const double start = section.layout.pattern == project::Pattern::pipes
-                             ? std::atan2(pipes.front().y, pipes.front().x)
-                             : (section.layout.pattern == project::Pattern::rings
-                                    ? section.layout.rings.front().offset_deg
-                                    : section.layout.outer_ring.offset_deg) * M_PI / 180.0;
-    const auto wedge = geometry::find_symmetry_wedge(pipes, start);
+    const auto wedge = symmetry_wedge(section);
     auto scene = std::make_unique<geometry::ShaftScene>(
         graded ? geometry::build_graded_shaft_section(
                      section, p.domain, wedge, geometry::shaft_size_field(section, wedge, spacing, p.numerics.grading),

@@ -37,9 +37,18 @@ struct Model {
 
 // The spacing used when numerics.spacing is not given.
 double default_spacing(const project::Project& p);
+// The narrowest gap between two pipe walls of a layout, m (at least a pipe
+// diameter: pipes that touch or overlap are the loader's concern).
+double narrowest_gap(const project::ShaftSection& s);
+
+// The smallest mirror-symmetric wedge of a shaft section's pipe layout, its
+// first side through the layout's first pipe (OA). Layout problems must be
+// checked first (geometry::layout_problems).
+geometry::Wedge symmetry_wedge(const project::ShaftSection& section);
 
 // Throws project::ProjectError when the project asks for what this version
-// cannot run (checked before any output is written).
+// cannot run or the machine cannot hold (checked before any output is
+// written and before any particle is placed).
 Model build_model(const project::Project& p);
 
 }  // namespace frostwall::run

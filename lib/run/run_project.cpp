@@ -7,7 +7,7 @@
 #include <nlohmann/json.hpp>
 #include <omp.h>
 
-#include "post/closure.hpp"
+#include "run/closure_tracker.hpp"
 #include "run/model.hpp"
 #include "thermal/backward_euler.hpp"
 #include "thermal/super_time_stepping.hpp"
@@ -110,15 +110,6 @@ void run_project(const Project& p, const RunOptions& options) {
   const double h = built.h;
   const double unit = p.time.unit_seconds();
 
-  // Closure of a shaft section, checked 2000 times over the run (the step
-  // is far finer than needed for it).
-  std::optional<post::ClosureDetector> closure;
-  std::optional<post::ClosureWatch> closure_watch;
-  if (built.shaft) {
-    closure.emplace(particles, built.shaft->far_field_radius);
-    closure_watch.emplace(*closure);
-  }
-
   // ---- output
   const fs::path out = p.output.directory;
   fs::create_directories(out);
@@ -135,8 +126,13 @@ void run_project(const Project& p, const RunOptions& options) {
   // No RKL2 step longer than that interval: on the single ring, longer late
   // steps (a front particle then freezes within one step) cost 0.5-1 cm of
   // wall thickness.
-  if (auto* rkl2 = dynamic_cast<thermal::SuperTimeStepping*>(built.integrator.get()))
-    rkl2->limit_step(p.time.end / time_series_points);
+  const double longest_step = p.time.end / time_series_points;
+  if (auto* rkl2 = dynamic_cast<thermal::SuperTimeStepping*>(built.integrator.get())) rkl2->limit_step(longest_step);
+  // Closure of a shaft section (a fully frozen path) and the day the frozen
+  // columns touch: checked 2000 times over the run while the gap is open,
+  // at every step once it freezes.
+  std::optional<ClosureTracker> closure;
+  if (built.shaft) closure.emplace(built, p.time.end, longest_step);
   const std::vector<double> times = built.shaft ? sample_times(p.time, 0) : series;
   std::unique_ptr<ShaftResults> results;
   if (built.shaft) results = std::make_unique<ShaftResults>(p, built);
@@ -148,7 +144,7 @@ void run_project(const Project& p, const RunOptions& options) {
   double t_before = 0.0;
   std::vector<double> f_before, T_before, f_at, T_at;
   observers.after_step = [&](const thermal::ThermalModel& m, double t) {
-    if (closure_watch) closure_watch->observe(t, m.liquid_fraction(), p.time.end / 2000.0);
+    if (closure) closure->after_step(m, t);
     if (!results) return;
     const auto& f = m.liquid_fraction();
     const auto& T = m.temperature();
@@ -203,8 +199,10 @@ void run_project(const Project& p, const RunOptions& options) {
   // ordered_json: the keys stay in the contract's order.
   nlohmann::ordered_json summary = {{"project", p.name}, {"frostwall_version", FROSTWALL_VERSION}};
   if (built.shaft) {
-    const auto closure_time = closure_watch->closure_time();
+    const auto closure_time = closure->closure_time();
+    const auto contact_time = closure->contact_time();
     summary["closure_time_days"] = closure_time ? nlohmann::json(*closure_time / 86400.0) : nlohmann::json(nullptr);
+    summary["front_contact_days"] = contact_time ? nlohmann::json(*contact_time / 86400.0) : nlohmann::json(nullptr);
     const nlohmann::json parts = results->finish(out);
     for (const char* key : {"wall", "design", "monitoring", "interface"})
       if (parts.contains(key)) summary[key] = parts[key];

@@ -1,6 +1,8 @@
 #include "run/shaft_results.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <map>
 #include <fmt/core.h>
 #include <numbers>
 
@@ -37,6 +39,16 @@ InterfacePlanes interface_planes(const std::vector<geometry::Pipe2>& pipes) {
     gap = std::min(gap, a);
   }
   p.OB = p.OA + 0.5 * gap;
+  std::map<int, std::pair<double, int>> rings;  // ring -> (sum of radii, pipes)
+  for (const auto& q : pipes)
+    if (q.ring >= 0) {
+      rings[q.ring].first += std::hypot(q.x, q.y);
+      ++rings[q.ring].second;
+    }
+  p.ring_radii.push_back(p.ring_radius);
+  for (const auto& [ring, sum] : rings)
+    if (ring != first.ring) p.ring_radii.push_back(sum.first / sum.second);
+  std::sort(p.ring_radii.begin(), p.ring_radii.end());
   return p;
 }
 
@@ -48,9 +60,9 @@ ShaftResults::ShaftResults(const project::Project& p, const Model& m)
   // with just OA and OB gives their extents and OB's mean temperature.
   post::RayFan fan{shaft.wedge.start_angle, shaft.wedge.angle,
                    post::RayFan::rays_needed(shaft.wedge.angle, planes_.ring_radius, dx), 0.0, R, 0.5 * dx};
-  fan_gauge_ = std::make_unique<post::WallGauge>(sampler_, fan, planes_.ring_radius);
+  fan_gauge_ = std::make_unique<post::WallGauge>(sampler_, fan, planes_.ring_radii);
   planes_gauge_ = std::make_unique<post::WallGauge>(
-      sampler_, post::RayFan{planes_.OA, planes_.OB - planes_.OA, 2, 0.0, R, 0.5 * dx}, planes_.ring_radius);
+      sampler_, post::RayFan{planes_.OA, planes_.OB - planes_.OA, 2, 0.0, R, 0.5 * dx}, planes_.ring_radii);
 
   // Profiles every 0.05 m along OA and OB (the paper's Fig. 5).
   std::vector<sph::Vec<2>> on_OA, on_OB;
@@ -59,6 +71,15 @@ ShaftResults::ShaftResults(const project::Project& p, const Model& m)
     on_OA.emplace_back(r * std::cos(planes_.OA), r * std::sin(planes_.OA));
     on_OB.emplace_back(r * std::cos(planes_.OB), r * std::sin(planes_.OB));
   }
+  auto in_pipe = [&](const std::vector<sph::Vec<2>>& points) {
+    std::vector<char> inside(points.size(), 0);
+    if (std::get<project::ShaftSection>(p.geometry).pipe.model == project::PipeModel::point) return inside;
+    for (std::size_t k = 0; k < points.size(); ++k)
+      for (const auto& q : shaft.pipes) inside[k] |= (points[k] - sph::Vec<2>(q.x, q.y)).norm() < shaft.pipe_radius;
+    return inside;
+  };
+  in_pipe_OA_ = in_pipe(on_OA);
+  in_pipe_OB_ = in_pipe(on_OB);
   profile_OA_ = std::make_unique<post::PointProbe>(sampler_, on_OA);
   profile_OB_ = std::make_unique<post::PointProbe>(sampler_, on_OB);
 
@@ -110,8 +131,15 @@ void ShaftResults::sample(double t, const std::vector<double>& liquid_fraction, 
 void ShaftResults::snapshot(double t, const thermal::ThermalModel& model, const std::filesystem::path& out,
                             const std::string& stem) {
   snapshots_.push_back(read(t, model.liquid_fraction(), model.temperature()));
-  profiles_OA_.push_back((*profile_OA_)(model.temperature()));
-  profiles_OB_.push_back((*profile_OB_)(model.temperature()));
+  const double pipe_T = std::get<project::ShaftSection>(project_.geometry).pipe.temperature.at(t);
+  auto profile = [&](const post::PointProbe& probe, const std::vector<char>& in_pipe) {
+    auto T = probe(model.temperature());
+    for (std::size_t k = 0; k < T.size(); ++k)
+      if (in_pipe[k]) T[k] = pipe_T;
+    return T;
+  };
+  profiles_OA_.push_back(profile(*profile_OA_, in_pipe_OA_));
+  profiles_OB_.push_back(profile(*profile_OB_, in_pipe_OB_));
 
   // The 0.5 liquid-fraction isoline, kept inside the wedge. Triangles
   // longer than three spacings (holes, hull) carry no front; on a graded

@@ -22,10 +22,13 @@
 namespace frostwall::run {
 
 // OA, the ray through the first pipe of the outer ring, and OB, halfway to
-// the next pipe of that ring counter-clockwise; the ring radius of OA's pipe.
+// the next pipe of that ring counter-clockwise; the ring radius of OA's pipe
+// and the radii of every ring (mean radius of its pipes; measured pipes,
+// which form no ring, count as OA's).
 struct InterfacePlanes {
-  double OA = 0.0, OB = 0.0;  // rad
-  double ring_radius = 0.0;   // m
+  double OA = 0.0, OB = 0.0;          // rad
+  double ring_radius = 0.0;           // m
+  std::vector<double> ring_radii;     // m, ascending
 };
 InterfacePlanes interface_planes(const std::vector<geometry::Pipe2>& pipes);
 
@@ -58,6 +61,9 @@ class ShaftResults {
   std::unique_ptr<post::WallGauge> fan_gauge_, planes_gauge_;
   std::unique_ptr<post::PointProbe> profile_OA_, profile_OB_, sensors_;
   std::vector<double> profile_radii_;
+  // Profile points inside a pipe disc (OA passes through its pipe): they
+  // read the pipe's temperature, not the layers held beyond its wall.
+  std::vector<char> in_pipe_OA_, in_pipe_OB_;
   std::vector<Reading> series_, snapshots_;
   std::vector<std::vector<double>> profiles_OA_, profiles_OB_;  // per snapshot
   std::vector<std::vector<std::pair<double, double>>> sensor_readings_;

@@ -49,6 +49,11 @@ class PhaseChangeLaw {
   // 0 inside an isothermal change, so an implicit step knows T is pinned.
   double temperature_slope(double H, double direction) const;
   double latent_heat_volumetric() const { return rho_L_; }
+  // H / H_l unclamped: the share of its latent heat a particle still holds
+  // (1 at the start of freezing, 0 fully frozen, below 0 colder). Closure
+  // follows it through 0 (post/closure.hpp). Without latent heat, H over
+  // the heat of 1 K of frozen ground: 0 at the freezing point all the same.
+  double latent_left(double H) const { return H_l_ > 0.0 ? H * inv_H_l_ : H * inv_rho_cs_; }
 
  private:
   double Tf_, Ts_, range_;

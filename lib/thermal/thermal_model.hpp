@@ -79,6 +79,12 @@ class ThermalModel {
   void update_free(NewEnthalpy&& new_enthalpy);
   // Heat stored in the free particles, sum V_i H_i, J (per metre in 2-D).
   double stored_heat() const;
+  // H_i / H_latent of every free particle, unclamped (PhaseChangeLaw::
+  // latent_left): what closure follows through 0.
+  void latent_left(std::vector<double>& out) const {
+    out.resize(free_count());
+    for (std::size_t i = 0; i < out.size(); ++i) out[i] = law_.latent_left(H_[i]);
+  }
 
   const std::vector<double>& enthalpy() const { return H_; }
   const std::vector<double>& temperature() const { return T_; }

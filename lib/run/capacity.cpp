@@ -1,0 +1,146 @@
+#include "run/capacity.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fmt/core.h>
+#include <unistd.h>
+#include <vector>
+
+#include "geometry/layout.hpp"
+#include "geometry/rectangle.hpp"
+#include "geometry/shaft_section.hpp"
+#include "run/model.hpp"
+
+namespace frostwall::run {
+
+namespace {
+
+// Particles per unit area at spacing s: a CVT settles into a hexagonal
+// packing (s between neighbours), sqrt(3)/2 s^2 per particle.
+double hexagonal_density(double s) { return 2.0 / (std::sqrt(3.0) * s * s); }
+
+// Free particles of a graded wedge: the density integrated by the midpoint
+// rule on a polar grid. The radial grid is refined between breakpoints (the
+// wall band and the cones around it), so a band of a few metres is seen
+// even when the domain is a million metres across.
+double graded_wedge_particles(const geometry::SizeField& size, const geometry::Wedge& wedge, double R,
+                              std::vector<double> breaks) {
+  breaks.push_back(0.0);
+  breaks.push_back(R);
+  for (auto& b : breaks) b = std::clamp(b, 0.0, R);
+  std::sort(breaks.begin(), breaks.end());
+  const int per_interval = 48, angles = 96;
+  double count = 0.0;
+  for (std::size_t k = 0; k + 1 < breaks.size(); ++k) {
+    const double a = breaks[k], b = breaks[k + 1];
+    if (!(b > a)) continue;
+    const double dr = (b - a) / per_interval, dtheta = wedge.angle / angles;
+    for (int i = 0; i < per_interval; ++i) {
+      const double r = a + (i + 0.5) * dr;
+      for (int j = 0; j < angles; ++j) {
+        const double theta = wedge.start_angle + (j + 0.5) * dtheta;
+        count += hexagonal_density(size(sph::Vec<2>(r * std::cos(theta), r * std::sin(theta)))) * r * dr * dtheta;
+      }
+    }
+  }
+  return count;
+}
+
+double shaft_particles(const project::Project& p, double spacing, double R) {
+  auto section = std::get<project::ShaftSection>(p.geometry);
+  section.outer_radius = R;
+  const auto wedge = symmetry_wedge(section);
+  const double copies = p.numerics.use_symmetry ? 1.0 : 2.0 * M_PI / wedge.angle;
+  if (p.numerics.placement == project::Placement::lattice) return copies * 0.5 * wedge.angle * R * R / (spacing * spacing);
+  const auto& g = p.numerics.grading;
+  const auto size = geometry::shaft_size_field(section, wedge, spacing, g);
+  double r_in = R, r_out = 0.0;
+  for (const auto& q : geometry::pipe_positions(section.layout)) {
+    r_in = std::min(r_in, std::hypot(q.x, q.y));
+    r_out = std::max(r_out, std::hypot(q.x, q.y));
+  }
+  const double w = g.band_width.value_or(2.0), cone = (g.coarsening - 1.0) * spacing / (g.growth - 1.0);
+  return copies * graded_wedge_particles(size, wedge, R,
+                                         {r_in - w - cone, r_in - w, r_in, r_out, r_out + w, r_out + w + cone});
+}
+
+double rectangle_particles(const project::Project& p, const project::Rectangle& rect, double spacing) {
+  if (p.numerics.placement == project::Placement::lattice) return rect.width * rect.height / (spacing * spacing);
+  const auto size = geometry::rectangle_size_field(rect, spacing, p.numerics.grading);
+  const int n = 256;
+  double count = 0.0;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j)
+      count += hexagonal_density(size(sph::Vec<2>((i + 0.5) * rect.width / n, (j + 0.5) * rect.height / n)));
+  return count * rect.width * rect.height / (n * n);
+}
+
+double particles(const project::Project& p, double spacing, double R) {
+  if (const auto* rect = std::get_if<project::Rectangle>(&p.geometry)) return rectangle_particles(p, *rect, spacing);
+  return shaft_particles(p, spacing, R);
+}
+
+// A round number at or above x (1, 2 or 5 times a power of ten).
+double round_up(double x) {
+  const double decade = std::pow(10.0, std::floor(std::log10(x)));
+  for (double m : {1.0, 2.0, 5.0, 10.0})
+    if (m * decade >= x * (1.0 - 1e-12)) return m * decade;
+  return 10.0 * decade;
+}
+double round_down(double x) {
+  const double decade = std::pow(10.0, std::floor(std::log10(x)));
+  for (double m : {5.0, 2.0, 1.0})
+    if (m * decade <= x * (1.0 + 1e-12)) return m * decade;
+  return decade;
+}
+
+}  // namespace
+
+double default_particle_limit() {
+  const double memory = static_cast<double>(sysconf(_SC_PHYS_PAGES)) * static_cast<double>(sysconf(_SC_PAGE_SIZE));
+  return memory > 0.0 ? 0.5 * memory / bytes_per_particle : 1e6;
+}
+
+CapacityEstimate estimate_capacity(const project::Project& p) {
+  CapacityEstimate e;
+  e.limit = p.numerics.max_particles ? static_cast<double>(*p.numerics.max_particles) : default_particle_limit();
+  const double spacing = p.numerics.spacing.value_or(default_spacing(p));
+  const double R = std::holds_alternative<project::ShaftSection>(p.geometry)
+                       ? std::get<project::ShaftSection>(p.geometry).outer_radius
+                       : 0.0;
+  e.particles = particles(p, spacing, R);
+  return e;
+}
+
+void check_capacity(const project::Project& p) {
+  if (const auto* section = std::get_if<project::ShaftSection>(&p.geometry))
+    if (const auto problems = geometry::layout_problems(*section); !problems.empty())
+      throw project::ProjectError(problems);
+  const CapacityEstimate e = estimate_capacity(p);
+  if (e.fits()) return;
+  const double spacing = p.numerics.spacing.value_or(default_spacing(p));
+  const std::string needs = fmt::format("needs about {:.1e} particles (limit {:.1e}", e.particles, e.limit);
+  const std::string source = p.numerics.max_particles ? ", numerics.max_particles)" : ", from this machine's memory)";
+  // The count goes as 1 / spacing^2: the spacing that fits, rounded up.
+  const double fitting_spacing = round_up(spacing * std::sqrt(e.particles / e.limit) * 1.05);
+  if (const auto* section = std::get_if<project::ShaftSection>(&p.geometry)) {
+    // Blame the outer radius when the same spacing fits in a domain three
+    // times the pipe rings' radius (the usual far field), else the spacing.
+    double r_out = 0.0;
+    for (const auto& q : geometry::pipe_positions(section->layout)) r_out = std::max(r_out, std::hypot(q.x, q.y));
+    const double usual = std::min(section->outer_radius, 3.0 * r_out);
+    if (particles(p, spacing, usual) <= e.limit) {
+      double lo = usual, hi = section->outer_radius;  // fits at lo, not at hi
+      for (int k = 0; k < 40 && hi > 1.01 * lo; ++k) {
+        const double mid = std::sqrt(lo * hi);
+        (particles(p, spacing, mid) <= e.limit ? lo : hi) = mid;
+      }
+      throw project::ProjectError({fmt::format("domain.outer_radius: {:g} m {}{}; use an outer radius of {:g} m or less",
+                                               section->outer_radius, needs, source, round_down(lo))});
+    }
+  }
+  throw project::ProjectError({fmt::format("numerics.spacing: {:g} m {}{}; use a spacing of {:g} m or more", spacing,
+                                           needs, source, fitting_spacing)});
+}
+
+}  // namespace frostwall::run
