@@ -72,12 +72,15 @@ inline project::Project shipped_project(const std::string& name, const nlohmann:
 struct ClosureDays {
   std::optional<double> closure, contact;
 };
-inline ClosureDays closure_days(run::Model& m, double t_end) {
+// snapshots: where the run lands exactly (a shipped project's snapshot
+// days cut its steps as in `frostwall run`); t_end is always one.
+inline ClosureDays closure_days(run::Model& m, double t_end, std::vector<double> snapshots = {}) {
+  if (snapshots.empty() || snapshots.back() < t_end) snapshots.push_back(t_end);
   run::ClosureTracker tracker(m, t_end, t_end / run::time_series_points);
   thermal::TimeLoopObservers obs;
   obs.after_step = [&](const thermal::ThermalModel& model, double t) { tracker.after_step(model, t); };
   obs.finished = [&] { return tracker.closure_time().has_value(); };
-  thermal::run_time_loop(*m.model, *m.integrator, t_end, {t_end}, obs);
+  thermal::run_time_loop(*m.model, *m.integrator, t_end, snapshots, obs);
   auto days = [](const std::optional<double>& t) { return t ? std::optional(*t / 86400.0) : std::nullopt; };
   return {days(tracker.closure_time()), days(tracker.contact_time())};
 }

@@ -7,6 +7,7 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <nlohmann/json.hpp>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -37,9 +38,12 @@ struct Run {
   std::vector<std::string> stderr_lines;
 };
 
-// Runs `frostwall run <file>` with `dir` as working directory.
+// Runs `frostwall run <file>` with `dir` as working directory, stopped
+// after 10 s: bad input must be refused before any work (about 0.02 s
+// each here), so a run that places particles or steps in time instead
+// fails the test rather than hanging it (timeout's status is 124).
 Run run_frostwall(const fs::path& dir, const std::string& file) {
-  const std::string command = "cd '" + dir.string() + "' && '" FROSTWALL_EXE "' run '" + file +
+  const std::string command = "cd '" + dir.string() + "' && timeout 10 '" FROSTWALL_EXE "' run '" + file +
                               "' >stdout.txt 2>stderr.txt";
   const int status = std::system(command.c_str());
   Run run;
@@ -78,7 +82,27 @@ TEST_CASE("bad project files stop the run with status 2 and write nothing", "[cl
     CHECK_FALSE(fs::exists(dir.path / "out" / ("bad_" + name)));
     CHECK_FALSE(fs::exists(dir.path / "out"));
   }
-  CHECK(cases >= 23);
+  CHECK(cases >= 27);
+}
+
+// Without numerics.max_particles the limit comes from this machine's
+// memory (run/capacity.hpp): a micrometre spacing is far beyond any.
+TEST_CASE("a project the machine cannot hold is refused before any work", "[cli]") {
+  ScratchDir dir;
+  {
+    std::ifstream in(bad_dir / "spacing_too_fine.json");
+    auto project = nlohmann::json::parse(in);
+    REQUIRE(project["numerics"].erase("max_particles") == 1);
+    std::ofstream(dir.path / "fine.json") << project.dump(2);
+  }
+  const Run run = run_frostwall(dir.path, "fine.json");
+  CHECK(run.exit_status == 2);
+  REQUIRE(run.stderr_lines.size() == 1);
+  const std::string& line = run.stderr_lines.front();
+  INFO(line);
+  CHECK(line.starts_with("numerics.spacing: 0.000001 m needs about 2.6e12 particles (limit "));
+  CHECK(line.find(", from this machine's memory); use a spacing of ") != std::string::npos);
+  CHECK_FALSE(fs::exists(dir.path / "out"));
 }
 
 TEST_CASE("a project file that does not exist stops the run with status 2", "[cli]") {

@@ -1,6 +1,8 @@
 // Story: closure is the frozen ground cutting the unfrozen ground around the
 // shaft axis off from the far field. The detector reduces that to one
-// number, the bottleneck liquid fraction b (closed when b <= 0.5). It is
+// number, the bottleneck b of a per-particle field (liquid fraction, or the
+// run's unclamped H / H_latent): touching when b <= 0.5, closed when
+// b <= 0 (fully frozen). It is
 // checked on hand-built lattices (positions only, no solver) with liquid
 // fractions set by hand, so every expected b is an exact value of the field:
 //  - full disc: a closed frozen ring (b = 0); the ring with a one-particle
@@ -12,16 +14,18 @@
 //    r = 5 closes, a band reaching one side only does not; fixed particles
 //    (index >= n_free) take no part;
 //  - the axis particle (nearest the origin) frozen: closed;
-//  - ClosureWatch: the closure time interpolated between observations is
-//    exact for a gap freezing linearly in time and within the chord error
-//    for a quadratic one; while b = 1 the detector is skipped between
-//    checks min_interval apart.
+//  - ClosureWatch: contact (b = 0.5) and closure (b = 0) interpolated
+//    between observations are exact for a gap freezing linearly in time
+//    (values below 0 included) and within the chord error for a quadratic
+//    one; while b >= 1 the detector is skipped between checks min_interval
+//    apart; the step limit while the gap freezes follows b's last rate.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <functional>
+#include <limits>
 #include <numbers>
 #include <vector>
 
@@ -153,12 +157,13 @@ TEST_CASE("closure: a frozen ring around the axis is closed, b = 0", "[closure]"
   CHECK(detector.bottleneck(frozen_beyond(7.6)) == 0.0);
 
   // No particles at all on 4.5 < r < 5 (a hole wider than a link): nothing
-  // joins the axis to the far field at any level, reported as b = 0.
+  // joins the axis to the far field at any level, reported as b = -inf
+  // (closed below every level, also below 0).
   std::vector<Vec2> holed;
   for (const auto& x : disc.p)
     if (x.norm() <= 4.5 || x.norm() >= 5.0) holed.push_back(x);
   const ClosureDetector cut(holed, holed.size(), Disc::d, Disc::R);
-  CHECK(cut.bottleneck(std::vector<double>(holed.size(), 1.0)) == 0.0);
+  CHECK(cut.bottleneck(std::vector<double>(holed.size(), 1.0)) == -std::numeric_limits<double>::infinity());
 }
 
 TEST_CASE("closure: a one-particle gap through the ring sets b to its liquid fraction", "[closure]") {
@@ -332,20 +337,27 @@ TEST_CASE("closure: wedge, band across the apex, side to side, one side only", "
   CHECK(detector.bottleneck(f) == 0.8);
 }
 
-TEST_CASE("closure: ClosureWatch interpolates the crossing of b = 0.5", "[closure]") {
+TEST_CASE("closure: ClosureWatch interpolates contact (b = 0.5) and closure (b = 0)", "[closure]") {
+  // The watch is fed g = H / H_latent, unclamped: 1 at the start of
+  // freezing, 0 fully frozen, negative once colder. The gap's g falls and
+  // crosses 0.5 (the columns touch) and then 0 (closure).
   const Disc disc;
   const ClosureDetector detector(disc.p, disc.size(), Disc::d, Disc::R);
   const auto gap = disc.column_gap();
+  // The rest of the ring well below 0 (fully frozen and colder), so the
+  // gap alone decides both levels.
   auto field = [&](double level) {
     auto f = disc.ring();
+    for (auto& v : f)
+      if (v == 0.0) v = -1.0;
     for (std::size_t k : gap) f[k] = level;
     return f;
   };
   const double T0 = 3.7;
 
-  SECTION("gap freezing linearly in time: exact") {
-    // f(t) = 1 - t / T0 crosses 0.5 at T0 / 2 = 1.85; dt = 0.07 does not
-    // divide it (26.43 steps).
+  SECTION("gap freezing linearly in time: both exact") {
+    // g(t) = 1 - t / T0 crosses 0.5 at T0 / 2 = 1.85 and 0 at T0 = 3.7;
+    // dt = 0.07 divides neither (26.43 and 52.86 steps).
     const double dt = 0.07;
     ClosureWatch watch(detector);
     long k = 0;
@@ -353,23 +365,26 @@ TEST_CASE("closure: ClosureWatch interpolates the crossing of b = 0.5", "[closur
       const double t = k * dt;
       watch.observe(t, field(1.0 - t / T0), 0.0);
       if (!watch.closure_time()) CHECK(watch.last_open_time() == t);
+      CHECK(watch.contact_time().has_value() == (k >= 27));  // touching first at 27 dt = 1.89
     }
     REQUIRE(watch.closure_time());
-    CHECK(k - 1 == 27);  // closed first at 27 dt = 1.89
-    CHECK(watch.last_open_time() == 26 * dt);
-    CHECK(*watch.closure_time() == Approx(0.5 * T0).epsilon(1e-9));
+    CHECK(k - 1 == 53);  // closed first at 53 dt = 3.71, g = -0.0027 there
+    CHECK(watch.last_open_time() == 52 * dt);
+    CHECK(*watch.contact_time() == Approx(0.5 * T0).epsilon(1e-9));
+    CHECK(*watch.closure_time() == Approx(T0).epsilon(1e-9));
     // Once closed it stays at that time.
     watch.observe(5.0, field(1.0), 0.0);
-    CHECK(*watch.closure_time() == Approx(0.5 * T0).epsilon(1e-9));
+    CHECK(*watch.closure_time() == Approx(T0).epsilon(1e-9));
+    CHECK(*watch.contact_time() == Approx(0.5 * T0).epsilon(1e-9));
   }
 
   SECTION("gap freezing quadratically: the chord's error, far below dt") {
-    // f(t) = 1 - (t / T0)^2 crosses 0.5 at t* = T0 / sqrt 2. The chord
-    // between the observations a < t* <= b crosses at
-    // (T0^2 / 2 + a b) / (a + b) = t* - (t* - a)(b - t*) / (a + b), before t*
-    // (f is concave) by at most dt^2 / (4 (a + b)).
-    const double dt = 0.01;
-    const double t_star = T0 / std::numbers::sqrt2;
+    // g(t) = 1 - (t / T0)^2 crosses 0 at t* = T0. The chord between the
+    // observations a < t* <= b crosses at (T0^2 + a b) / (a + b) =
+    // t* - (t* - a)(b - t*) / (a + b), before t* (g is concave) by at
+    // most dt^2 / (4 (a + b)).
+    const double dt = 0.013;
+    const double t_star = T0;
     ClosureWatch watch(detector);
     long k = 0;
     for (; k < 1000 && !watch.closure_time(); ++k) {
@@ -378,35 +393,61 @@ TEST_CASE("closure: ClosureWatch interpolates the crossing of b = 0.5", "[closur
     }
     REQUIRE(watch.closure_time());
     const double b = (k - 1) * dt, a = (k - 2) * dt;
-    CHECK(k - 2 == 261);  // t* = 2.6163
+    CHECK(k - 2 == 284);  // t* = 3.7 = 284.6 dt
     CHECK(watch.last_open_time() == a);
     const double tc = *watch.closure_time();
-    CHECK(tc == Approx((0.5 * T0 * T0 + a * b) / (a + b)).epsilon(1e-12));
+    CHECK(tc == Approx((T0 * T0 + a * b) / (a + b)).epsilon(1e-12));
     CHECK(tc <= t_star);
     CHECK(t_star - tc <= dt * dt / (4.0 * (a + b)) * (1.0 + 1e-9));
     CHECK(t_star - tc < 0.1 * dt);
   }
 
+  SECTION("contact and closure within one observation: each interpolated on the same chord") {
+    // g from 0.8 at t = 1 to -0.4 at t = 2: 0.5 at 1.25, 0 at 1 + 0.8 / 1.2.
+    ClosureWatch watch(detector);
+    watch.observe(0.0, field(1.0), 0.0);
+    watch.observe(1.0, field(0.8), 0.0);
+    CHECK_FALSE(watch.contact_time());
+    watch.observe(2.0, field(-0.4), 0.0);
+    REQUIRE(watch.contact_time());
+    REQUIRE(watch.closure_time());
+    CHECK(*watch.contact_time() == Approx(1.25).epsilon(1e-12));
+    CHECK(*watch.closure_time() == Approx(1.0 + 0.8 / 1.2).epsilon(1e-12));
+  }
+
+  SECTION("time_to_fall: the step that lowers b by a given share at its last rate") {
+    ClosureWatch watch(detector);
+    watch.observe(0.0, field(1.0), 0.0);
+    CHECK_FALSE(watch.time_to_fall(0.05));  // wide open: no limit
+    watch.observe(1.0, field(0.9), 0.0);
+    watch.observe(1.5, field(0.8), 0.0);    // falling 0.2 per unit time
+    REQUIRE(watch.time_to_fall(0.05));
+    CHECK(*watch.time_to_fall(0.05) == Approx(0.25).epsilon(1e-9));
+    watch.observe(2.0, field(-0.1), 0.0);   // closed: no limit any more
+    CHECK_FALSE(watch.time_to_fall(0.05));
+  }
+
   SECTION("wide open: checked only every min_interval, then at every call") {
-    // Gap at f = 1 until t = 1, then f = 1 - (t - 1) / 2.3: closes at 2.15.
+    // Gap at g = 1 until t = 1, then g = 1 - (t - 1) / 2.35: touches at
+    // 2.175, closes at 3.35.
     // With min_interval = 0.25 and calls every 0.1 the open gap is checked
     // at 0, 0.3, 0.6, 0.9 (and 1.2, where it is found freezing); from then
     // on at every call, so the linear fall is interpolated exactly (the
-    // f = 0.95 at 1.1 goes unseen: b was 1 at the last check).
+    // g = 0.95 at 1.1 goes unseen: b was 1 at the last check).
     const double dt = 0.1;
     ClosureWatch watch(detector);
     const std::vector<double> last_open = {0, 0, 0, 3, 3, 3, 6, 6, 6, 9, 9, 9, 12, 13, 14, 15, 16, 17, 18, 19, 20, 21};
     long k = 0;
-    for (; k < 40 && !watch.closure_time(); ++k) {
+    for (; k < 60 && !watch.closure_time(); ++k) {
       const double t = k * dt;
-      watch.observe(t, field(t <= 1.0 ? 1.0 : 1.0 - (t - 1.0) / 2.3), 0.25);
-      if (!watch.closure_time()) {
-        REQUIRE(k < static_cast<long>(last_open.size()));
+      CHECK(watch.due(t) == (k < 12 ? k % 3 == 0 : true));
+      watch.observe(t, field(t <= 1.0 ? 1.0 : 1.0 - (t - 1.0) / 2.35), 0.25);
+      if (!watch.closure_time() && k < static_cast<long>(last_open.size()))
         CHECK(watch.last_open_time() == last_open[k] * dt);
-      }
     }
     REQUIRE(watch.closure_time());
-    CHECK(k - 1 == 22);  // closed first at 2.2
-    CHECK(*watch.closure_time() == Approx(2.15).epsilon(1e-9));
+    CHECK(k - 1 == 34);  // closed first at 3.4
+    CHECK(*watch.contact_time() == Approx(2.175).epsilon(1e-9));
+    CHECK(*watch.closure_time() == Approx(3.35).epsilon(1e-9));
   }
 }

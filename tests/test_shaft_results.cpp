@@ -6,7 +6,10 @@
 // the 26 pipes; after closure the wall has two closed fronts, inner and
 // outer. Quantities are checked against the geometry they must obey.
 #include <catch2/catch.hpp>
+#include <cmath>
 #include <fstream>
+#include <map>
+#include <sstream>
 #include <vtkCellArray.h>
 #include <vtkNew.h>
 #include <vtkPolyData.h>
@@ -66,6 +69,10 @@ TEST_CASE("A shaft run writes the summary of the contract, CSV files and front c
   const double closure = s["closure_time_days"];
   CHECK(closure > 10.0);
   CHECK(closure < 20.0);
+  // The columns touch (half frozen) before a fully frozen path joins them.
+  REQUIRE(s["front_contact_days"].is_number());
+  CHECK(s["front_contact_days"] > 5.0);
+  CHECK(s["front_contact_days"] < closure);
   REQUIRE(s["wall"].size() == 2);
   for (const auto& w : s["wall"]) {
     CHECK(w["day"].is_number());
@@ -128,6 +135,35 @@ TEST_CASE("A shaft run writes the summary of the contract, CSV files and front c
   CHECK(first_line(out / "profiles_OB.csv") == "r_m,T_day_10_C,T_day_20_C");
   CHECK(first_line(out / "monitoring.csv") == "day,C1_C,C2_C");
 
+  // ---- profiles: inside OA's pipe (r = 5 +- 0.0635 m) the pipe's -20 C,
+  // not the layers held beyond its wall; the axis has a value (this lattice
+  // wedge's narrow apex holds no particle within a support of it), the
+  // warm ground's, close to that of the next point out.
+  {
+    std::ifstream csv(out / "profiles_OA.csv");
+    std::string line;
+    std::getline(csv, line);
+    std::map<double, std::vector<std::string>> rows;
+    while (std::getline(csv, line)) {
+      std::vector<std::string> cells;
+      std::stringstream cell(line);
+      for (std::string c; std::getline(cell, c, ',');) cells.push_back(c);
+      rows[std::round(std::stod(cells[0]) * 100.0) / 100.0] = cells;
+    }
+    for (double r : {4.95, 5.0, 5.05}) {
+      REQUIRE(rows.count(r));
+      for (std::size_t k = 1; k <= 2; ++k) CHECK(std::stod(rows[r][k]) == -20.0);
+    }
+    REQUIRE(rows[0.0].size() == 3);
+    for (std::size_t k = 1; k <= 2; ++k) {
+      REQUIRE_FALSE(rows[0.0][k].empty());
+      CHECK(std::stod(rows[0.0][k]) > 10.0);
+      CHECK(std::abs(std::stod(rows[0.0][k]) - std::stod(rows[0.25][k])) < 0.05);
+    }
+    // Just outside the pipe wall the ground is above the pipe's temperature.
+    CHECK(std::stod(rows[5.1][2]) > -20.0);
+  }
+
   // ---- front curves of the full ring
   const auto [closed10, open10] = closed_and_open(out / std::string(s["interface"][0]["full_ring_file"]));
   const auto [closed20, open20] = closed_and_open(out / std::string(s["interface"][1]["full_ring_file"]));
@@ -137,4 +173,50 @@ TEST_CASE("A shaft run writes the summary of the contract, CSV files and front c
   CHECK(open10 == 0);
   CHECK(closed20 == 2);   // the wall's inner and outer face
   CHECK(open20 == 0);
+}
+
+// A double ring closes when its inner ring's columns join (the four-hole:
+// about a day in), long before the frozen stretch of the outer ring reaches
+// the inner one. The thinnest wall is the longest frozen stretch on a ray
+// that contains a ring of pipes, so it is positive from closure on (the
+// inner ring's stretch alone until both merge), never 0 while the shaft is
+// already cut off from the far field.
+TEST_CASE("A double ring's thinnest wall is positive from closure on", "[results]") {
+  test::TempDir dir("frostwall-four-hole");
+  auto p = test::shipped_project(
+      "four_hole_sand.json",
+      {{"numerics", {{"spacing", 0.03}}},
+       {"time", {{"end", 4}, {"unit", "d"}, {"snapshots", {1, 2, 4}}}},
+       {"output", {{"directory", (dir.path / "out").string()}, {"vtk", false}, {"report", false}}}});
+  run::run_project(p, {});
+  std::ifstream in(dir.path / "out" / "summary.json");
+  const json s = json::parse(in);
+  REQUIRE(s["closure_time_days"].is_number());
+  const double closure = s["closure_time_days"];
+  std::ifstream csv(dir.path / "out" / "wall.csv");
+  std::string line;
+  std::getline(csv, line);
+  int after = 0, positive = 0;
+  double first_after = -1.0;
+  while (std::getline(csv, line)) {
+    std::stringstream cells(line);
+    std::vector<std::string> c;
+    for (std::string v; std::getline(cells, v, ',');) c.push_back(v);
+    const double day = std::stod(c[0]), thinnest = std::stod(c[7]);
+    if (day < closure) continue;
+    if (first_after < 0.0) first_after = thinnest;
+    ++after;
+    positive += thinnest > 0.0;
+  }
+  fmt::print("\nFour-hole (3 cm): closure day {:.3f}; thinnest wall at the first row after it {:.3f} m, "
+             "{} of {} rows after closure positive; at day 4 {:.3f} m\n",
+             closure, first_after, positive, after, double(s["wall"][2]["min_thickness"]));
+  REQUIRE(after > 100);
+  CHECK(positive == after);
+  // Day 1 may be before closure; day 2 and 4 are after it and the wall grows.
+  CHECK(s["wall"][1]["min_thickness"] > 0.0);
+  CHECK(s["wall"][2]["min_thickness"] > s["wall"][1]["min_thickness"]);
+  // Still the inner ring's stretch alone at day 2: thinner than the 0.8 m
+  // between the rings plus the outer columns' reach would make it.
+  CHECK(s["wall"][1]["min_thickness"] < 0.8);
 }

@@ -392,3 +392,37 @@ TEST_CASE("Wall extents on a wedge lattice: thinnest section of an analytic froz
     CHECK_FALSE(reading.mean_temperature_OB.has_value());
   }
 }
+
+// Two rings (4.2 m and 5 m): the stretch is the longest frozen stretch that
+// contains a ring radius. The inner ring's stretch alone while the two are
+// apart (even when the outer one is thicker: the longest wins); one stretch
+// over both once they merge; none when neither ring radius is frozen.
+TEST_CASE("frozen_stretch: the longest stretch containing a ring of a double ring", "[wall]") {
+  // Samples every 0.01 m; the frozen stretches end halfway between two
+  // samples, where the piecewise-linear interpolant crosses 0.5.
+  std::vector<double> r;
+  for (int k = 0; k <= 300; ++k) r.push_back(3.0 + 0.01 * k);
+  auto field = [&](auto frozen) {
+    std::vector<double> f(r.size());
+    for (std::size_t i = 0; i < r.size(); ++i) f[i] = frozen(r[i]) ? 0.0 : 1.0;
+    return f;
+  };
+  const std::vector<double> rings = {4.2, 5.0};
+  // Inner column 4.0-4.4 only: the outer ring radius is not frozen.
+  const auto inner = post::frozen_stretch(r, field([](double x) { return x > 4.005 && x < 4.395; }), rings);
+  REQUIRE(inner.frozen());
+  CHECK(*inner.inner == Approx(4.005).margin(1e-9));
+  CHECK(*inner.outer == Approx(4.395).margin(1e-9));
+  CHECK(inner.thickness == Approx(0.39).margin(1e-9));
+  // The outer ring's single-ring measure would call this ray unfrozen.
+  CHECK_FALSE(post::frozen_stretch(r, field([](double x) { return x > 4.005 && x < 4.395; }), 5.0).frozen());
+  // Both frozen, apart: the longer one (outer, 4.6-5.4).
+  const auto apart = post::frozen_stretch(r, field([](double x) { return (x > 4.005 && x < 4.395) || (x > 4.605 && x < 5.395); }), rings);
+  CHECK(apart.thickness == Approx(0.79).margin(1e-9));
+  CHECK(*apart.inner == Approx(4.605).margin(1e-9));
+  // Merged: one stretch 4.0-5.4 over both rings.
+  const auto merged = post::frozen_stretch(r, field([](double x) { return x > 4.005 && x < 5.395; }), rings);
+  CHECK(merged.thickness == Approx(1.39).margin(1e-9));
+  // Frozen only between the rings, touching neither radius: nothing.
+  CHECK_FALSE(post::frozen_stretch(r, field([](double x) { return x > 4.405 && x < 4.795; }), rings).frozen());
+}

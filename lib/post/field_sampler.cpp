@@ -92,7 +92,30 @@ FieldSampler& FieldSampler::operator=(FieldSampler&&) noexcept = default;
 std::size_t FieldSampler::particle_count() const { return cloud_->n_particles; }
 double FieldSampler::support() const { return sph::Kernel::support_factor * cloud_->h_max; }
 
-std::vector<std::pair<std::uint32_t, double>> FieldSampler::weights(const Vec2& x) const {
+// A point no support reaches: the shaft axis of a lattice wedge, whose
+// apex is too narrow to hold particles (the images round the axis come
+// only from particles within reach of it). Its value is the kernel mean of
+// the points nearest it, the support stretched to 1.5 times the distance of
+// the nearest (a smooth field there: the axis is far from any pipe). Up to
+// eight times the largest support; beyond that, nothing.
+std::vector<std::pair<std::uint32_t, double>> FieldSampler::widened_weights(const Vec2& x, double& total) const {
+  const auto& c = *cloud_;
+  std::vector<std::pair<std::uint32_t, double>> w;
+  double nearest = std::numeric_limits<double>::infinity();
+  for (const auto& y : c.points) nearest = std::min(nearest, (y - x).norm());
+  const double reach = 1.5 * nearest;
+  if (!(reach <= 8.0 * support())) return w;
+  const double h = reach / sph::Kernel::support_factor;
+  for (std::size_t k = 0; k < c.points.size(); ++k) {
+    const double wk = c.kernel->value((c.points[k] - x).norm(), h) * c.volume[k];
+    if (wk <= 0.0) continue;
+    w.emplace_back(c.source[k], wk);
+    total += wk;
+  }
+  return w;
+}
+
+std::vector<std::pair<std::uint32_t, double>> FieldSampler::weights(const Vec2& x, bool stretch) const {
   const auto& c = *cloud_;
   std::vector<std::pair<std::uint32_t, double>> w;
   double total = 0.0;
@@ -102,6 +125,7 @@ std::vector<std::pair<std::uint32_t, double>> FieldSampler::weights(const Vec2& 
     w.emplace_back(c.source[k], wk);
     total += wk;
   });
+  if (w.empty() && stretch) w = widened_weights(x, total);
   if (w.empty()) return w;
   // A particle and its images are one value: fold them into one weight.
   std::sort(w.begin(), w.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
@@ -136,10 +160,10 @@ std::vector<double> FieldSampler::sample(const std::vector<Vec2>& where, const s
   return out;
 }
 
-PointProbe::PointProbe(const FieldSampler& sampler, std::vector<Vec2> where)
+PointProbe::PointProbe(const FieldSampler& sampler, std::vector<Vec2> where, bool stretch)
     : where_(std::move(where)), particle_count_(sampler.particle_count()) {
   std::vector<std::vector<std::pair<std::uint32_t, double>>> rows(where_.size());
-  sph::for_each_particle(where_.size(), [&](std::size_t i) { rows[i] = sampler.weights(where_[i]); });
+  sph::for_each_particle(where_.size(), [&](std::size_t i) { rows[i] = sampler.weights(where_[i], stretch); });
   start_.assign(where_.size() + 1, 0);
   for (std::size_t i = 0; i < rows.size(); ++i) start_[i + 1] = start_[i] + rows[i].size();
   index_.reserve(start_.back());

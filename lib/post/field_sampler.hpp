@@ -49,9 +49,15 @@ class FieldSampler {
 
   // The normalised weights at x, (particle index, weight) summing to one,
   // images folded onto their source; empty when nothing is within reach.
-  std::vector<std::pair<std::uint32_t, double>> weights(const Vec2& x) const;
+  // With `stretch`, a point no support reaches (the axis of a lattice
+  // wedge, whose narrow apex holds no particle) takes the nearest points
+  // with a stretched support; empty only when even those are further than
+  // 8 times the largest support (a search over all points: for profiles,
+  // not for rasters).
+  std::vector<std::pair<std::uint32_t, double>> weights(const Vec2& x, bool stretch = false) const;
 
  private:
+  std::vector<std::pair<std::uint32_t, double>> widened_weights(const Vec2& x, double& total) const;
   struct Cloud;
   std::unique_ptr<Cloud> cloud_;  // heap-held: the cell list refers to its points
 };
@@ -61,7 +67,8 @@ class FieldSampler {
 // point. Independent of the sampler once built.
 class PointProbe {
  public:
-  PointProbe(const FieldSampler& sampler, std::vector<Vec2> where);
+  // stretch: see FieldSampler::weights.
+  PointProbe(const FieldSampler& sampler, std::vector<Vec2> where, bool stretch = false);
 
   const std::vector<Vec2>& points() const { return where_; }
   std::size_t size() const { return where_.size(); }

@@ -393,6 +393,23 @@ std::vector<Sensor> read_monitoring(const Node& n) {
   return sensors;
 }
 
+// A sensor must lie in the simulated ground: inside the far-field circle
+// of a shaft section, inside a plain geometry's rectangle [0, w] x [0, h].
+void check_sensors_inside(const Project& project, const Node& n) {
+  for (std::size_t i = 0; i < project.monitoring.size(); ++i) {
+    const Sensor& s = project.monitoring[i];
+    if (const auto* section = std::get_if<ShaftSection>(&project.geometry)) {
+      const double r = std::hypot(s.x, s.y), R = section->outer_radius;
+      if (R > 0.0 && r > R)
+        n[i].problem(fmt::format("r = {:g} m is outside the simulated domain (domain.outer_radius {:g} m)", r, R));
+    } else if (const auto* rect = std::get_if<Rectangle>(&project.geometry)) {
+      if (s.x < 0.0 || s.x > rect->width || s.y < 0.0 || s.y > rect->height)
+        n[i].problem(fmt::format("(x, y) = ({:g}, {:g}) m is outside the rectangle [0, {:g}] x [0, {:g}] m", s.x, s.y,
+                                 rect->width, rect->height));
+    }
+  }
+}
+
 Output read_output(const Node& n) {
   Output output;
   if (!n.object({"directory", "vtk", "full_ring", "report"})) return output;
@@ -467,6 +484,7 @@ Project read_project(const Node& root) {
         s));
   project.design = read_design(root["design"]);
   project.monitoring = read_monitoring(root["monitoring"]);
+  check_sensors_inside(project, root["monitoring"]);
   project.output = read_output(root["output"].required());
   return project;
 }

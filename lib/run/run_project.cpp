@@ -1,6 +1,9 @@
 #include "run/run_project.hpp"
 
+#include <cerrno>
 #include <chrono>
+#include <cstring>
+#include <unistd.h>
 #include <cmath>
 #include <filesystem>
 #include <fmt/core.h>
@@ -96,11 +99,25 @@ const char* integrator_name(project::IntegratorKind k) {
 
 }  // namespace
 
+void check_output_directory(const std::string& directory) {
+  // The nearest ancestor that exists must be a directory we may write in;
+  // nothing is created here (bad input writes nothing).
+  std::error_code ec;
+  fs::path existing = fs::absolute(fs::path(directory).lexically_normal(), ec);
+  while (!existing.empty() && !fs::exists(existing, ec) && existing.has_parent_path() && existing != existing.parent_path())
+    existing = existing.parent_path();
+  const char* reason = nullptr;
+  if (!fs::is_directory(existing, ec)) reason = std::strerror(ENOTDIR);
+  else if (access(existing.c_str(), W_OK | X_OK) != 0) reason = std::strerror(errno);
+  if (reason) throw project::ProjectError({fmt::format("output.directory: cannot create '{}': {}", directory, reason)});
+}
+
 void run_project(const Project& p, const RunOptions& options) {
   const auto wall_start = std::chrono::steady_clock::now();
   auto note = [&](const std::string& s) {
     if (options.note) options.note(s);
   };
+  check_output_directory(p.output.directory);
   Model built = build_model(p);
   for (const auto& n : built.scene->notes) note(n);
   const auto& particles = built.particles();

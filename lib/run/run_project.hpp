@@ -19,6 +19,10 @@ struct RunOptions {
   std::string project_text;
 };
 
+// Throws project::ProjectError naming output.directory when it could not
+// be created (a file in its path, no permission); creates nothing.
+void check_output_directory(const std::string& directory);
+
 // Writes everything into project.output.directory (created if needed).
 // Throws project::ProjectError for input that cannot be run (before any
 // output is written) and std::runtime_error for failures during the run.

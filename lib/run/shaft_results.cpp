@@ -80,8 +80,8 @@ ShaftResults::ShaftResults(const project::Project& p, const Model& m)
   };
   in_pipe_OA_ = in_pipe(on_OA);
   in_pipe_OB_ = in_pipe(on_OB);
-  profile_OA_ = std::make_unique<post::PointProbe>(sampler_, on_OA);
-  profile_OB_ = std::make_unique<post::PointProbe>(sampler_, on_OB);
+  profile_OA_ = std::make_unique<post::PointProbe>(sampler_, on_OA, true);
+  profile_OB_ = std::make_unique<post::PointProbe>(sampler_, on_OB, true);
 
   // Sensors anywhere in the section: mapped into the wedge by its symmetry.
   const auto group = sph::symmetry_group(m.particles().mirrors, R);
