@@ -22,6 +22,7 @@ namespace {
 
 const fs::path bad_dir = fs::path(FROSTWALL_SOURCE_DIR) / "tests" / "data" / "bad";
 const fs::path layout_dir = fs::path(FROSTWALL_SOURCE_DIR) / "tests" / "data" / "bad_layout";
+const fs::path run_dir = fs::path(FROSTWALL_SOURCE_DIR) / "tests" / "data" / "bad_run";
 
 std::vector<std::string> lines_of(const fs::path& file) {
   std::vector<std::string> lines;
@@ -60,10 +61,12 @@ bool contains(const std::vector<std::string>& lines, const std::string& line) {
 
 // bad/: the loader finds the problem; bad_layout/: a valid file whose pipe
 // layout cannot be modelled (found when the section is built, before any
-// output). Both must stop with status 2 and write nothing.
+// output); bad_run/: a valid file the run refuses before any work (more
+// particles than the machine holds, an output directory that cannot be
+// made). All must stop with status 2 and write nothing.
 TEST_CASE("bad project files stop the run with status 2 and write nothing", "[cli]") {
   int cases = 0;
-  for (const fs::path& bad_dir : {bad_dir, layout_dir})
+  for (const fs::path& bad_dir : {bad_dir, layout_dir, run_dir})
   for (const auto& entry : fs::directory_iterator(bad_dir)) {
     if (entry.path().extension() != ".json") continue;
     ++cases;
@@ -90,7 +93,7 @@ TEST_CASE("bad project files stop the run with status 2 and write nothing", "[cl
 TEST_CASE("a project the machine cannot hold is refused before any work", "[cli]") {
   ScratchDir dir;
   {
-    std::ifstream in(bad_dir / "spacing_too_fine.json");
+    std::ifstream in(run_dir / "spacing_too_fine.json");
     auto project = nlohmann::json::parse(in);
     REQUIRE(project["numerics"].erase("max_particles") == 1);
     std::ofstream(dir.path / "fine.json") << project.dump(2);

@@ -105,6 +105,10 @@ TEST_CASE("The report of a shaft run fills every placeholder, loads nothing and 
   const json summary = json::parse(read(out / "summary.json"));
   REQUIRE(summary["closure_time_days"].is_number());
   CHECK(html.find(fmt::format("day {:.1f}", summary["closure_time_days"].get<double>())) != std::string::npos);
+  // Closure and front contact side by side, each with its own day.
+  REQUIRE(summary["front_contact_days"].is_number());
+  CHECK(html.find("Frozen columns touch") != std::string::npos);
+  CHECK(html.find(fmt::format("day {:.1f}", summary["front_contact_days"].get<double>())) != std::string::npos);
   CHECK(html.find(summary["design"]["pass"].get<bool>() ? ">PASS<" : ">FAIL<") != std::string::npos);
   for (const char* link : {"href=\"summary.json\"", "href=\"wall.csv\"", "href=\"field_0004.vtu\"", "href=\"ring.pvd\""})
     CHECK(html.find(link) != std::string::npos);

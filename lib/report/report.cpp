@@ -38,8 +38,8 @@ void add_headline(const RunRecord& run, json& view) {
   view["plain"] = !run.shaft();
   view["front_note"] = "";
   view["snapshots"] = json::array();
-  for (const char* key : {"closure_value", "closure_note", "last_day", "last_min_thickness", "last_mean_temperature",
-                          "design_value", "design_note", "design_class"})
+  for (const char* key : {"closure_value", "closure_note", "contact_value", "contact_note", "last_day",
+                          "last_min_thickness", "last_mean_temperature", "design_value", "design_note", "design_class"})
     view[key] = "";
   if (!run.shaft()) {
     const auto& front = s.value("front", json::array());
@@ -54,7 +54,13 @@ void add_headline(const RunRecord& run, json& view) {
   const auto& wall = s["wall"];
   const std::string end_day = wall.empty() ? "the end" : number(wall.back()["day"], 0);
   view["closure_value"] = closure.is_number() ? "day " + number(closure, 1) : "not closed";
-  view["closure_note"] = closure.is_number() ? "the frozen columns join into a ring" : "not within the run (to day " + end_day + ")";
+  view["closure_note"] = closure.is_number() ? "a fully frozen ring cuts the shaft off from the far field"
+                                              : "not within the run (to day " + end_day + ")";
+  // Older summaries have no front_contact_days: the card then says so.
+  const auto& contact = s.value("front_contact_days", json());
+  view["contact_value"] = contact.is_number() ? "day " + number(contact, 1) : (s.contains("front_contact_days") ? "not yet" : "–");
+  view["contact_note"] = contact.is_number() ? "half-frozen columns touch; not yet a closed wall"
+                                             : "the columns have not touched within the run";
   json rows = json::array();
   for (const auto& w : wall)
     rows.push_back({{"day", fmt::format("{:g}", w["day"].get<double>())},

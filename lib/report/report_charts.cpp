@@ -73,8 +73,10 @@ void wall_charts(const RunRecord& run, json& charts) {
   if (const auto req = design_value(run.summary, "required_thickness"))
     t.guides.push_back({false, *req, fmt::format("required {} m", number(*req, 2))});
   charts.push_back(figure("thickness", "Wall thickness", t,
-                          "Frozen stretch containing the pipe ring on OA, on OB and on the thinnest ray of the wedge. "
-                          "Before closure only the columns around the pipes are frozen, so OB and the thinnest ray read zero."));
+                          "Longest frozen stretch (liquid fraction at most 0.5) containing a ring of pipes, on OA, "
+                          "on OB and on the thinnest ray of the wedge. Until the columns touch only the ground around "
+                          "the pipes is frozen, so OB and the thinnest ray read zero; closure (the line) follows when "
+                          "a fully frozen path has formed."));
 
   if (const auto* T = wall.column("mean_temperature_OB_C")) {
     Chart m;
