@@ -30,11 +30,11 @@
 #include <vector>
 
 #include "post/closure.hpp"
-#include "sph/vec.hpp"
+#include "particles/vec.hpp"
 
 using frostwall::post::ClosureDetector;
 using frostwall::post::ClosureWatch;
-using Vec2 = frostwall::sph::Vec<2>;
+using Vec2 = frostwall::particles::Vec<2>;
 
 namespace {
 

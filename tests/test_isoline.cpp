@@ -18,16 +18,17 @@
 #include <vtkPolyData.h>
 #include <vtkXMLPolyDataReader.h>
 
+#include "particles/mirror_images.hpp"
 #include "io/polyline_vtk.hpp"
 #include "post/isoline.hpp"
 #include "sph/laplacian.hpp"
-#include "sph/particle_set.hpp"
+#include "particles/particle_set.hpp"
 #include "temp_dir.hpp"
 
 namespace fs = std::filesystem;
 using frostwall::post::isolines;
 using frostwall::post::Polyline;
-using Vec2 = frostwall::sph::Vec<2>;
+using Vec2 = frostwall::particles::Vec<2>;
 
 namespace {
 
@@ -271,12 +272,12 @@ TEST_CASE("isoline with mirror images reaches the symmetry plane", "[isoline]") 
   // with the images (carrying their source's value) the front crosses the
   // plane into the strip of images, and clipped to the wedge it is a half
   // circle ending exactly on the plane.
-  using frostwall::sph::MirrorPlane;
+  using frostwall::particles::MirrorPlane;
   const double d = 0.05, R = 0.5, angle = std::numbers::pi / 6.0;
   const Vec2 e30(std::cos(angle), std::sin(angle));
   const Vec2 c = 2.0 * e30;
   const Vec2 n30(-std::sin(angle), std::cos(angle));  // out of the wedge
-  frostwall::sph::ParticleSet<2> particles;
+  frostwall::particles::ParticleSet<2> particles;
   particles.spacing = d;
   particles.mirrors = {MirrorPlane<2>{Vec2::Zero(), Vec2(0.0, 1.0)}, MirrorPlane<2>{Vec2::Zero(), n30}};
   for (const auto& x : lattice(0.0, 3.5, 0.0, 3.5, d))
@@ -293,7 +294,7 @@ TEST_CASE("isoline with mirror images reaches the symmetry plane", "[isoline]") 
   CHECK(bare[0].points.front().dot(n30) < -1e-3 * d);
   CHECK(bare[0].points.back().dot(n30) < -1e-3 * d);
 
-  const auto images = frostwall::sph::mirror_images(particles, 3.0 * d);
+  const auto images = frostwall::particles::mirror_images(particles, 3.0 * d);
   REQUIRE(!images.position.empty());
   auto points = particles.position;
   auto all_values = values;

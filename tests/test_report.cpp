@@ -208,7 +208,7 @@ TEST_CASE("Folding maps every copy of a wedge point back onto it", "[report][map
     report::WedgeSymmetry w{M, 0.3, std::numbers::pi / M};
     for (double f : {0.1, 0.5, 0.9})
       for (double r : {0.5, 5.0}) {
-        const sph::Vec<2> x(r * std::cos(w.start + f * w.angle), r * std::sin(w.start + f * w.angle));
+        const particles::Vec<2> x(r * std::cos(w.start + f * w.angle), r * std::sin(w.start + f * w.angle));
         for (std::size_t g = 0; g < w.copies(); ++g) {
           INFO("M = " << M << ", copy " << g);
           CHECK((w.fold(w.apply(g, x)) - x).norm() < 1e-9);

@@ -42,13 +42,13 @@ TEST_CASE("Single ring: the symmetric wedge and the full ring agree", "[shaft]")
 
   // The full ring's particles by position.
   std::map<std::pair<long, long>, std::size_t> at;
-  auto key = [](const sph::Vec<2>& x) { return std::make_pair(std::lround(x[0] * 1e6), std::lround(x[1] * 1e6)); };
+  auto key = [](const particles::Vec<2>& x) { return std::make_pair(std::lround(x[0] * 1e6), std::lround(x[1] * 1e6)); };
   for (std::size_t i = 0; i < full.model->free_count(); ++i) at[key(full.particles().position[i])] = i;
 
   test::march(wedge, {end}, [](std::size_t) {});
   test::march(full, {end}, [](std::size_t) {});
   double worst = 0.0;
-  sph::Vec<2> where = sph::Vec<2>::Zero();
+  particles::Vec<2> where = particles::Vec<2>::Zero();
   std::size_t matched = 0;
   for (std::size_t i = 0; i < wedge.model->free_count(); ++i) {
     const auto it = at.find(key(wedge.particles().position[i]));

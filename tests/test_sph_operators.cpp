@@ -14,13 +14,14 @@
 #include <fmt/core.h>
 #include <random>
 
-#include "sph/cell_list.hpp"
+#include "particles/mirror_images.hpp"
+#include "particles/cell_list.hpp"
 #include "sph/kernel.hpp"
 #include "sph/laplacian.hpp"
 #include "sph/moment_correction.hpp"
 
 using namespace frostwall;
-using sph::Vec;
+using particles::Vec;
 
 TEST_CASE("Kernels are normalised and their derivative is consistent", "[sph]") {
   const sph::WendlandC2<2> wendland;
@@ -50,7 +51,7 @@ TEST_CASE("Cell list finds the same neighbours as brute force", "[sph]") {
   std::vector<Vec<2>> points(2000);
   for (auto& p : points) p = Vec<2>(u(rng), 0.5 * u(rng));
   const double radius = 0.13;
-  const sph::CellList<2> cells(points, radius);
+  const particles::CellList<2> cells(points, radius);
   for (std::size_t i = 0; i < points.size(); i += 37) {
     std::vector<std::uint32_t> found, brute;
     cells.for_each_within(points[i], radius, [&](std::uint32_t j, double) { found.push_back(j); });
@@ -63,8 +64,8 @@ TEST_CASE("Cell list finds the same neighbours as brute force", "[sph]") {
 
 namespace {
 // A square block of lattice particles [0,1]^2, all free, insulated.
-sph::ParticleSet<2> insulated_square(int n) {
-  sph::ParticleSet<2> P;
+particles::ParticleSet<2> insulated_square(int n) {
+  particles::ParticleSet<2> P;
   const double d = 1.0 / n;
   P.spacing = d;
   for (int j = 0; j < n; ++j)
@@ -79,7 +80,7 @@ sph::ParticleSet<2> insulated_square(int n) {
 TEST_CASE("Mirror images: a corner particle sees its three images", "[sph]") {
   const auto P = insulated_square(10);
   const double reach = 0.15;  // the double image of the corner particle (0.05, 0.05) is 0.141 away
-  const auto images = sph::mirror_images(P, reach);
+  const auto images = particles::mirror_images(P, reach);
   std::size_t of_corner = 0;
   for (std::size_t k = 0; k < images.source.size(); ++k)
     if ((P.position[images.source[k]] - Vec<2>(0.05, 0.05)).norm() < 1e-12) ++of_corner;
@@ -95,8 +96,8 @@ TEST_CASE("Mirror images: each particle's own reach bounds how far beyond a plan
   const double d = 1.0 / n, reach = 4 * d;
   std::vector<double> own(P.size());
   for (std::size_t j = 0; j < P.size(); ++j) own[j] = (P.position[j][0] < 0.5 ? 1.5 : 3.0) * d;
-  const auto all = sph::mirror_images(P, reach);
-  const auto some = sph::mirror_images(P, reach, own);
+  const auto all = particles::mirror_images(P, reach);
+  const auto some = particles::mirror_images(P, reach, own);
   auto beyond = [](const Vec<2>& y) {  // distance outside the unit square, along the worst axis
     return std::max({-y[0], y[0] - 1.0, -y[1], y[1] - 1.0, 0.0});
   };
@@ -180,7 +181,7 @@ namespace {
 // ones (no mirrors, so every pair is between real particles) and its
 // moment-correction system (moment_correction.hpp).
 sph::MomentSystem<2> shaken_square_system(int m) {
-  sph::ParticleSet<2> P;
+  particles::ParticleSet<2> P;
   const double d = 1.0 / m;
   P.spacing = d;
   std::mt19937 random(11);

@@ -17,7 +17,7 @@
 #include "post/field_sampler.hpp"
 #include "post/wall_extent.hpp"
 #include "sph/kernel.hpp"
-#include "sph/particle_set.hpp"
+#include "particles/particle_set.hpp"
 
 using namespace frostwall;
 using post::Vec2;
@@ -27,8 +27,8 @@ namespace {
 constexpr double smoothing_ratio = 1.3;  // h / spacing, the project default
 
 // Square lattice of n x m cells of size d on [0, n d] x [0, m d], all free.
-sph::ParticleSet<2> lattice(int n, int m, double d) {
-  sph::ParticleSet<2> P;
+particles::ParticleSet<2> lattice(int n, int m, double d) {
+  particles::ParticleSet<2> P;
   P.spacing = d;
   for (int j = 0; j < m; ++j)
     for (int i = 0; i < n; ++i) P.add(Vec2((i + 0.5) * d, (j + 0.5) * d), d * d, -1);
@@ -37,7 +37,7 @@ sph::ParticleSet<2> lattice(int n, int m, double d) {
 }
 
 template <class F>
-std::vector<double> field_at(const sph::ParticleSet<2>& P, F&& f) {
+std::vector<double> field_at(const particles::ParticleSet<2>& P, F&& f) {
   std::vector<double> v;
   for (const auto& x : P.position) v.push_back(f(x));
   return v;
@@ -285,8 +285,8 @@ namespace {
 // A wedge from start_angle of `angle`: lattice aligned with OB, rows half a
 // spacing off it (as the shaft builder lays it), free particles to r_out,
 // both sides mirror planes. Built directly, without the shaft builder.
-sph::ParticleSet<2> wedge_lattice(double start_angle, double angle, double r_out, double d) {
-  sph::ParticleSet<2> P;
+particles::ParticleSet<2> wedge_lattice(double start_angle, double angle, double r_out, double d) {
+  particles::ParticleSet<2> P;
   P.spacing = d;
   const double theta = start_angle + angle;
   const Vec2 e1(std::cos(theta), std::sin(theta)), e2(-std::sin(theta), std::cos(theta));

@@ -1,5 +1,6 @@
 #include "geometry/graded_placement.hpp"
 
+
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Delaunay_mesh_face_base_2.h>
 #include <CGAL/Delaunay_mesh_size_criteria_2.h>
@@ -9,9 +10,10 @@
 #include <cmath>
 #include <cstdint>
 
+#include "particles/mirror_images.hpp"
 #include "geometry/delaunay.hpp"
 #include "sph/laplacian.hpp"
-#include "sph/parallel.hpp"
+#include "particles/parallel.hpp"
 
 namespace frostwall::geometry {
 
@@ -146,7 +148,7 @@ std::vector<Vec2> place_graded(const PlacementRegion& region, const SizeField& s
   for (int it = 0; it < iterations; ++it) {
     // Everything that bounds a free particle's cell: free, fixed, wall
     // reflections of free particles near a wall, and mirror images of all.
-    sph::ParticleSet<2> cloud;
+    particles::ParticleSet<2> cloud;
     cloud.spacing = size.finest();
     cloud.mirrors = region.mirrors;
     for (const auto& x : points) cloud.add(x, 0.0, -1);
@@ -161,7 +163,7 @@ std::vector<Vec2> place_graded(const PlacementRegion& region, const SizeField& s
     // the triangulation).
     std::vector<double> own_reach(cloud.size());
     for (std::size_t i = 0; i < cloud.size(); ++i) own_reach[i] = 2.5 * size(cloud.position[i]);
-    const auto images = sph::mirror_images(cloud, reach, own_reach);
+    const auto images = particles::mirror_images(cloud, reach, own_reach);
 
     constexpr std::size_t not_free = static_cast<std::size_t>(-1);
     std::vector<std::pair<K::Point_2, std::size_t>> input;
@@ -177,7 +179,7 @@ std::vector<Vec2> place_graded(const PlacementRegion& region, const SizeField& s
     for (auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v)
       if (v->info() != not_free) vertex[v->info()] = v;
     std::vector<Vec2> moved = points;
-    const double largest = sph::max_over_particles(points.size(), [&](std::size_t i) {
+    const double largest = particles::max_over_particles(points.size(), [&](std::size_t i) {
       if (vertex[i] == IndexedDelaunay::Vertex_handle()) return 0.0;  // merged with a coincident point
       const Vec2 xi = points[i];
       auto f = dt.incident_faces(vertex[i]), done = f;
@@ -219,7 +221,7 @@ std::vector<Vec2> place_graded(const PlacementRegion& region, const SizeField& s
   return points;
 }
 
-double assign_free_spacing(sph::ParticleSet<2>& P, const SizeField& size) {
+double assign_free_spacing(particles::ParticleSet<2>& P, const SizeField& size) {
   double volume = 0.0, squares = 0.0;
   for (std::size_t i = 0; i < P.n_free; ++i) {
     volume += P.volume[i];

@@ -21,7 +21,7 @@
 #include <vector>
 
 #include "geometry/size_field.hpp"
-#include "sph/particle_set.hpp"
+#include "particles/particle_set.hpp"
 
 namespace frostwall::geometry {
 
@@ -47,7 +47,7 @@ struct ReflectingWall {
 struct PlacementRegion {
   std::vector<Vec2> outline;                  // polygon around the region, counter-clockwise (seeding)
   std::function<bool(const Vec2&)> inside;    // where a free particle may sit
-  std::vector<sph::MirrorPlane<2>> mirrors;   // adiabatic sides
+  std::vector<particles::MirrorPlane<2>> mirrors;   // adiabatic sides
   std::vector<Vec2> fixed;                    // fixed particles already placed (pipe rings)
   std::vector<ReflectingWall> walls;
 };
@@ -68,6 +68,6 @@ std::vector<Vec2> place_graded(const PlacementRegion& region, const SizeField& s
 // cells). The CVT keeps the seeds' count, which the same integral set, so
 // the scale stays near 1. Sizes local_spacing to the set (fixed particles
 // are left for the caller) and returns the scale.
-double assign_free_spacing(sph::ParticleSet<2>& particles, const SizeField& size);
+double assign_free_spacing(particles::ParticleSet<2>& particles, const SizeField& size);
 
 }  // namespace frostwall::geometry

@@ -84,13 +84,13 @@ RectangleScene build_rectangle(const project::Rectangle& rect, double spacing, d
         }
       // The point this layer particle mirrors across its face (the face row
       // and corner particles beyond two faces hold the wall temperature).
-      sph::Vec<2> reflected = sph::ParticleSet<2>::on_wall();
+      particles::Vec<2> reflected = particles::ParticleSet<2>::on_wall();
       const double wall[4] = {0.0, rect.width, 0.0, rect.height};
       if (count == 1 && std::abs((owner < 2 ? x : y) - wall[owner]) > 1e-9 * X.spacing)
-        reflected = owner < 2 ? sph::Vec<2>(2 * wall[owner] - x, y) : sph::Vec<2>(x, 2 * wall[owner] - y);
-      P.add(sph::Vec<2>(x, y), volume, b, reflected);
+        reflected = owner < 2 ? particles::Vec<2>(2 * wall[owner] - x, y) : particles::Vec<2>(x, 2 * wall[owner] - y);
+      P.add(particles::Vec<2>(x, y), volume, b, reflected);
     }
-  using V = sph::Vec<2>;
+  using V = particles::Vec<2>;
   if (!is_fixed(rect.left)) P.mirrors.push_back({V(0, 0), V(1, 0)});
   if (!is_fixed(rect.right)) P.mirrors.push_back({V(rect.width, 0), V(1, 0)});
   if (!is_fixed(rect.bottom)) P.mirrors.push_back({V(0, 0), V(0, 1)});
@@ -117,8 +117,8 @@ int coldest_side(const project::Rectangle& rect) {
 }
 
 // Side s as a line: a point on it and its inward normal.
-std::pair<sph::Vec<2>, sph::Vec<2>> side_line(const project::Rectangle& rect, int s) {
-  using V = sph::Vec<2>;
+std::pair<particles::Vec<2>, particles::Vec<2>> side_line(const project::Rectangle& rect, int s) {
+  using V = particles::Vec<2>;
   switch (s) {
     case 0: return {V(0, 0), V(1, 0)};
     case 1: return {V(rect.width, 0), V(-1, 0)};
@@ -152,7 +152,7 @@ RectangleScene build_graded_rectangle(const project::Rectangle& rect, const Size
       scene.boundaries.push_back({names[s], std::get<project::FixedTemperature>(*sides[s]).temperature});
     }
   auto& P = scene.particles;
-  using V = sph::Vec<2>;
+  using V = particles::Vec<2>;
   std::array<ReflectingWall, 4> wall;
   PlacementRegion region;
   region.outline = {V(0, 0), V(rect.width, 0), V(rect.width, rect.height), V(0, rect.height)};
@@ -205,7 +205,7 @@ RectangleScene build_graded_rectangle(const project::Rectangle& rect, const Size
 }
 
 std::optional<CooledFace> cooled_face(const project::Rectangle& rect, const RectangleScene& scene) {
-  using V = sph::Vec<2>;
+  using V = particles::Vec<2>;
   const std::array<CooledFace, 4> faces{{{"left", V(0, 0), V(1, 0), scene.spacing[0]},
                                          {"right", V(rect.width, 0), V(-1, 0), scene.spacing[0]},
                                          {"bottom", V(0, 0), V(0, 1), scene.spacing[1]},

@@ -39,8 +39,8 @@ RectangleScene build_graded_rectangle(const project::Rectangle& rect, const Size
 // fronts are measured from its face along its inward normal.
 struct CooledFace {
   std::string side;
-  sph::Vec<2> origin;         // a point on the face
-  sph::Vec<2> inward_normal;  // unit, into the rectangle
+  particles::Vec<2> origin;         // a point on the face
+  particles::Vec<2> inward_normal;  // unit, into the rectangle
   double spacing = 0.0;       // lattice spacing along the normal (graded: the finest)
   bool lattice_rows = true;   // particles in rows parallel to the face (false: a graded cloud)
 };

@@ -6,14 +6,14 @@
 #include <string>
 #include <vector>
 
-#include "sph/particle_set.hpp"
+#include "particles/particle_set.hpp"
 #include "thermal/boundary.hpp"
 
 namespace frostwall::geometry {
 
 struct Scene {
   virtual ~Scene() = default;
-  sph::ParticleSet<2> particles;
+  particles::ParticleSet<2> particles;
   std::vector<thermal::FixedTemperatureBoundary> boundaries;
   std::vector<std::string> notes;  // e.g. spacing adjusted to fit the sides
 };

@@ -10,7 +10,7 @@
 #include <map>
 #include <numbers>
 
-#include "sph/symmetry_group.hpp"
+#include "particles/symmetry_group.hpp"
 
 namespace frostwall::geometry {
 
@@ -18,7 +18,7 @@ namespace {
 
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Point = K::Point_2;
-using sph::Vec;
+using particles::Vec;
 
 Point point(const Vec<2>& p) { return {p[0], p[1]}; }
 
@@ -35,7 +35,7 @@ struct WedgeSides {
 // radial line through the pipe centre (a mirror line when the pipe sits on
 // a wedge side), or the single centre particle of the point model. `dx` is
 // the spacing at the pipe; `volume` the point model's particle volume.
-void add_pipe(sph::ParticleSet<2>& P, const ShaftScene& scene, const Wedge& wedge, const Pipe2& p, bool disc,
+void add_pipe(particles::ParticleSet<2>& P, const ShaftScene& scene, const Wedge& wedge, const Pipe2& p, bool disc,
               double a, double dx, int layers, double volume) {
   const Vec<2> c(p.x, p.y);
   const double radial = std::atan2(p.y, p.x);
@@ -59,7 +59,7 @@ void add_pipe(sph::ParticleSet<2>& P, const ShaftScene& scene, const Wedge& wedg
       const double phi = radial + (m + 0.5) * 2.0 * std::numbers::pi / count;
       const Vec<2> x = c + rho * Vec<2>(std::cos(phi), std::sin(phi));
       // Reflected across the pipe wall: radius 2a - rho from the centre.
-      const Vec<2> reflected = l == 0 ? sph::ParticleSet<2>::on_wall() : Vec<2>(c + (2.0 * a - rho) / rho * (x - c));
+      const Vec<2> reflected = l == 0 ? particles::ParticleSet<2>::on_wall() : Vec<2>(c + (2.0 * a - rho) / rho * (x - c));
       if (keep(x)) P.add(x, 2.0 * std::numbers::pi * rho / count * dx, scene.pipe_boundary, reflected);
     }
   }
@@ -81,7 +81,7 @@ ShaftScene empty_scene(const project::ShaftSection& section, const project::Doma
   return scene;
 }
 
-void add_mirror_planes(sph::ParticleSet<2>& P, const Wedge& wedge) {
+void add_mirror_planes(particles::ParticleSet<2>& P, const Wedge& wedge) {
   if (wedge.mirror_count == 0) return;
   // Planes through the origin; normals perpendicular to each side.
   const double theta = wedge.start_angle + wedge.angle;
@@ -190,7 +190,7 @@ ShaftScene build_graded_shaft_section(const project::ShaftSection& section, cons
 
   // Pipe rings at the spacing of each pipe's wall, kept aside while the
   // free particles settle round them.
-  sph::ParticleSet<2> rings;
+  particles::ParticleSet<2> rings;
   std::vector<double> ring_spacing;
   for (const auto& p : scene.pipes) {
     const Vec<2> c(p.x, p.y);
@@ -255,8 +255,8 @@ ShaftScene build_graded_shaft_section(const project::ShaftSection& section, cons
 void unfold_to_full_ring(ShaftScene& scene) {
   const auto& wedge = scene.particles;
   if (wedge.mirrors.empty()) return;
-  const auto group = sph::symmetry_group(wedge.mirrors, scene.far_field_radius);
-  sph::ParticleSet<2> ring;
+  const auto group = particles::symmetry_group(wedge.mirrors, scene.far_field_radius);
+  particles::ParticleSet<2> ring;
   ring.spacing = wedge.spacing;
   const bool graded = wedge.graded();
   // A particle on a plane (a point pipe's centre) maps onto itself: once.
@@ -264,7 +264,7 @@ void unfold_to_full_ring(ShaftScene& scene) {
   const double grid = 1e-6 * wedge.spacing;
   for (const auto& g : group)
     for (std::size_t i = 0; i < wedge.size(); ++i) {
-      const sph::Vec<2> y = g(wedge.position[i]);
+      const particles::Vec<2> y = g(wedge.position[i]);
       if (!seen.emplace(std::make_pair(std::llround(y[0] / grid), std::llround(y[1] / grid)), true).second) continue;
       ring.add(y, wedge.volume[i], wedge.boundary[i], g(wedge.reflection[i]));
       if (graded) ring.local_spacing.push_back(wedge.local_spacing[i]);

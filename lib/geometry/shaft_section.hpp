@@ -65,6 +65,6 @@ ShaftScene build_graded_shaft_section(const project::ShaftSection& section, cons
 void unfold_to_full_ring(ShaftScene& scene);
 
 // True when p lies strictly inside the wedge (sides excluded).
-bool inside_wedge(const Wedge& wedge, const sph::Vec<2>& p);
+bool inside_wedge(const Wedge& wedge, const particles::Vec<2>& p);
 
 }  // namespace frostwall::geometry

@@ -12,11 +12,11 @@
 #include <functional>
 #include <vector>
 
-#include "sph/vec.hpp"
+#include "particles/vec.hpp"
 
 namespace frostwall::geometry {
 
-using Vec2 = sph::Vec<2>;
+using Vec2 = particles::Vec<2>;
 
 class SizeField {
  public:

@@ -1,5 +1,7 @@
 #include "geometry/voronoi_volumes.hpp"
 
+
+#include "particles/mirror_images.hpp"
 #include "geometry/delaunay.hpp"
 #include "sph/laplacian.hpp"
 
@@ -10,8 +12,8 @@ using K = geometry::Kernel2;
 using Delaunay = geometry::IndexedDelaunay;
 }  // namespace
 
-void assign_voronoi_volumes(sph::ParticleSet<2>& particles, double reach) {
-  const auto images = sph::mirror_images(particles, reach);
+void assign_voronoi_volumes(particles::ParticleSet<2>& particles, double reach) {
+  const auto images = particles::mirror_images(particles, reach);
   constexpr std::size_t not_free = static_cast<std::size_t>(-1);
   std::vector<std::pair<K::Point_2, std::size_t>> points;
   points.reserve(particles.size() + images.position.size());

@@ -7,13 +7,13 @@
 // lattice it is the lattice cell, at a mirror plane it ends at the plane.
 #pragma once
 
-#include "sph/particle_set.hpp"
+#include "particles/particle_set.hpp"
 
 namespace frostwall::geometry {
 
 // Sets the volume of every free particle to its Voronoi cell area (2-D).
 // `reach` is the kernel support (the mirror images that matter lie within).
 // Fixed particles keep their volumes.
-void assign_voronoi_volumes(sph::ParticleSet<2>& particles, double reach);
+void assign_voronoi_volumes(particles::ParticleSet<2>& particles, double reach);
 
 }  // namespace frostwall::geometry

@@ -1,21 +1,23 @@
 #include "post/closure.hpp"
 
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numeric>
 
+#include "particles/mirror_images.hpp"
 #include "geometry/delaunay.hpp"
-#include "sph/cell_list.hpp"
+#include "particles/cell_list.hpp"
 #include "sph/laplacian.hpp"
 
 namespace frostwall::post {
 
-ClosureDetector::ClosureDetector(const std::vector<sph::Vec<2>>& position, std::size_t n_free, double spacing,
+ClosureDetector::ClosureDetector(const std::vector<particles::Vec<2>>& position, std::size_t n_free, double spacing,
                                  double far_field_radius) {
-  const std::vector<sph::Vec<2>> free(position.begin(), position.begin() + n_free);
+  const std::vector<particles::Vec<2>> free(position.begin(), position.begin() + n_free);
   const double link = 1.5 * spacing;
-  const sph::CellList<2> cells(free, link);
+  const particles::CellList<2> cells(free, link);
   start_.assign(n_free + 1, 0);
   far_field_.assign(n_free, 0);
   for (std::size_t i = 0; i < n_free; ++i) {
@@ -28,14 +30,14 @@ ClosureDetector::ClosureDetector(const std::vector<sph::Vec<2>>& position, std::
   }
 }
 
-ClosureDetector::ClosureDetector(const std::vector<sph::Vec<2>>& position, std::size_t n_free,
+ClosureDetector::ClosureDetector(const std::vector<particles::Vec<2>>& position, std::size_t n_free,
                                  const std::vector<double>& local_spacing, double far_field_radius,
-                                 const std::vector<sph::Vec<2>>& image_position,
+                                 const std::vector<particles::Vec<2>>& image_position,
                                  const std::vector<std::uint32_t>& image_source) {
   // Vertex k at where[k], carrying the value of free particle source[k]:
   // the free particles first, then the images of free particles.
   std::vector<std::pair<geometry::Kernel2::Point_2, std::size_t>> points;
-  std::vector<sph::Vec<2>> where(position.begin(), position.begin() + n_free);
+  std::vector<particles::Vec<2>> where(position.begin(), position.begin() + n_free);
   std::vector<std::uint32_t> source(n_free);
   for (std::size_t i = 0; i < n_free; ++i) source[i] = static_cast<std::uint32_t>(i);
   for (std::size_t k = 0; k < image_position.size(); ++k)
@@ -68,7 +70,7 @@ ClosureDetector::ClosureDetector(const std::vector<sph::Vec<2>>& position, std::
   }
 }
 
-std::vector<double> image_reach(const sph::ParticleSet<2>& particles) {
+std::vector<double> image_reach(const particles::ParticleSet<2>& particles) {
   std::vector<double> reach;
   if (!particles.graded()) return reach;
   reach.resize(particles.size());
@@ -77,14 +79,14 @@ std::vector<double> image_reach(const sph::ParticleSet<2>& particles) {
 }
 
 namespace {
-ClosureDetector graded_detector(const sph::ParticleSet<2>& particles, double far_field_radius) {
-  const auto images = sph::mirror_images(particles, 3.0 * particles.coarsest_spacing(), image_reach(particles));
+ClosureDetector graded_detector(const particles::ParticleSet<2>& particles, double far_field_radius) {
+  const auto images = particles::mirror_images(particles, 3.0 * particles.coarsest_spacing(), image_reach(particles));
   return ClosureDetector(particles.position, particles.n_free, particles.local_spacing, far_field_radius,
                          images.position, images.source);
 }
 }  // namespace
 
-ClosureDetector::ClosureDetector(const sph::ParticleSet<2>& particles, double far_field_radius)
+ClosureDetector::ClosureDetector(const particles::ParticleSet<2>& particles, double far_field_radius)
     : ClosureDetector(particles.graded()
                           ? graded_detector(particles, far_field_radius)
                           : ClosureDetector(particles.position, particles.n_free, particles.spacing, far_field_radius)) {}

@@ -38,8 +38,8 @@
 #include <optional>
 #include <vector>
 
-#include "sph/particle_set.hpp"
-#include "sph/vec.hpp"
+#include "particles/particle_set.hpp"
+#include "particles/vec.hpp"
 
 namespace frostwall::post {
 
@@ -48,22 +48,22 @@ namespace frostwall::post {
 // particle j matters only up to 4.5 of its own spacings beyond a mirror
 // (three spacings, and a neighbour across may be coarser). For
 // mirror_images' own_reach; empty for a lattice (one reach serves).
-std::vector<double> image_reach(const sph::ParticleSet<2>& particles);
+std::vector<double> image_reach(const particles::ParticleSet<2>& particles);
 
 class ClosureDetector {
  public:
-  ClosureDetector(const std::vector<sph::Vec<2>>& position, std::size_t n_free, double spacing,
+  ClosureDetector(const std::vector<particles::Vec<2>>& position, std::size_t n_free, double spacing,
                   double far_field_radius);
   // Graded clouds: links along Delaunay edges; far-field particles within
   // 1.5 local spacings of the far-field circle.
   // image_position / image_source: mirror images of free particles (none
   // for a full ring).
-  ClosureDetector(const std::vector<sph::Vec<2>>& position, std::size_t n_free,
+  ClosureDetector(const std::vector<particles::Vec<2>>& position, std::size_t n_free,
                   const std::vector<double>& local_spacing, double far_field_radius,
-                  const std::vector<sph::Vec<2>>& image_position = {},
+                  const std::vector<particles::Vec<2>>& image_position = {},
                   const std::vector<std::uint32_t>& image_source = {});
   // The lattice rule for a lattice, the Delaunay rule for a graded cloud.
-  ClosureDetector(const sph::ParticleSet<2>& particles, double far_field_radius);
+  ClosureDetector(const particles::ParticleSet<2>& particles, double far_field_radius);
   // -infinity when nothing joins the axis to the far field at any level.
   double bottleneck(const std::vector<double>& g) const;
   std::size_t links() const { return link_.size(); }

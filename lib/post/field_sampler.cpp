@@ -1,13 +1,15 @@
 #include "post/field_sampler.hpp"
 
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 
-#include "sph/cell_list.hpp"
+#include "particles/mirror_images.hpp"
+#include "particles/cell_list.hpp"
 #include "sph/laplacian.hpp"
-#include "sph/parallel.hpp"
+#include "particles/parallel.hpp"
 
 namespace frostwall::post {
 
@@ -26,7 +28,7 @@ struct FieldSampler::Cloud {
     double reach = 0.0;                 // largest support in the level
     std::vector<Vec2> points;
     std::vector<std::uint32_t> index;   // into the cloud's points
-    std::unique_ptr<sph::CellList<2>> cells;
+    std::unique_ptr<particles::CellList<2>> cells;
   };
   std::vector<Level> levels;
 
@@ -41,7 +43,7 @@ struct FieldSampler::Cloud {
   }
 };
 
-FieldSampler::FieldSampler(const sph::ParticleSet<2>& particles, const sph::Kernel& kernel,
+FieldSampler::FieldSampler(const particles::ParticleSet<2>& particles, const sph::Kernel& kernel,
                            const sph::SmoothingLengths& h)
     : cloud_(std::make_unique<Cloud>()) {
   if (!(h.smallest() > 0.0)) throw std::invalid_argument("field sampler: smoothing length must be > 0");
@@ -60,7 +62,7 @@ FieldSampler::FieldSampler(const sph::ParticleSet<2>& particles, const sph::Kern
   std::vector<double> own_reach(particles.size());
   for (std::size_t j = 0; j < particles.size(); ++j)
     own_reach[j] = sph::Kernel::support_factor * h.of(j) + particles.spacing_of(j);
-  const auto images = sph::mirror_images(particles, reach + spacing, own_reach);
+  const auto images = particles::mirror_images(particles, reach + spacing, own_reach);
   c.points = particles.position;
   c.points.insert(c.points.end(), images.position.begin(), images.position.end());
   c.source.resize(c.points.size());
@@ -82,7 +84,7 @@ FieldSampler::FieldSampler(const sph::ParticleSet<2>& particles, const sph::Kern
   }
   // (Empty levels go first: a cell list refers to its level's points.)
   std::erase_if(c.levels, [](const Cloud::Level& level) { return level.points.empty(); });
-  for (auto& level : c.levels) level.cells = std::make_unique<sph::CellList<2>>(level.points, level.reach);
+  for (auto& level : c.levels) level.cells = std::make_unique<particles::CellList<2>>(level.points, level.reach);
 }
 
 FieldSampler::~FieldSampler() = default;
@@ -156,14 +158,14 @@ std::vector<double> FieldSampler::sample(const std::vector<Vec2>& where, const s
   if (field.size() != cloud_->n_particles)
     throw std::invalid_argument("field sampler: the field must have one value per particle");
   std::vector<double> out(where.size());
-  sph::for_each_particle(where.size(), [&](std::size_t i) { out[i] = value(where[i], field); });
+  particles::for_each_particle(where.size(), [&](std::size_t i) { out[i] = value(where[i], field); });
   return out;
 }
 
 PointProbe::PointProbe(const FieldSampler& sampler, std::vector<Vec2> where, bool stretch)
     : where_(std::move(where)), particle_count_(sampler.particle_count()) {
   std::vector<std::vector<std::pair<std::uint32_t, double>>> rows(where_.size());
-  sph::for_each_particle(where_.size(), [&](std::size_t i) { rows[i] = sampler.weights(where_[i], stretch); });
+  particles::for_each_particle(where_.size(), [&](std::size_t i) { rows[i] = sampler.weights(where_[i], stretch); });
   start_.assign(where_.size() + 1, 0);
   for (std::size_t i = 0; i < rows.size(); ++i) start_[i + 1] = start_[i] + rows[i].size();
   index_.reserve(start_.back());

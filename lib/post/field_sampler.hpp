@@ -21,20 +21,20 @@
 #include <vector>
 
 #include "sph/kernel.hpp"
-#include "sph/particle_set.hpp"
+#include "particles/particle_set.hpp"
 #include "sph/smoothing_lengths.hpp"
-#include "sph/vec.hpp"
+#include "particles/vec.hpp"
 
 namespace frostwall::post {
 
-using Vec2 = sph::Vec<2>;
+using Vec2 = particles::Vec<2>;
 
 class FieldSampler {
  public:
   // The kernel must outlive the sampler; the particle set need not.
   // h: one smoothing length, or one per particle (a graded cloud: each
   // particle spreads its value over its own support, W(x - x_j, h_j)).
-  FieldSampler(const sph::ParticleSet<2>& particles, const sph::Kernel& kernel, const sph::SmoothingLengths& h);
+  FieldSampler(const particles::ParticleSet<2>& particles, const sph::Kernel& kernel, const sph::SmoothingLengths& h);
   ~FieldSampler();
   FieldSampler(FieldSampler&&) noexcept;
   FieldSampler& operator=(FieldSampler&&) noexcept;

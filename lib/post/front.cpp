@@ -4,7 +4,7 @@
 
 namespace frostwall::post {
 
-std::optional<double> frozen_front(const std::vector<sph::Vec<2>>& position,
+std::optional<double> frozen_front(const std::vector<particles::Vec<2>>& position,
                                    const std::vector<double>& liquid_fraction, std::size_t n_free,
                                    const geometry::CooledFace& face) {
   const double d = face.spacing;

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "geometry/rectangle.hpp"
-#include "sph/vec.hpp"
+#include "particles/vec.hpp"
 
 namespace frostwall::post {
 
@@ -14,7 +14,7 @@ namespace frostwall::post {
 // the liquid fraction averaged per row, and the first crossing of 0.5 from
 // the face (frozen, f = 0) outward found by linear interpolation between
 // row centres. nullopt if no row reaches f >= 0.5 (all frozen).
-std::optional<double> frozen_front(const std::vector<sph::Vec<2>>& position,
+std::optional<double> frozen_front(const std::vector<particles::Vec<2>>& position,
                                    const std::vector<double>& liquid_fraction, std::size_t n_free,
                                    const geometry::CooledFace& face);
 

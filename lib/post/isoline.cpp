@@ -20,7 +20,7 @@ constexpr std::size_t none = static_cast<std::size_t>(-1);
 // orientation rule makes it the end of one segment and the start of the
 // other, so each node has at most one successor and one predecessor.
 struct Crossing {
-  sph::Vec<2> point;
+  particles::Vec<2> point;
   std::size_t next = none;
   bool has_prev = false;
   bool visited = false;
@@ -29,29 +29,29 @@ struct Crossing {
 // Appends x unless it repeats the last point exactly: a vertex exactly at
 // level is the crossing of all its edges towards values below, which
 // yields zero-length segments there.
-void append(std::vector<sph::Vec<2>>& out, const sph::Vec<2>& x) {
+void append(std::vector<particles::Vec<2>>& out, const particles::Vec<2>& x) {
   if (out.empty() || out.back() != x) out.push_back(x);
 }
 }  // namespace
 
-std::vector<Polyline> isolines(const std::vector<sph::Vec<2>>& points, const std::vector<double>& values,
+std::vector<Polyline> isolines(const std::vector<particles::Vec<2>>& points, const std::vector<double>& values,
                                double level, double max_edge) {
   if (values.size() != points.size())
     throw std::invalid_argument("isolines: values and points differ in size");
   return IsolineMesh(points, max_edge).isolines(values, level);
 }
 
-std::vector<Polyline> isolines(const std::vector<sph::Vec<2>>& points, const std::vector<double>& values,
+std::vector<Polyline> isolines(const std::vector<particles::Vec<2>>& points, const std::vector<double>& values,
                                double level, const std::vector<double>& max_edge_at) {
   if (values.size() != points.size())
     throw std::invalid_argument("isolines: values and points differ in size");
   return IsolineMesh(points, max_edge_at).isolines(values, level);
 }
 
-IsolineMesh::IsolineMesh(std::vector<sph::Vec<2>> points, double max_edge)
+IsolineMesh::IsolineMesh(std::vector<particles::Vec<2>> points, double max_edge)
     : IsolineMesh(std::move(points), std::vector<double>{max_edge}) {}
 
-IsolineMesh::IsolineMesh(std::vector<sph::Vec<2>> points, const std::vector<double>& max_edge_at)
+IsolineMesh::IsolineMesh(std::vector<particles::Vec<2>> points, const std::vector<double>& max_edge_at)
     : points_(std::move(points)) {
   const auto& P = points_;
   if (P.size() > 0xffffffffu) throw std::invalid_argument("isolines: too many points");

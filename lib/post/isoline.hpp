@@ -9,13 +9,13 @@
 #include <limits>
 #include <vector>
 
-#include "sph/vec.hpp"
+#include "particles/vec.hpp"
 
 namespace frostwall::post {
 
 // A closed polyline does not repeat its first point at the end.
 struct Polyline {
-  std::vector<sph::Vec<2>> points;
+  std::vector<particles::Vec<2>> points;
   bool closed = false;
 };
 
@@ -32,26 +32,26 @@ struct Polyline {
 //    by values below) gives a closed polyline of at most two points, or none.
 // Throws std::invalid_argument on mismatched sizes, non-finite values or
 // level, or max_edge not > 0.
-std::vector<Polyline> isolines(const std::vector<sph::Vec<2>>& points, const std::vector<double>& values,
+std::vector<Polyline> isolines(const std::vector<particles::Vec<2>>& points, const std::vector<double>& values,
                                double level, double max_edge = std::numeric_limits<double>::infinity());
 
 // The same on a graded cloud: each point has its own limit (a few of its
 // local spacings); a triangle is skipped when its longest edge exceeds the
 // largest limit of its three corners.
-std::vector<Polyline> isolines(const std::vector<sph::Vec<2>>& points, const std::vector<double>& values,
+std::vector<Polyline> isolines(const std::vector<particles::Vec<2>>& points, const std::vector<double>& values,
                                double level, const std::vector<double>& max_edge_at);
 
 // The same, with the triangulation built once for points that do not move
 // (our particles): each call then costs one pass over the triangles.
 class IsolineMesh {
  public:
-  IsolineMesh(std::vector<sph::Vec<2>> points, double max_edge = std::numeric_limits<double>::infinity());
-  IsolineMesh(std::vector<sph::Vec<2>> points, const std::vector<double>& max_edge_at);
+  IsolineMesh(std::vector<particles::Vec<2>> points, double max_edge = std::numeric_limits<double>::infinity());
+  IsolineMesh(std::vector<particles::Vec<2>> points, const std::vector<double>& max_edge_at);
   std::vector<Polyline> isolines(const std::vector<double>& values, double level) const;
   std::size_t size() const { return points_.size(); }
 
  private:
-  std::vector<sph::Vec<2>> points_;
+  std::vector<particles::Vec<2>> points_;
   std::vector<std::array<std::uint32_t, 3>> triangles_;  // counterclockwise, longest edge <= max_edge
 };
 

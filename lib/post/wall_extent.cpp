@@ -7,7 +7,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "sph/parallel.hpp"
+#include "particles/parallel.hpp"
 
 namespace frostwall::post {
 
@@ -179,7 +179,7 @@ WallReading WallGauge::measure(const std::vector<double>& liquid_fraction,
   const std::size_t n = radii_.size();
   std::vector<double> f(n * fan_.rays, std::numeric_limits<double>::quiet_NaN());
   std::vector<std::pair<std::size_t, std::size_t>> read(fan_.rays, {n, 0});  // [first, last] index read per ray
-  sph::for_each_item(fan_.rays, [&](std::size_t k) {
+  particles::for_each_item(fan_.rays, [&](std::size_t k) {
     double* ray = f.data() + k * n;
     auto unfrozen_at = [&](std::size_t i) {  // reads sample i of the ray
       if (std::isnan(ray[i])) ray[i] = fan_probe_.at(k * n + i, liquid_fraction);

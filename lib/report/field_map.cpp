@@ -13,7 +13,7 @@
 
 namespace frostwall::report {
 
-using Vec2 = sph::Vec<2>;
+using Vec2 = particles::Vec<2>;
 using svg::num;
 
 struct FieldMap::Probe {
@@ -24,8 +24,8 @@ struct FieldMap::Probe {
 
 namespace {
 
-sph::ParticleSet<2> particle_set(const FieldSnapshot& s, const WedgeSymmetry& w, bool mirrored, double spacing) {
-  sph::ParticleSet<2> P;
+particles::ParticleSet<2> particle_set(const FieldSnapshot& s, const WedgeSymmetry& w, bool mirrored, double spacing) {
+  particles::ParticleSet<2> P;
   for (std::size_t i = 0; i < s.position.size(); ++i) P.add(s.position[i], s.volume[i], s.boundary[i]);
   P.order_free_first();  // already so in the files; a no-op kept for safety
   P.spacing = spacing;

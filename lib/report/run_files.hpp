@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "post/isoline.hpp"
-#include "sph/vec.hpp"
+#include "particles/vec.hpp"
 
 namespace frostwall::report {
 
@@ -27,7 +27,7 @@ CsvTable read_csv(const std::filesystem::path& file);
 
 // The particles of a field_XXXX.vtu snapshot and the fields the report uses.
 struct FieldSnapshot {
-  std::vector<sph::Vec<2>> position;
+  std::vector<particles::Vec<2>> position;
   std::vector<double> volume;
   std::vector<int> boundary;  // -1 free
   std::vector<double> temperature;

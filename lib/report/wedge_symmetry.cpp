@@ -5,7 +5,7 @@
 
 namespace frostwall::report {
 
-using Vec2 = sph::Vec<2>;
+using Vec2 = particles::Vec<2>;
 
 Vec2 WedgeSymmetry::fold(const Vec2& x) const {
   if (mirror_lines <= 0) return x;

@@ -6,7 +6,7 @@
 
 #include <vector>
 
-#include "sph/vec.hpp"
+#include "particles/vec.hpp"
 
 namespace frostwall::report {
 
@@ -16,11 +16,11 @@ struct WedgeSymmetry {
   double angle = 0.0;    // rad, pi / M
 
   // The point of the wedge with the same field value as x.
-  sph::Vec<2> fold(const sph::Vec<2>& x) const;
+  particles::Vec<2> fold(const particles::Vec<2>& x) const;
   // The 2M elements of the dihedral group (rotations, then reflections), as
   // functions applied by `apply`; identity first. One element when M = 0.
   std::size_t copies() const { return mirror_lines > 0 ? 2 * static_cast<std::size_t>(mirror_lines) : 1; }
-  sph::Vec<2> apply(std::size_t copy, const sph::Vec<2>& x) const;
+  particles::Vec<2> apply(std::size_t copy, const particles::Vec<2>& x) const;
 };
 
 }  // namespace frostwall::report

@@ -41,7 +41,7 @@ double graded_wedge_particles(const geometry::SizeField& size, const geometry::W
       const double r = a + (i + 0.5) * dr;
       for (int j = 0; j < angles; ++j) {
         const double theta = wedge.start_angle + (j + 0.5) * dtheta;
-        count += density(size(sph::Vec<2>(r * std::cos(theta), r * std::sin(theta)))) * r * dr * dtheta;
+        count += density(size(particles::Vec<2>(r * std::cos(theta), r * std::sin(theta)))) * r * dr * dtheta;
       }
     }
   }
@@ -73,7 +73,7 @@ double rectangle_particles(const project::Project& p, const project::Rectangle& 
   double count = 0.0;
   for (int i = 0; i < n; ++i)
     for (int j = 0; j < n; ++j)
-      count += density(size(sph::Vec<2>((i + 0.5) * rect.width / n, (j + 0.5) * rect.height / n)));
+      count += density(size(particles::Vec<2>((i + 0.5) * rect.width / n, (j + 0.5) * rect.height / n)));
   return count * rect.width * rect.height / (n * n);
 }
 

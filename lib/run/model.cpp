@@ -91,7 +91,7 @@ Model build_model(const project::Project& p) {
   m.h = m.smoothing.smallest();
   m.kernel = sph::make_kernel<2>(p.numerics.kernel);
   thermal::PhaseChangeLaw law(p.soil);
-  sph::LaplacianPairs pairs =
+  particles::PairWeights pairs =
       sph::build_laplacian_pairs<2>(m.particles(), *m.kernel,
                                     {m.smoothing, p.numerics.laplacian, law.anisotropic(), m.particles().graded()});
   m.model = std::make_unique<thermal::ThermalModel>(

@@ -32,7 +32,7 @@ struct Model {
   std::unique_ptr<thermal::ThermalModel> model;
   std::unique_ptr<thermal::Integrator> integrator;
 
-  const sph::ParticleSet<2>& particles() const { return scene->particles; }
+  const particles::ParticleSet<2>& particles() const { return scene->particles; }
 };
 
 // The spacing used when numerics.spacing is not given.

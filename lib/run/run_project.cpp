@@ -15,7 +15,7 @@
 #include "thermal/backward_euler.hpp"
 #include "thermal/super_time_stepping.hpp"
 #include "run/shaft_results.hpp"
-#include "sph/symmetry_group.hpp"
+#include "particles/symmetry_group.hpp"
 #include "io/atomic_file.hpp"
 #include "io/point_cloud_vtk.hpp"
 #include "post/front.hpp"
@@ -52,7 +52,7 @@ std::vector<std::string> snapshot_stems(const project::TimeSettings& time, const
   return stems;
 }
 
-io::PointCloudFrame frame_of(const sph::ParticleSet<2>& particles, const thermal::ThermalModel& model) {
+io::PointCloudFrame frame_of(const particles::ParticleSet<2>& particles, const thermal::ThermalModel& model) {
   io::PointCloudFrame frame;
   const std::size_t n = particles.size();
   frame.points.reserve(n);
@@ -71,9 +71,9 @@ io::PointCloudFrame frame_of(const sph::ParticleSet<2>& particles, const thermal
 }
 
 // The whole ring for ParaView: every copy of the wedge under its mirror group.
-io::PointCloudFrame full_ring(const io::PointCloudFrame& wedge, const std::vector<sph::MirrorPlane<2>>& mirrors,
+io::PointCloudFrame full_ring(const io::PointCloudFrame& wedge, const std::vector<particles::MirrorPlane<2>>& mirrors,
                               double length_scale) {
-  const auto group = sph::symmetry_group(mirrors, length_scale);
+  const auto group = particles::symmetry_group(mirrors, length_scale);
   io::PointCloudFrame ring;
   ring.single_precision = true;  // 50x the wedge's particles: float32 halves the file and its write time
   for (const auto& field : wedge.fields)
@@ -82,7 +82,7 @@ io::PointCloudFrame full_ring(const io::PointCloudFrame& wedge, const std::vecto
   for (auto& field : ring.fields) field.second.clear();
   for (const auto& g : group) {
     for (const auto& x : wedge.points) {
-      const sph::Vec<2> y = g(sph::Vec<2>(x[0], x[1]));
+      const particles::Vec<2> y = g(particles::Vec<2>(x[0], x[1]));
       ring.points.push_back({y[0], y[1], 0.0});
     }
     for (auto& field : ring.fields)

@@ -1,17 +1,19 @@
 #include "run/shaft_results.hpp"
 
+
 #include <algorithm>
 #include <cmath>
 #include <map>
 #include <fmt/core.h>
 #include <numbers>
 
+#include "particles/mirror_images.hpp"
 #include "io/atomic_file.hpp"
 #include "io/polyline_vtk.hpp"
 #include "post/closure.hpp"
 #include "post/isoline.hpp"
 #include "sph/laplacian.hpp"
-#include "sph/symmetry_group.hpp"
+#include "particles/symmetry_group.hpp"
 
 namespace frostwall::run {
 
@@ -65,17 +67,17 @@ ShaftResults::ShaftResults(const project::Project& p, const Model& m)
       sampler_, post::RayFan{planes_.OA, planes_.OB - planes_.OA, 2, 0.0, R, 0.5 * dx}, planes_.ring_radii);
 
   // Profiles every 0.05 m along OA and OB (the paper's Fig. 5).
-  std::vector<sph::Vec<2>> on_OA, on_OB;
+  std::vector<particles::Vec<2>> on_OA, on_OB;
   for (double r = 0.0; r <= R + 1e-9; r += 0.05) {
     profile_radii_.push_back(r);
     on_OA.emplace_back(r * std::cos(planes_.OA), r * std::sin(planes_.OA));
     on_OB.emplace_back(r * std::cos(planes_.OB), r * std::sin(planes_.OB));
   }
-  auto in_pipe = [&](const std::vector<sph::Vec<2>>& points) {
+  auto in_pipe = [&](const std::vector<particles::Vec<2>>& points) {
     std::vector<char> inside(points.size(), 0);
     if (std::get<project::ShaftSection>(p.geometry).pipe.model == project::PipeModel::point) return inside;
     for (std::size_t k = 0; k < points.size(); ++k)
-      for (const auto& q : shaft.pipes) inside[k] |= (points[k] - sph::Vec<2>(q.x, q.y)).norm() < shaft.pipe_radius;
+      for (const auto& q : shaft.pipes) inside[k] |= (points[k] - particles::Vec<2>(q.x, q.y)).norm() < shaft.pipe_radius;
     return inside;
   };
   in_pipe_OA_ = in_pipe(on_OA);
@@ -84,10 +86,10 @@ ShaftResults::ShaftResults(const project::Project& p, const Model& m)
   profile_OB_ = std::make_unique<post::PointProbe>(sampler_, on_OB, true);
 
   // Sensors anywhere in the section: mapped into the wedge by its symmetry.
-  const auto group = sph::symmetry_group(m.particles().mirrors, R);
-  std::vector<sph::Vec<2>> where;
+  const auto group = particles::symmetry_group(m.particles().mirrors, R);
+  std::vector<particles::Vec<2>> where;
   for (const auto& s : p.monitoring) {
-    sph::Vec<2> x(s.x, s.y), inside = x;
+    particles::Vec<2> x(s.x, s.y), inside = x;
     for (const auto& g : group)
       if (geometry::inside_wedge(shaft.wedge, g(x))) {
         inside = g(x);
@@ -102,7 +104,7 @@ ShaftResults::ShaftResults(const project::Project& p, const Model& m)
   const auto& P = m.particles();
   curve_points_ = P.position;
   for (std::uint32_t i = 0; i < P.size(); ++i) curve_source_.push_back(i);
-  const auto images = sph::mirror_images(P, 3.0 * P.coarsest_spacing(), post::image_reach(P));
+  const auto images = particles::mirror_images(P, 3.0 * P.coarsest_spacing(), post::image_reach(P));
   curve_points_.insert(curve_points_.end(), images.position.begin(), images.position.end());
   curve_source_.insert(curve_source_.end(), images.source.begin(), images.source.end());
   if (p.output.full_ring && !P.mirrors.empty())
@@ -146,7 +148,7 @@ void ShaftResults::snapshot(double t, const thermal::ThermalModel& model, const 
   // cloud, three local spacings.
   const auto& P = model_.particles();
   // The triangulations are built at the first snapshot and reused.
-  auto mesh_of = [&](const std::vector<sph::Vec<2>>& points, const std::vector<std::uint32_t>& source) {
+  auto mesh_of = [&](const std::vector<particles::Vec<2>>& points, const std::vector<std::uint32_t>& source) {
     if (!P.graded()) return std::make_unique<post::IsolineMesh>(points, 3.0 * P.spacing);
     std::vector<double> limit(points.size());
     for (std::size_t k = 0; k < points.size(); ++k) limit[k] = 3.0 * P.spacing_of(source[k]);

@@ -71,7 +71,7 @@ class ShaftResults {
   // Points for the front curves: the particles and their copies around the
   // ring (full ring) or their mirror images (wedge), with the source index.
   // Triangulated at the first snapshot, reused for every later one.
-  std::vector<sph::Vec<2>> curve_points_, ring_points_;
+  std::vector<particles::Vec<2>> curve_points_, ring_points_;
   std::vector<std::uint32_t> curve_source_, ring_source_;
   std::unique_ptr<post::IsolineMesh> curve_mesh_, ring_mesh_;
 };

@@ -10,6 +10,8 @@
 
 namespace frostwall::sph {
 
+using particles::Vec;
+
 namespace {
 
 template <int Dim>

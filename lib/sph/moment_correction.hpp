@@ -42,6 +42,8 @@
 
 namespace frostwall::sph {
 
+using particles::Vec;
+
 // The system for the multipliers, one block row (lambda, mu, scaled by the
 // particle's length) per corrected particle.
 template <int Dim>

@@ -9,9 +9,11 @@
 #include <cstddef>
 #include <vector>
 
-#include "sph/particle_set.hpp"
+#include "particles/particle_set.hpp"
 
 namespace frostwall::sph {
+
+using particles::ParticleSet;
 
 struct SmoothingLengths {
   double uniform = 0.0;

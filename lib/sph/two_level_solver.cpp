@@ -4,9 +4,11 @@
 #include <Eigen/SparseCholesky>
 #include <cmath>
 
-#include "sph/parallel.hpp"
+#include "particles/parallel.hpp"
 
 namespace frostwall::sph {
+
+using particles::for_each_particle;
 
 template <int B>
 void BlockMatrix<B>::multiply(const Eigen::VectorXd& x, Eigen::VectorXd& y) const {

@@ -1,11 +1,18 @@
 #include "sph/wall_extrapolation.hpp"
 
+
 #include <Eigen/Dense>
 
-#include "sph/cell_list.hpp"
+#include "particles/mirror_images.hpp"
+#include "particles/cell_list.hpp"
 #include "sph/laplacian.hpp"
 
 namespace frostwall::sph {
+
+using particles::Vec;
+using particles::ParticleSet;
+using particles::CellList;
+using particles::mirror_images;
 
 template <int Dim>
 WallExtrapolation build_wall_extrapolation(const ParticleSet<Dim>& particles, const Kernel& kernel,

@@ -9,10 +9,12 @@
 #include <vector>
 
 #include "sph/kernel.hpp"
-#include "sph/particle_set.hpp"
+#include "particles/particle_set.hpp"
 #include "sph/smoothing_lengths.hpp"
 
 namespace frostwall::sph {
+
+using particles::ParticleSet;
 
 struct WallExtrapolation {
   // Per fixed particle (index - n_free): its weights over free particles;

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "sph/parallel.hpp"
+#include "particles/parallel.hpp"
 
 namespace frostwall::thermal {
 
@@ -78,7 +78,7 @@ struct BackwardEuler::LinearSystem {
     const auto& P = model.pairs();
     double* value = A.valuePtr();
     const int* outer = A.outerIndexPtr();
-    sph::for_each_particle(P.n_free, [&](std::size_t i) {
+    particles::for_each_particle(P.n_free, [&](std::size_t i) {
       std::fill(value + outer[i], value + outer[i + 1], 0.0);
       if (slope[i] == 0.0) {
         value[diagonal[i]] = 1.0;
@@ -140,7 +140,7 @@ bool BackwardEuler::try_step(ThermalModel& model, double t, double dt) {
     const std::vector<double>& a_ = model.pair_coefficients();
     const auto& T = model.temperature();
     const auto& H = model.enthalpy();
-    const double worst = sph::max_over_particles(n, [&](std::size_t i) {
+    const double worst = particles::max_over_particles(n, [&](std::size_t i) {
       double flow = 0.0;
       for (std::size_t e = P.row_start[i]; e < P.row_start[i + 1]; ++e) flow += a_[e] * (T[P.column[e]] - T[i]);
       residual_[i] = flow - (H[i] - H_old[i]) / dt;
@@ -150,7 +150,7 @@ bool BackwardEuler::try_step(ThermalModel& model, double t, double dt) {
     if (worst <= ntol) return true;
     ++stats_.newton_iterations;
 
-    sph::for_each_particle(n, [&](std::size_t i) {
+    particles::for_each_particle(n, [&](std::size_t i) {
       slope[i] = law.temperature_slope(H[i], residual_[i]);
       rhs[i] = slope[i] == 0.0 ? 0.0 : residual_[i];
     });
@@ -162,7 +162,7 @@ bool BackwardEuler::try_step(ThermalModel& model, double t, double dt) {
     stats_.linear_iterations += static_cast<std::size_t>(system_->solver.iterations());
 
     // The new enthalpies; a pinned particle takes what its row leaves over.
-    sph::for_each_particle(n, [&](std::size_t i) {
+    particles::for_each_particle(n, [&](std::size_t i) {
       double dH;
       if (slope[i] != 0.0) {
         dH = x[i] / slope[i];

@@ -1,6 +1,6 @@
 #include "thermal/integrator.hpp"
 
-#include "sph/parallel.hpp"
+#include "particles/parallel.hpp"
 
 namespace frostwall::thermal {
 

@@ -8,7 +8,7 @@
 #include <cmath>
 #include <vector>
 
-#include "sph/parallel.hpp"
+#include "particles/parallel.hpp"
 #include "thermal/thermal_model.hpp"
 
 namespace frostwall::thermal {
@@ -30,7 +30,7 @@ class ActivityStepControl {
   void adapt(const ThermalModel& model, double dt) {
     const double scale = enthalpy_scale(model.law());
     const auto& H = model.enthalpy();
-    const double change = sph::max_over_particles(
+    const double change = particles::max_over_particles(
         model.free_count(), [&](std::size_t i) { return std::abs(H[i] - before_[i]) / scale; });
     const double proposed = change > 0.0 ? 0.9 * dt * step_change_ / change : growth_ * step_;
     step_ = std::min(max_step_, std::clamp(proposed, 0.25 * step_, growth_ * step_));

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <limits>
 
-#include "sph/parallel.hpp"
+#include "particles/parallel.hpp"
 
 namespace frostwall::thermal {
 
@@ -28,13 +28,13 @@ double largest_eigenvalue(const ThermalModel& model, double C) {
   double lambda = 0.0;
   for (int it = 0; it < 150; ++it) {
     for (std::size_t i = n; i < N; ++i) x[i] = W.row_start.empty() || W.on_wall(i - n) ? 0.0 : -W.value(i - n, x);
-    sph::for_each_particle(n, [&](std::size_t i) {
+    particles::for_each_particle(n, [&](std::size_t i) {
       double r = 0.0;
       for (std::size_t e = P.row_start[i]; e < P.row_start[i + 1]; ++e) r += a[e] * (x[P.column[e]] - x[i]);
       y[i] = r / C;
     });
-    const double xx = sph::sum_over_particles(n, [&](std::size_t i) { return V[i] * x[i] * x[i]; });
-    const double yy = sph::sum_over_particles(n, [&](std::size_t i) { return V[i] * y[i] * y[i]; });
+    const double xx = particles::sum_over_particles(n, [&](std::size_t i) { return V[i] * x[i] * x[i]; });
+    const double yy = particles::sum_over_particles(n, [&](std::size_t i) { return V[i] * y[i] * y[i]; });
     if (!(yy > 0.0) || !(xx > 0.0)) return 0.0;
     lambda = std::sqrt(yy / xx);
     for (std::size_t i = 0; i < n; ++i) x[i] = y[i] / lambda;
@@ -66,7 +66,7 @@ double SuperTimeStepping::forward_euler_limit(const ThermalModel& model) {
   const auto& law = model.law();
   const double C_min = smallest_capacity(law);
   const std::size_t n = P.n_free;
-  const double worst = sph::max_over_particles(n, [&](std::size_t i) {
+  const double worst = particles::max_over_particles(n, [&](std::size_t i) {
     double row = 0.0;
     for (std::size_t e = P.row_start[i]; e < P.row_start[i + 1]; ++e) {
       const std::uint32_t j = P.column[e];

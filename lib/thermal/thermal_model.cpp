@@ -1,11 +1,11 @@
 #include "thermal/thermal_model.hpp"
 
-#include "sph/parallel.hpp"
+#include "particles/parallel.hpp"
 
 namespace frostwall::thermal {
 
 ThermalModel::ThermalModel(std::vector<double> volume, std::vector<int> boundary_id,
-                           sph::LaplacianPairs pairs, PhaseChangeLaw law,
+                           particles::PairWeights pairs, PhaseChangeLaw law,
                            std::vector<FixedTemperatureBoundary> boundaries, ConductionOptions options,
                            double initial_temperature, sph::WallExtrapolation beyond_wall)
     : volume_(std::move(volume)),
@@ -16,7 +16,7 @@ ThermalModel::ThermalModel(std::vector<double> volume, std::vector<int> boundary
       options_(options),
       beyond_wall_(std::move(beyond_wall)),
       anisotropic_(law_.anisotropic()) {
-  sph::flush_denormals_to_zero();
+  particles::flush_denormals_to_zero();
   const std::size_t n = volume_.size();
   H_.resize(n);
   T_.resize(n);
@@ -70,7 +70,7 @@ const std::vector<double>& ThermalModel::pair_coefficients() const {
   const auto& P = pairs_;
   if (all_changed_) {
     coefficient_.resize(P.pairs());
-    sph::for_each_particle(P.n_free, [&](std::size_t i) {
+    particles::for_each_particle(P.n_free, [&](std::size_t i) {
       for (std::size_t e = P.row_start[i]; e < P.row_start[i + 1]; ++e) coefficient_[e] = coefficient(i, P.column[e], e);
     });
     all_changed_ = false;
@@ -97,7 +97,7 @@ void ThermalModel::conduction_rate(std::vector<double>& rate) const {
   const double* T = T_.data();
   // Four partial sums: one sum would chain every pair's multiply-add on the
   // one before (the add's latency, not memory, would set the pace).
-  sph::for_each_particle(n, [&](std::size_t i) {
+  particles::for_each_particle(n, [&](std::size_t i) {
     const double Ti = T[i];
     double s0 = 0.0, s1 = 0.0, s2 = 0.0, s3 = 0.0;
     std::size_t e = start[i];
@@ -137,7 +137,7 @@ std::vector<double> ThermalModel::boundary_heat_rate() const {
 }
 
 double ThermalModel::stored_heat() const {
-  return sph::sum_over_particles(pairs_.n_free, [&](std::size_t i) { return volume_[i] * H_[i]; });
+  return particles::sum_over_particles(pairs_.n_free, [&](std::size_t i) { return volume_[i] * H_[i]; });
 }
 
 }  // namespace frostwall::thermal

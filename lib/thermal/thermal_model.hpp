@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "project/project.hpp"
-#include "sph/laplacian.hpp"
-#include "sph/parallel.hpp"
+#include "particles/pair_weights.hpp"
+#include "particles/parallel.hpp"
 #include "sph/wall_extrapolation.hpp"
 #include "thermal/boundary.hpp"
 #include "thermal/phase_change.hpp"
@@ -47,14 +47,14 @@ class ThermalModel {
   // boundary_id[i] indexes `boundaries` for fixed particles.
   // `beyond_wall` gives the fixed particles' antisymmetric extension; when
   // empty every fixed particle holds its wall's temperature.
-  ThermalModel(std::vector<double> volume, std::vector<int> boundary_id, sph::LaplacianPairs pairs,
+  ThermalModel(std::vector<double> volume, std::vector<int> boundary_id, particles::PairWeights pairs,
                PhaseChangeLaw law, std::vector<FixedTemperatureBoundary> boundaries,
                ConductionOptions options, double initial_temperature, sph::WallExtrapolation beyond_wall = {});
 
   std::size_t size() const { return volume_.size(); }
   std::size_t free_count() const { return pairs_.n_free; }
   const PhaseChangeLaw& law() const { return law_; }
-  const sph::LaplacianPairs& pairs() const { return pairs_; }
+  const particles::PairWeights& pairs() const { return pairs_; }
   const std::vector<FixedTemperatureBoundary>& boundaries() const { return boundaries_; }
 
   // Fixed particles take their boundary's temperature at time t (on the
@@ -105,7 +105,7 @@ class ThermalModel {
 
   std::vector<double> volume_;
   std::vector<int> boundary_id_;
-  sph::LaplacianPairs pairs_;
+  particles::PairWeights pairs_;
   PhaseChangeLaw law_;
   std::vector<FixedTemperatureBoundary> boundaries_;
   ConductionOptions options_;
@@ -134,7 +134,7 @@ template <class NewEnthalpy>
 void ThermalModel::update_free(NewEnthalpy&& new_enthalpy) {
   const PhaseChangeLaw law = law_;
   const StateView state = state_view();
-  sph::for_each_particle(pairs_.n_free, [&](std::size_t i) { state.set(law, i, new_enthalpy(i)); });
+  particles::for_each_particle(pairs_.n_free, [&](std::size_t i) { state.set(law, i, new_enthalpy(i)); });
 }
 
 }  // namespace frostwall::thermal

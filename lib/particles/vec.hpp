@@ -4,9 +4,9 @@
 
 #include <Eigen/Core>
 
-namespace frostwall::sph {
+namespace frostwall::particles {
 
 template <int Dim>
 using Vec = Eigen::Matrix<double, Dim, 1>;
 
-}  // namespace frostwall::sph
+}  // namespace frostwall::particles

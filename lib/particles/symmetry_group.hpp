@@ -5,9 +5,9 @@
 #include <Eigen/Dense>
 #include <vector>
 
-#include "sph/particle_set.hpp"
+#include "particles/particle_set.hpp"
 
-namespace frostwall::sph {
+namespace frostwall::particles {
 
 // x -> A x + b.
 template <int Dim>
@@ -32,4 +32,4 @@ struct Isometry {
 template <int Dim>
 std::vector<Isometry<Dim>> symmetry_group(const std::vector<MirrorPlane<Dim>>& planes, double length_scale);
 
-}  // namespace frostwall::sph
+}  // namespace frostwall::particles

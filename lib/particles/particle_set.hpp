@@ -9,9 +9,9 @@
 #include <limits>
 #include <vector>
 
-#include "sph/vec.hpp"
+#include "particles/vec.hpp"
 
-namespace frostwall::sph {
+namespace frostwall::particles {
 
 // A plane (line in 2-D) through `point` with unit `normal`; reflecting a
 // particle across it makes the plane adiabatic (a symmetry plane).
@@ -87,4 +87,4 @@ void ParticleSet<Dim>::order_free_first() {
   *this = std::move(sorted);
 }
 
-}  // namespace frostwall::sph
+}  // namespace frostwall::particles

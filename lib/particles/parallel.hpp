@@ -6,7 +6,7 @@
 #include <cstddef>
 #include <xmmintrin.h>
 
-namespace frostwall::sph {
+namespace frostwall::particles {
 
 // Below this many particles a loop runs on one thread: the fork/join of a
 // parallel region would cost more than the work, and with more threads
@@ -61,4 +61,4 @@ inline void flush_denormals_to_zero() {
   _mm_setcsr(_mm_getcsr() | ftz_daz);
 }
 
-}  // namespace frostwall::sph
+}  // namespace frostwall::particles

@@ -8,9 +8,9 @@
 #include <cstdint>
 #include <vector>
 
-#include "sph/vec.hpp"
+#include "particles/vec.hpp"
 
-namespace frostwall::sph {
+namespace frostwall::particles {
 
 template <int Dim>
 class CellList {
@@ -112,4 +112,4 @@ class CellList {
   std::vector<std::uint32_t> sorted_;
 };
 
-}  // namespace frostwall::sph
+}  // namespace frostwall::particles
