@@ -292,7 +292,7 @@ Numerics read_numerics(const Node& n, bool shaft) {
   };
   if (!n.object({"spacing", "kernel", "smoothing_ratio", "integrator", "beta", "step_change", "conductivity_mean",
                  "laplacian", "symmetry", "placement", "coarsening", "growth", "band_coarsening", "band_width",
-                 "max_particles"})) {
+                 "max_particles", "method", "horizon"})) {
     default_step_change();
     return numerics;
   }
@@ -316,6 +316,13 @@ Numerics read_numerics(const Node& n, bool shaft) {
   numerics.laplacian = n["laplacian"].choice<LaplacianForm>(
       "laplacian", {{"renormalised", LaplacianForm::renormalised}, {"plain", LaplacianForm::plain}})
                            .value_or(numerics.laplacian);
+  numerics.method = n["method"].choice<Method>("method", {{"sph", Method::sph}, {"pd", Method::pd}})
+                        .value_or(numerics.method);
+  if (const auto h = n["horizon"].positive()) {
+    if (*h < 2.0 || *h > 6.0) n["horizon"].problem(fmt::format("must be between 2 and 6 spacings, got {}", *h));
+    else numerics.horizon = *h;
+  }
+  if (numerics.method != Method::pd && n["horizon"].present()) n["horizon"].problem(R"(only used with "method": "pd")");
   numerics.use_symmetry = n["symmetry"].choice<bool>("symmetry", {{"auto", true}, {"off", false}})
                               .value_or(numerics.use_symmetry);
   numerics.placement = n["placement"].choice<Placement>(
@@ -482,6 +489,14 @@ Project read_project(const Node& root) {
         "numerics.smoothing_ratio: {} is outside the usual 1.0..2.5 (too few neighbours below, "
         "a smeared front above)",
         s));
+  if (project.numerics.method == Method::pd) {
+    // The PD bonds use one horizon for the whole cloud, and an isotropic
+    // micro-conductivity.
+    if (project.numerics.placement == Placement::graded)
+      root["numerics"]["method"].problem(R"("pd" needs "placement": "lattice" (one horizon for the whole cloud))");
+    if (project.soil.frozen.anisotropic() || project.soil.unfrozen.anisotropic())
+      root["numerics"]["method"].problem(R"("pd" needs an isotropic soil (one conductivity per phase))");
+  }
   project.design = read_design(root["design"]);
   project.monitoring = read_monitoring(root["monitoring"]);
   check_sensors_inside(project, root["monitoring"]);

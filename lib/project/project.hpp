@@ -121,6 +121,8 @@ enum class IntegratorKind { explicit_euler, implicit, rkl2 };
 enum class ConductivityMean { harmonic, arithmetic };
 enum class LaplacianForm { renormalised, plain };
 enum class Placement { lattice, graded };
+// The particle method of heat conduction: SPH pair weights or PD thermal bonds.
+enum class Method { sph, pd };
 
 // numerics.placement "graded": the spacing grows from numerics.spacing
 // (finest, at the pipe walls) through a wall band to a coarse far field.
@@ -146,6 +148,10 @@ struct Numerics {
   double step_change = 0.25;
   ConductivityMean conductivity_mean = ConductivityMean::harmonic;
   LaplacianForm laplacian = LaplacianForm::renormalised;
+  Method method = Method::sph;
+  // PD horizon delta in spacings; 3.015 so that no neighbour sits exactly
+  // on it (the Madenci & Oterkus book code's choice).
+  double horizon = 3.015;
   // Shaft sections: simulate the smallest mirror-symmetric wedge ("auto"),
   // or the whole ring ("off"; a check of the wedge, or for asymmetric ground).
   bool use_symmetry = true;

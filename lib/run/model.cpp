@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "geometry/layout.hpp"
+#include "pd/conduction_bonds.hpp"
 #include "geometry/symmetry.hpp"
 #include "sph/laplacian.hpp"
 #include "sph/wall_extrapolation.hpp"
@@ -57,6 +58,9 @@ Model build_model(const project::Project& p) {
   Model m;
   const double spacing = p.numerics.spacing.value_or(default_spacing(p));
   m.h = p.numerics.smoothing_ratio * spacing;
+  // PD bonds reach a horizon: the fixed layers beyond a held face must be
+  // as deep (the scene builders lay ceil(2h / spacing) of them).
+  if (p.numerics.method == project::Method::pd) m.h = std::max(m.h, 0.5 * p.numerics.horizon * spacing);
   const bool graded = p.numerics.placement == project::Placement::graded;
   if (const auto* rect = std::get_if<project::Rectangle>(&p.geometry)) {
     auto scene = std::make_unique<geometry::RectangleScene>(
@@ -92,8 +96,11 @@ Model build_model(const project::Project& p) {
   m.kernel = sph::make_kernel<2>(p.numerics.kernel);
   thermal::PhaseChangeLaw law(p.soil);
   particles::PairWeights pairs =
-      sph::build_laplacian_pairs<2>(m.particles(), *m.kernel,
-                                    {m.smoothing, p.numerics.laplacian, law.anisotropic(), m.particles().graded()});
+      p.numerics.method == project::Method::pd
+          ? pd::build_conduction_bonds(m.particles(), {p.numerics.horizon * spacing,
+                                                       p.numerics.laplacian == project::LaplacianForm::renormalised})
+          : sph::build_laplacian_pairs<2>(m.particles(), *m.kernel,
+                                          {m.smoothing, p.numerics.laplacian, law.anisotropic(), m.particles().graded()});
   m.model = std::make_unique<thermal::ThermalModel>(
       m.particles().volume, m.particles().boundary, std::move(pairs), law, m.scene->boundaries,
       thermal::ConductionOptions{p.numerics.conductivity_mean, p.numerics.laplacian}, p.domain.initial_temperature,
