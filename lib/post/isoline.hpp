@@ -41,6 +41,27 @@ std::vector<Polyline> isolines(const std::vector<particles::Vec<2>>& points, con
 std::vector<Polyline> isolines(const std::vector<particles::Vec<2>>& points, const std::vector<double>& values,
                                double level, const std::vector<double>& max_edge_at);
 
+// The pieces of each polyline inside a region (inside(x) true), in order;
+// a polyline kept whole keeps its closedness, pieces are open.
+template <class Inside>
+std::vector<Polyline> clip_polylines(const std::vector<Polyline>& lines, Inside&& inside) {
+  std::vector<Polyline> kept;
+  for (const auto& line : lines) {
+    Polyline piece;
+    auto flush = [&] {
+      if (piece.points.size() > 1) kept.push_back(piece);
+      piece = {};
+    };
+    for (const auto& x : line.points) {
+      if (inside(x)) piece.points.push_back(x);
+      else flush();
+    }
+    if (piece.points.size() == line.points.size()) piece.closed = line.closed;
+    flush();
+  }
+  return kept;
+}
+
 // The same, with the triangulation built once for points that do not move
 // (our particles): each call then costs one pass over the triangles.
 class IsolineMesh {

@@ -417,13 +417,33 @@ void check_sensors_inside(const Project& project, const Node& n) {
   }
 }
 
+// [x, y] in metres.
+std::optional<std::pair<double, double>> read_point(const Node& n) {
+  const auto size = n.required().array();
+  if (!size) return std::nullopt;
+  if (*size != 2 || !n.json()[0].is_number() || !n.json()[1].is_number()) {
+    n.problem("must be a point [x, y] in metres, got " + n.shown());
+    return std::nullopt;
+  }
+  return std::pair{n.json()[0].get<double>(), n.json()[1].get<double>()};
+}
+
 Output read_output(const Node& n) {
   Output output;
-  if (!n.object({"directory", "vtk", "full_ring", "report"})) return output;
+  if (!n.object({"directory", "vtk", "full_ring", "report", "front_along"})) return output;
   output.directory = n["directory"].required().string().value_or("");
   output.vtk = n["vtk"].boolean().value_or(true);
   output.full_ring = n["full_ring"].boolean().value_or(true);
   output.report = n["report"].boolean().value_or(true);
+  const Node lines = n["front_along"];
+  for (std::size_t i = 0; i < lines.array().value_or(0); ++i) {
+    const Node line = lines[i];
+    if (!line.object({"from", "to"})) continue;
+    const auto from = read_point(line["from"]), to = read_point(line["to"]);
+    if (!from || !to) continue;
+    if (*from == *to) line.problem("from and to must differ");
+    output.front_along.push_back({from->first, from->second, to->first, to->second});
+  }
   return output;
 }
 
@@ -501,6 +521,8 @@ Project read_project(const Node& root) {
   project.monitoring = read_monitoring(root["monitoring"]);
   check_sensors_inside(project, root["monitoring"]);
   project.output = read_output(root["output"].required());
+  if (!project.output.front_along.empty() && !std::holds_alternative<Rectangle>(project.geometry))
+    root["output"]["front_along"].problem(R"(only used with "geometry" (plain geometries))");
   return project;
 }
 

@@ -172,11 +172,19 @@ struct Sensor {
   double x = 0.0, y = 0.0;  // m; r/theta inputs are converted on reading
 };
 
+// A segment along which a plain geometry's frozen front is reported at
+// every snapshot: the distance from `from` to the first 0.5 crossing of
+// the liquid fraction (the corner freezing case: along the diagonal).
+struct FrontLine {
+  double from_x = 0.0, from_y = 0.0, to_x = 0.0, to_y = 0.0;  // m
+};
+
 struct Output {
   std::string directory;  // relative to the working directory
   bool vtk = true;
   bool full_ring = true;
   bool report = true;
+  std::vector<FrontLine> front_along;  // plain geometries
 };
 
 struct Project {

@@ -14,6 +14,7 @@
 #include "run/model.hpp"
 #include "thermal/backward_euler.hpp"
 #include "thermal/super_time_stepping.hpp"
+#include "run/plain_results.hpp"
 #include "run/shaft_results.hpp"
 #include "particles/symmetry_group.hpp"
 #include "io/atomic_file.hpp"
@@ -152,7 +153,9 @@ void run_project(const Project& p, const RunOptions& options) {
   if (built.shaft) closure.emplace(built, p.time.end, longest_step);
   const std::vector<double> times = built.shaft ? sample_times(p.time, 0) : series;
   std::unique_ptr<ShaftResults> results;
+  std::unique_ptr<PlainResults> plain;
   if (built.shaft) results = std::make_unique<ShaftResults>(p, built);
+  else plain = std::make_unique<PlainResults>(p, built);
   const double heat_before = model.stored_heat();
 
   thermal::TimeLoopObservers observers;
@@ -193,6 +196,8 @@ void run_project(const Project& p, const RunOptions& options) {
                    p.time.snapshots.begin();
     const bool is_snapshot = k < static_cast<long>(stems.size()) && std::abs(p.time.snapshots[k] - t) <= 1e-12 * p.time.end;
     if (results && is_snapshot) results->snapshot(t, m, out, stems[k]);
+    if (plain) plain->sample(t, m);
+    if (plain && is_snapshot) plain->snapshot(t, m, out, stems[k]);
     if (p.output.vtk && is_snapshot) {
       const auto frame = frame_of(particles, m);
       io::write_vtu(out / (stems[k] + ".vtu"), frame);
@@ -228,6 +233,8 @@ void run_project(const Project& p, const RunOptions& options) {
   } else {
     summary["front"] = front;
     summary["front_axis"] = face ? nlohmann::json{{"face", face->side}} : nlohmann::json(nullptr);
+    const nlohmann::json parts = plain->finish(out);
+    for (const char* key : {"front_along", "monitoring", "interface"}) summary[key] = parts[key];
   }
   summary.update(nlohmann::ordered_json{
       {"heat_balance",
@@ -240,6 +247,7 @@ void run_project(const Project& p, const RunOptions& options) {
         {"wall_seconds", wall_seconds},
         {"threads", omp_get_max_threads()},
         {"integrator", integrator_name(p.numerics.integrator)},
+        {"method", p.numerics.method == project::Method::pd ? "pd" : "sph"},
         {"spacing", particles.spacing},
         {"placement", particles.graded() ? "graded" : "lattice"},
         {"coarsest_spacing", particles.coarsest_spacing()},

@@ -160,22 +160,9 @@ void ShaftResults::snapshot(double t, const thermal::ThermalModel& model, const 
     return v;
   };
   const auto& wedge = model_.shaft->wedge;
-  std::vector<post::Polyline> kept;
   if (!curve_mesh_) curve_mesh_ = mesh_of(curve_points_, curve_source_);
-  for (const auto& line : curve_mesh_->isolines(values(curve_source_), 0.5)) {
-    post::Polyline piece;
-    auto flush = [&] {
-      if (piece.points.size() > 1) kept.push_back(piece);
-      piece = {};
-    };
-    for (const auto& x : line.points) {
-      if (geometry::inside_wedge(wedge, x)) piece.points.push_back(x);
-      else flush();
-    }
-    const bool whole = piece.points.size() == line.points.size();
-    if (whole) piece.closed = line.closed;
-    flush();
-  }
+  const auto kept = post::clip_polylines(curve_mesh_->isolines(values(curve_source_), 0.5),
+                                         [&](const particles::Vec<2>& x) { return geometry::inside_wedge(wedge, x); });
   const std::string file = "interface" + stem.substr(5) + ".vtp";
   io::write_vtp(out / file, kept);
   json entry = {{"day", t / day}, {"file", file}};
