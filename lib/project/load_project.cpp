@@ -450,7 +450,7 @@ Output read_output(const Node& n) {
 Project read_project(const Node& root) {
   Project project;
   root.object({"name", "description", "layout", "shaft", "geometry", "pipe", "soil", "domain", "time",
-               "numerics", "design", "monitoring", "output"});
+               "numerics", "design", "monitoring", "output", "mechanics"});
   project.name = root["name"].required().string().value_or("");
   project.description = root["description"].string(true).value_or("");
 
@@ -516,6 +516,12 @@ Project read_project(const Node& root) {
       root["numerics"]["method"].problem(R"("pd" needs "placement": "lattice" (one horizon for the whole cloud))");
     if (project.soil.frozen.anisotropic() || project.soil.unfrozen.anisotropic())
       root["numerics"]["method"].problem(R"("pd" needs an isotropic soil (one conductivity per phase))");
+  }
+  if (const Node mech = root["mechanics"]; mech.present()) {
+    if (shaft) mech.problem(R"(only used with "geometry" (plain geometries) in this version)");
+    else project.mechanics = read_mechanics(mech, project.warnings);
+    if (!shaft && project.numerics.placement == Placement::graded)
+      mech.problem(R"(needs "placement": "lattice" (one horizon for the whole cloud))");
   }
   project.design = read_design(root["design"]);
   project.monitoring = read_monitoring(root["monitoring"]);

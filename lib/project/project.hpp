@@ -11,6 +11,8 @@
 #include <variant>
 #include <vector>
 
+#include "project/mechanics.hpp"
+
 namespace frostwall::project {
 
 // ---- soil ------------------------------------------------------------------
@@ -198,6 +200,7 @@ struct Project {
   Design design;
   std::vector<Sensor> monitoring;
   Output output;
+  std::optional<Mechanics> mechanics;  // plain geometries: PD thermo-mechanics
   // Physically implausible but computable input (latent heat above that of
   // pure water, pipe warmer than the freezing point): printed and reported.
   std::vector<std::string> warnings;

@@ -1,0 +1,57 @@
+#include "pd/relaxation.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "particles/parallel.hpp"
+
+namespace frostwall::pd {
+
+RelaxationResult relax(const PdSolid& solid, std::vector<double>& u, const std::vector<double>& dT, double tolerance,
+                       int max_iterations) {
+  const std::size_t n = solid.size(), m = 2 * n;
+  u.resize(m, 0.0);
+  std::vector<double> lambda(m), v(m, 0.0), F(m), F_old(m);
+  for (std::size_t i = 0; i < n; ++i) lambda[2 * i] = lambda[2 * i + 1] = 0.25 * 4.0 * solid.stiffness()[i];
+  RelaxationResult result;
+  solid.forces(u, dT, F);
+  // A reference force: the stiffness times a strain of 1e-12 on a bond.
+  double scale = 0.0;
+  for (std::size_t i = 0; i < n; ++i) scale = std::max(scale, solid.stiffness()[i]);
+  const double horizon = solid.law().horizon;
+  auto rms = [&](auto&& value) {
+    return std::sqrt(particles::sum_over_particles(m, [&](std::size_t k) { return value(k) * value(k); }) / m);
+  };
+  if (rms([&](std::size_t k) { return F[k]; }) <= 1e-14 * scale * horizon) {
+    result.converged = true;
+    return result;
+  }
+  double c = 0.0;
+  for (int it = 0; it < max_iterations; ++it) {
+    // First step: v(1/2) = F / (2 lambda).
+    const double c_now = it == 0 ? 0.0 : c;
+    particles::for_each_particle(m, [&](std::size_t k) {
+      v[k] = it == 0 ? 0.5 * F[k] / lambda[k] : ((2.0 - c_now) * v[k] + 2.0 * F[k] / lambda[k]) / (2.0 + c_now);
+      u[k] += v[k];
+    });
+    F_old.swap(F);
+    solid.forces(u, dT, F);
+    // The global damping from the local stiffness of this step.
+    double num = 0.0, den = 0.0;
+    for (std::size_t k = 0; k < m; ++k) {
+      den += u[k] * u[k];
+      if (v[k] != 0.0) num += u[k] * u[k] * (-(F[k] - F_old[k]) / lambda[k] / v[k]);
+    }
+    c = num > 0.0 && den > 0.0 ? std::min(2.0 * std::sqrt(num / den), 1.99) : 0.0;
+    result.iterations = it + 1;
+    const double du = rms([&](std::size_t k) { return v[k]; }), uu = rms([&](std::size_t k) { return u[k]; });
+    result.increment = uu > 0.0 ? du / uu : 0.0;
+    if (du <= tolerance * uu || rms([&](std::size_t k) { return F[k]; }) <= 1e-14 * scale * horizon) {
+      result.converged = true;
+      break;
+    }
+  }
+  return result;
+}
+
+}  // namespace frostwall::pd

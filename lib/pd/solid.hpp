@@ -1,0 +1,90 @@
+// The peridynamic solid of a plain geometry: its free particles (the
+// thermal model's, same indices), the ghost points its supports add, and
+// the bonds of every free particle to the points within the horizon
+// (CSR, built once; broken bonds stay in the list with mu = 0).
+//
+// Supports are ghost points beyond the side, a horizon deep, apart from
+// the thermal model's fixed layers (physics.md: each boundary's layers are
+// excluded from the other physics' sums):
+//  - roller: the side is a symmetry plane; ghosts are mirror images of the
+//    particles (displacement reflected: u_ghost = A u_source), so the
+//    normal displacement on the side is 0 and nothing else is constrained,
+//    exactly, with no surface effect;
+//  - fixed / prescribed displacement: reflections of the particles across
+//    the side, held at 0 / the given displacement;
+//  - free: no ghosts; the surface correction (Madenci & Oterkus) scales
+//    each bond by the stiffness its ends lack: g_i^d = W_continuum / W_i
+//    under a uniaxial strain along d, bond factor
+//    [(n_x / gbar_x)^2 + (n_y / gbar_y)^2]^(-1/2), gbar the ends' mean.
+// A ghost's temperature change is its source's.
+#pragma once
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <vector>
+
+#include "particles/vec.hpp"
+#include "pd/bond_law.hpp"
+
+namespace frostwall::pd {
+
+using Vec2 = particles::Vec<2>;
+
+struct SolidGeometry {
+  std::vector<Vec2> position;  // free particles
+  std::vector<double> volume;
+  double spacing = 0.0;
+  double width = 0.0, height = 0.0;  // the rectangle [0, width] x [0, height]
+};
+
+class PdSolid {
+ public:
+  PdSolid(const SolidGeometry& geometry, const project::Mechanics& mechanics, const BondLaw& law);
+
+  std::size_t size() const { return n_; }
+  std::size_t bonds() const { return column_.size(); }
+  const BondLaw& law() const { return law_; }
+  const std::vector<Vec2>& position() const { return position_; }  // free particles, then ghosts
+
+  // Force per unit volume on every free particle (2 values each) at the
+  // displacement u (2 per free particle) and temperature change dT (K, per
+  // free particle, from the stress-free reference).
+  void forces(const std::vector<double>& u, const std::vector<double>& dT, std::vector<double>& force) const;
+  // Sum over i's bonds of c G V_j / |xi|: bounds the stiffness a particle
+  // sees (the relaxation's fictitious density).
+  const std::vector<double>& stiffness() const { return stiffness_; }
+  // Breaks every intact bond whose mechanical stretch s - s_T exceeds the
+  // critical stretch; returns how many broke (never mended).
+  std::size_t break_bonds(const std::vector<double>& u, const std::vector<double>& dT);
+  // Share of broken bonds of each free particle, weighted by volume.
+  std::vector<double> damage() const;
+  // Strain energy density of each free particle, 1/4 sum c G (s - s_T)^2 |xi| V_j.
+  std::vector<double> energy_density(const std::vector<double>& u, const std::vector<double>& dT) const;
+
+ private:
+  struct Ghost {
+    std::uint32_t source = 0;  // the free particle it images or reflects
+    Eigen::Matrix2d map = Eigen::Matrix2d::Identity();
+    bool held = false;         // true: displacement `held_u`; false: map * u_source
+    Vec2 held_u = Vec2::Zero();
+  };
+  Vec2 displacement(std::uint32_t k, const std::vector<double>& u) const;
+  std::uint32_t source(std::uint32_t k) const { return k < n_ ? k : ghosts_[k - n_].source; }
+  double thermal_stretch(std::size_t i, std::uint32_t k, const std::vector<double>& dT) const {
+    return law_.thermal_stretch_per_K * 0.5 * (dT[i] + dT[source(k)]);
+  }
+
+  BondLaw law_;
+  std::size_t n_ = 0;
+  std::vector<Vec2> position_;
+  std::vector<Ghost> ghosts_;
+  std::vector<std::size_t> start_;
+  std::vector<std::uint32_t> column_;   // point index (>= n_: ghost)
+  std::vector<double> length_;          // |xi|
+  std::vector<double> weight_;          // c G V_j share (force per unit volume per unit stretch)
+  std::vector<double> volume_share_;    // V_j share (damage)
+  mutable std::vector<std::uint8_t> intact_;
+  std::vector<double> stiffness_;
+};
+
+}  // namespace frostwall::pd

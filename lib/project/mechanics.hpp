@@ -1,0 +1,49 @@
+// The "mechanics" block of a plain-geometry project: the solid's elastic
+// and fracture properties, how each side is supported, and how the
+// quasi-static deformation follows the temperature (lib/pd/).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace frostwall::project {
+
+enum class Plane { strain, stress };
+
+// A side of the rectangle: free (traction-free), roller (normal
+// displacement 0, a symmetry plane), fixed (displacement 0), or held at a
+// prescribed displacement.
+struct Support {
+  enum class Kind { free, roller, fixed, displacement } kind = Kind::free;
+  double ux = 0.0, uy = 0.0;  // m, for Kind::displacement
+};
+
+struct SolidMaterial {
+  double elastic_modulus = 0.0;     // Pa
+  double poisson_ratio = 0.25;      // bond-based PD fixes it (1/4 plane strain, 1/3 plane stress)
+  double thermal_expansion = 0.0;   // 1/K, linear
+  std::optional<double> fracture_energy;  // J/m2; none: bonds never break
+  double reference_temperature = 0.0;     // degC: stress-free
+};
+
+struct Mechanics {
+  SolidMaterial material;
+  Plane plane = Plane::strain;
+  Support left, right, bottom, top;
+  // Adaptive dynamic relaxation stops when the RMS of a step's displacement
+  // increment falls below tolerance x the RMS displacement.
+  double tolerance = 1e-8;
+  // Re-equilibrate when some particle's temperature has moved this much
+  // (K) since the last equilibrium; and at every snapshot.
+  double temperature_change = 0.1;
+  int max_iterations = 200000;
+};
+
+namespace detail {
+class Node;
+}
+// Reads "mechanics" (problems and warnings appended; the Node reports paths).
+Mechanics read_mechanics(const detail::Node& n, std::vector<std::string>& warnings);
+
+}  // namespace frostwall::project
