@@ -29,6 +29,9 @@ void write_vtu(const fs::path& file, const PointCloudFrame& frame) {
       throw std::invalid_argument(fmt::format(
           "write_vtu: field '{}' has {} values for {} points", name, values.size(), n));
   }
+  for (const auto& [name, values] : frame.vectors)
+    if (values.size() != 3 * frame.points.size())
+      throw std::invalid_argument(fmt::format("write_vtu: vector '{}' has {} values for {} points", name, values.size(), n));
 
   vtkNew<vtkPoints> points;
   if (frame.single_precision) points->SetDataTypeToFloat();
@@ -54,16 +57,19 @@ void write_vtu(const fs::path& file, const PointCloudFrame& frame) {
   grid->SetPoints(points);
   grid->SetCells(VTK_VERTEX, cells);
 
-  for (const auto& [name, values] : frame.fields) {
+  auto add = [&](const std::string& name, const std::vector<double>& values, int components) {
     vtkSmartPointer<vtkDataArray> array;
     if (frame.single_precision) array = vtkSmartPointer<vtkFloatArray>::New();
     else array = vtkSmartPointer<vtkDoubleArray>::New();
     array->SetName(name.c_str());
-    array->SetNumberOfComponents(1);
+    array->SetNumberOfComponents(components);
     array->SetNumberOfTuples(n);
-    for (vtkIdType i = 0; i < n; ++i) array->SetComponent(i, 0, values[i]);
+    for (vtkIdType i = 0; i < n; ++i)
+      for (int c = 0; c < components; ++c) array->SetComponent(i, c, values[i * components + c]);
     grid->GetPointData()->AddArray(array);
-  }
+  };
+  for (const auto& [name, values] : frame.fields) add(name, values, 1);
+  for (const auto& [name, values] : frame.vectors) add(name, values, 3);
 
   write_atomically(file, [&](const fs::path& tmp) {
     vtkNew<vtkXMLUnstructuredGridWriter> writer;

@@ -15,6 +15,8 @@ struct PointCloudFrame {
   std::vector<std::array<double, 3>> points;
   // (name, one value per point); every field has points.size() values
   std::vector<std::pair<std::string, std::vector<double>>> fields;
+  // (name, three values per point: x, y, z), e.g. the displacement
+  std::vector<std::pair<std::string, std::vector<double>>> vectors;
   // Float32 points and fields: for large views (the full ring) where the
   // file size and write time matter more than the last digits.
   bool single_precision = false;

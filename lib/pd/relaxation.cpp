@@ -11,10 +11,17 @@ RelaxationResult relax(const PdSolid& solid, std::vector<double>& u, const std::
                        int max_iterations) {
   const std::size_t n = solid.size(), m = 2 * n;
   u.resize(m, 0.0);
-  std::vector<double> lambda(m), v(m, 0.0), F(m), F_old(m);
+  std::vector<double> lambda(m), v(m, 0.0), F(m), F_old(m), u_all, dT_all, thermal;
+  solid.extend_temperature(dT, dT_all);
+  if (solid.linear()) solid.thermal_force(dT_all, thermal);
+  auto forces = [&](std::vector<double>& out) {
+    solid.extend(u, u_all);
+    if (solid.linear()) solid.forces_linear(u_all, thermal, out);
+    else solid.forces_extended(u_all, dT_all, out);
+  };
   for (std::size_t i = 0; i < n; ++i) lambda[2 * i] = lambda[2 * i + 1] = 0.25 * 4.0 * solid.stiffness()[i];
   RelaxationResult result;
-  solid.forces(u, dT, F);
+  forces(F);
   // A reference force: the stiffness times a strain of 1e-12 on a bond.
   double scale = 0.0;
   for (std::size_t i = 0; i < n; ++i) scale = std::max(scale, solid.stiffness()[i]);
@@ -35,7 +42,7 @@ RelaxationResult relax(const PdSolid& solid, std::vector<double>& u, const std::
       u[k] += v[k];
     });
     F_old.swap(F);
-    solid.forces(u, dT, F);
+    forces(F);
     // The global damping from the local stiffness of this step.
     double num = 0.0, den = 0.0;
     for (std::size_t k = 0; k < m; ++k) {

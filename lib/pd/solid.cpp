@@ -18,7 +18,8 @@ struct Side {
 
 }  // namespace
 
-PdSolid::PdSolid(const SolidGeometry& g, const project::Mechanics& m, const BondLaw& law) : law_(law), n_(g.position.size()) {
+PdSolid::PdSolid(const SolidGeometry& g, const project::Mechanics& m, const BondLaw& law)
+    : law_(law), n_(g.position.size()), linear_(m.linear_kinematics) {
   const double delta = law.horizon, dx = g.spacing, reach = delta + 0.5 * dx;
   const std::array<Side, 4> sides{{{&m.left, Vec2(0, 0), Vec2(-1, 0)},
                                    {&m.right, Vec2(g.width, 0), Vec2(1, 0)},
@@ -80,6 +81,12 @@ PdSolid::PdSolid(const SolidGeometry& g, const project::Mechanics& m, const Bond
       volume_share_[e] = near[i][b].second;
     }
   intact_.assign(column_.size(), 1);
+  xi_.resize(2 * column_.size());
+  for (std::size_t i = 0; i < n_; ++i)
+    for (std::size_t e = start_[i]; e < start_[i + 1]; ++e) {
+      xi_[2 * e] = position_[column_[e]][0] - position_[i][0];
+      xi_[2 * e + 1] = position_[column_[e]][1] - position_[i][1];
+    }
 
   // Surface correction: each particle's energy under a uniaxial strain
   // along x and along y (ghosts following the same field), against the
@@ -112,6 +119,8 @@ PdSolid::PdSolid(const SolidGeometry& g, const project::Mechanics& m, const Bond
       stiffness_[i] += weight_[e] / length_[e];
     }
   });
+  stiffness3_.resize(column_.size());
+  for (std::size_t e = 0; e < column_.size(); ++e) stiffness3_[e] = weight_[e] / std::pow(length_[e], 3);
 }
 
 Vec2 PdSolid::displacement(std::uint32_t k, const std::vector<double>& u) const {
@@ -121,21 +130,100 @@ Vec2 PdSolid::displacement(std::uint32_t k, const std::vector<double>& u) const 
   return g.map * Vec2(u[2 * g.source], u[2 * g.source + 1]);
 }
 
+void PdSolid::extend(const std::vector<double>& u, std::vector<double>& u_all) const {
+  u_all.resize(2 * position_.size());
+  std::copy(u.begin(), u.begin() + 2 * n_, u_all.begin());
+  for (std::size_t g = 0; g < ghosts_.size(); ++g) {
+    const Vec2 v = displacement(static_cast<std::uint32_t>(n_ + g), u);
+    u_all[2 * (n_ + g)] = v[0];
+    u_all[2 * (n_ + g) + 1] = v[1];
+  }
+}
+
+void PdSolid::extend_temperature(const std::vector<double>& dT, std::vector<double>& dT_all) const {
+  dT_all.resize(position_.size());
+  for (std::size_t k = 0; k < position_.size(); ++k) dT_all[k] = dT[source(static_cast<std::uint32_t>(k))];
+}
+
 void PdSolid::forces(const std::vector<double>& u, const std::vector<double>& dT, std::vector<double>& force) const {
+  std::vector<double> u_all, dT_all;
+  extend(u, u_all);
+  extend_temperature(dT, dT_all);
+  forces_extended(u_all, dT_all, force);
+}
+
+void PdSolid::forces_extended(const std::vector<double>& u_all, const std::vector<double>& dT_all,
+                              std::vector<double>& force) const {
   force.resize(2 * n_);
+  const double* U = u_all.data();
+  const double* D = dT_all.data();
+  const double* X = xi_.data();
+  const double* W = weight_.data();
+  const double* Len = length_.data();
+  const std::uint32_t* C = column_.data();
+  const double half_kT = 0.5 * law_.thermal_stretch_per_K;
   particles::for_each_particle(n_, [&](std::size_t i) {
-    const Vec2 ui(u[2 * i], u[2 * i + 1]);
-    Vec2 f = Vec2::Zero();
-    for (std::size_t e = start_[i]; e < start_[i + 1]; ++e) {
-      if (!intact_[e]) continue;
-      const std::uint32_t k = column_[e];
-      const Vec2 y = position_[k] - position_[i] + displacement(k, u) - ui;
-      const double L = y.norm();
-      const double s = (L - length_[e]) / length_[e];
-      f += weight_[e] * (s - thermal_stretch(i, k, dT)) / L * y;
+    const double uxi = U[2 * i], uyi = U[2 * i + 1], Di = D[i];
+    double fx = 0.0, fy = 0.0;
+    for (std::size_t e = start_[i], end = start_[i + 1]; e < end; ++e) {
+      const std::uint32_t k = C[e];
+      const double yx = X[2 * e] + U[2 * k] - uxi, yy = X[2 * e + 1] + U[2 * k + 1] - uyi;
+      const double L = std::sqrt(yx * yx + yy * yy);
+      // w (s - s_T) / L with s = L / |xi| - 1: the force along y.
+      const double a = W[e] * ((L - Len[e]) / Len[e] - half_kT * (Di + D[k])) / L;
+      fx += a * yx;
+      fy += a * yy;
     }
-    force[2 * i] = f[0];
-    force[2 * i + 1] = f[1];
+    force[2 * i] = fx;
+    force[2 * i + 1] = fy;
+  });
+}
+
+void PdSolid::thermal_force(const std::vector<double>& dT_all, std::vector<double>& force) const {
+  force.resize(2 * n_);
+  const double half_kT = 0.5 * law_.thermal_stretch_per_K;
+  particles::for_each_particle(n_, [&](std::size_t i) {
+    double fx = 0.0, fy = 0.0;
+    for (std::size_t e = start_[i]; e < start_[i + 1]; ++e) {
+      const double a = -weight_[e] * half_kT * (dT_all[i] + dT_all[column_[e]]) / length_[e];
+      fx += a * xi_[2 * e];
+      fy += a * xi_[2 * e + 1];
+    }
+    force[2 * i] = fx;
+    force[2 * i + 1] = fy;
+  });
+}
+
+void PdSolid::forces_linear(const std::vector<double>& u_all, const std::vector<double>& thermal,
+                            std::vector<double>& force) const {
+  force.resize(2 * n_);
+  const double* U = u_all.data();
+  const double* X = xi_.data();
+  const double* K = stiffness3_.data();
+  const std::uint32_t* C = column_.data();
+  particles::for_each_particle(n_, [&](std::size_t i) {
+    const double uxi = U[2 * i], uyi = U[2 * i + 1];
+    // Two partial sums each: a single chain waits on every multiply-add.
+    double fx0 = 0.0, fy0 = 0.0, fx1 = 0.0, fy1 = 0.0;
+    std::size_t e = start_[i];
+    const std::size_t end = start_[i + 1];
+    for (; e + 2 <= end; e += 2) {
+      const std::uint32_t k0 = C[e], k1 = C[e + 1];
+      const double a0 = K[e] * (X[2 * e] * (U[2 * k0] - uxi) + X[2 * e + 1] * (U[2 * k0 + 1] - uyi));
+      const double a1 = K[e + 1] * (X[2 * e + 2] * (U[2 * k1] - uxi) + X[2 * e + 3] * (U[2 * k1 + 1] - uyi));
+      fx0 += a0 * X[2 * e];
+      fy0 += a0 * X[2 * e + 1];
+      fx1 += a1 * X[2 * e + 2];
+      fy1 += a1 * X[2 * e + 3];
+    }
+    for (; e < end; ++e) {
+      const std::uint32_t k = C[e];
+      const double a = K[e] * (X[2 * e] * (U[2 * k] - uxi) + X[2 * e + 1] * (U[2 * k + 1] - uyi));
+      fx0 += a * X[2 * e];
+      fy0 += a * X[2 * e + 1];
+    }
+    force[2 * i] = thermal[2 * i] + fx0 + fx1;
+    force[2 * i + 1] = thermal[2 * i + 1] + fy0 + fy1;
   });
 }
 
@@ -151,6 +239,7 @@ std::size_t PdSolid::break_bonds(const std::vector<double>& u, const std::vector
       // The mechanical stretch: free thermal expansion breaks nothing.
       if ((L - length_[e]) / length_[e] - thermal_stretch(i, k, dT) > law_.critical_stretch) {
         intact_[e] = 0;
+        weight_[e] = stiffness3_[e] = 0.0;  // the force loops need no test
         ++broken;
       }
     }

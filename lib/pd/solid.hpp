@@ -40,6 +40,7 @@ struct SolidGeometry {
 class PdSolid {
  public:
   PdSolid(const SolidGeometry& geometry, const project::Mechanics& mechanics, const BondLaw& law);
+  bool linear() const { return linear_; }
 
   std::size_t size() const { return n_; }
   std::size_t bonds() const { return column_.size(); }
@@ -50,6 +51,19 @@ class PdSolid {
   // displacement u (2 per free particle) and temperature change dT (K, per
   // free particle, from the stress-free reference).
   void forces(const std::vector<double>& u, const std::vector<double>& dT, std::vector<double>& force) const;
+  // The same in the form the relaxation calls many times: u and dT given
+  // at every point (ghosts included: extend() fills them), so the bond loop
+  // is a plain gather; no allocation.
+  void forces_extended(const std::vector<double>& u_all, const std::vector<double>& dT_all, std::vector<double>& force) const;
+  // Linear kinematics: the thermal part of the force, fixed while dT is,
+  // -sum_j w s_T xi/|xi| (computed once per relaxation); then each
+  // evaluation is force = thermal + sum_j (w / |xi|^3) (xi . (u_j - u_i)) xi.
+  void thermal_force(const std::vector<double>& dT_all, std::vector<double>& force) const;
+  void forces_linear(const std::vector<double>& u_all, const std::vector<double>& thermal, std::vector<double>& force) const;
+  std::size_t points() const { return position_.size(); }
+  // u_all (2 per point) and dT_all (1 per point) from the free particles'.
+  void extend(const std::vector<double>& u, std::vector<double>& u_all) const;
+  void extend_temperature(const std::vector<double>& dT, std::vector<double>& dT_all) const;
   // Sum over i's bonds of c G V_j / |xi|: bounds the stiffness a particle
   // sees (the relaxation's fictitious density).
   const std::vector<double>& stiffness() const { return stiffness_; }
@@ -81,7 +95,10 @@ class PdSolid {
   std::vector<std::size_t> start_;
   std::vector<std::uint32_t> column_;   // point index (>= n_: ghost)
   std::vector<double> length_;          // |xi|
-  std::vector<double> weight_;          // c G V_j share (force per unit volume per unit stretch)
+  std::vector<double> weight_;          // c G V_j share (force per unit volume per unit stretch); 0 once broken
+  std::vector<double> xi_;              // reference bond vector x_j - x_i, 2 per bond
+  std::vector<double> stiffness3_;      // w / |xi|^3 (linear kinematics; 0 once broken)
+  bool linear_ = true;
   std::vector<double> volume_share_;    // V_j share (damage)
   mutable std::vector<std::uint8_t> intact_;
   std::vector<double> stiffness_;

@@ -36,7 +36,8 @@ Support read_support(const detail::Node& n) {
 
 Mechanics read_mechanics(const detail::Node& n, std::vector<std::string>& warnings) {
   Mechanics m;
-  if (!n.object({"material", "plane", "supports", "relaxation"})) return m;
+  if (!n.object({"material", "plane", "supports", "relaxation", "kinematics"})) return m;
+  m.linear_kinematics = n["kinematics"].choice<bool>("kinematics", {{"linear", true}, {"nonlinear", false}}).value_or(true);
   const detail::Node mat = n["material"].required();
   m.plane = n["plane"].choice<Plane>("plane", {{"strain", Plane::strain}, {"stress", Plane::stress}}).value_or(m.plane);
   if (mat.object({"elastic_modulus", "poisson_ratio", "thermal_expansion", "fracture_energy", "reference_temperature"})) {
@@ -65,7 +66,7 @@ Mechanics read_mechanics(const detail::Node& n, std::vector<std::string>& warnin
   }
   if (const detail::Node r = n["relaxation"]; r.object({"tolerance", "temperature_change", "max_iterations"})) {
     m.tolerance = r["tolerance"].positive().value_or(m.tolerance);
-    m.temperature_change = r["temperature_change"].positive().value_or(m.temperature_change);
+    m.temperature_change = r["temperature_change"].positive();
     m.max_iterations = r["max_iterations"].count().value_or(m.max_iterations);
   }
   return m;

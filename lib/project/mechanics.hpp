@@ -33,11 +33,18 @@ struct Mechanics {
   Support left, right, bottom, top;
   // Adaptive dynamic relaxation stops when the RMS of a step's displacement
   // increment falls below tolerance x the RMS displacement.
-  double tolerance = 1e-8;
+  double tolerance = 1e-7;
   // Re-equilibrate when some particle's temperature has moved this much
-  // (K) since the last equilibrium; and at every snapshot.
-  double temperature_change = 0.1;
+  // (K) since the last equilibrium, and at every snapshot; nullopt: 10 % of
+  // the largest temperature change from the reference so far.
+  std::optional<double> temperature_change;
   int max_iterations = 200000;
+  // "linear" (default): bond stretch and direction linearised in the
+  // displacement (strains of 1e-4 make the rest 1e-8 relative), so a force
+  // evaluation is a gather of fixed 2x2 bond stiffnesses; "nonlinear":
+  // the exact stretch and deformed direction. Bonds break on the exact
+  // stretch either way.
+  bool linear_kinematics = true;
 };
 
 namespace detail {

@@ -6,6 +6,7 @@
 #include "io/atomic_file.hpp"
 #include "io/polyline_vtk.hpp"
 #include "particles/mirror_images.hpp"
+#include "run/mechanics_run.hpp"
 
 namespace frostwall::run {
 
@@ -53,10 +54,26 @@ PlainResults::PlainResults(const project::Project& p, const Model& m)
 
 PlainResults::~PlainResults() = default;
 
+void PlainResults::attach(const MechanicsRun* mechanics) {
+  mechanics_ = mechanics;
+  std::vector<Vec2> where;
+  for (const auto& s : project_.monitoring) where.emplace_back(s.x, s.y);
+  const auto& P = model_.particles();
+  const std::vector<Vec2> free(P.position.begin(), P.position.begin() + P.n_free);
+  solid_sensors_ = std::make_unique<post::LinearProbe>(free, where, 2.5 * P.spacing);
+}
+
 void PlainResults::sample(double t, const thermal::ThermalModel& model) {
   if (project_.monitoring.empty()) return;
   times_.push_back(t / unit_);
   readings_.push_back((*sensors_)(model.temperature()));
+  if (!mechanics_) return;
+  const auto& u = mechanics_->displacement();
+  const auto damage = mechanics_->damage();
+  std::vector<std::array<double, 3>> row;
+  for (std::size_t k = 0; k < solid_sensors_->size(); ++k)
+    row.push_back({solid_sensors_->at(k, u, 2, 0), solid_sensors_->at(k, u, 2, 1), solid_sensors_->at(k, damage)});
+  solid_readings_.push_back(row);
 }
 
 void PlainResults::snapshot(double t, const thermal::ThermalModel& model, const std::filesystem::path& out,
@@ -93,15 +110,32 @@ json PlainResults::finish(const std::filesystem::path& out) const {
     monitoring[project_.monitoring[s].name] = series;
   }
   result["monitoring"] = monitoring;
+  if (mechanics_) {
+    json solid = json::object();
+    for (std::size_t s = 0; s < project_.monitoring.size(); ++s) {
+      json series = json::array();
+      for (std::size_t k = 0; k < times_.size(); ++k)
+        series.push_back({times_[k], solid_readings_[k][s][0], solid_readings_[k][s][1], solid_readings_[k][s][2]});
+      solid[project_.monitoring[s].name] = series;
+    }
+    result["monitoring_solid"] = solid;  // [t, ux m, uy m, damage]
+  }
   result["front_along"] = front_along_;
   result["interface"] = interface_;
   if (!project_.monitoring.empty()) {
     std::string csv = "time";
-    for (const auto& s : project_.monitoring) csv += "," + s.name + "_C";
+    for (const auto& s : project_.monitoring) {
+      csv += "," + s.name + "_C";
+      if (mechanics_) csv += "," + s.name + "_ux_m," + s.name + "_uy_m," + s.name + "_damage";
+    }
     csv += "\n";
     for (std::size_t k = 0; k < times_.size(); ++k) {
       csv += fmt::format("{:.6g}", times_[k]);
-      for (double T : readings_[k]) csv += fmt::format(",{:.6g}", T);
+      for (std::size_t s = 0; s < readings_[k].size(); ++s) {
+        csv += fmt::format(",{:.6g}", readings_[k][s]);
+        if (mechanics_)
+          csv += fmt::format(",{:.6g},{:.6g},{:.6g}", solid_readings_[k][s][0], solid_readings_[k][s][1], solid_readings_[k][s][2]);
+      }
       csv += "\n";
     }
     io::write_text_file(out / "monitoring.csv", csv);

@@ -5,6 +5,7 @@
 // isoline at each snapshot (interface_XXXX.vtp), as shaft runs write them.
 #pragma once
 
+#include <array>
 #include <filesystem>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -13,6 +14,7 @@
 
 #include "post/field_sampler.hpp"
 #include "post/isoline.hpp"
+#include "post/linear_probe.hpp"
 #include "project/project.hpp"
 #include "run/model.hpp"
 
@@ -22,6 +24,8 @@ class PlainResults {
  public:
   PlainResults(const project::Project& p, const Model& m);
   ~PlainResults();
+  // Sensors then also read the displacement and damage of the solid.
+  void attach(const class MechanicsRun* mechanics);
 
   // At every output time (the regular series and the snapshots).
   void sample(double t, const thermal::ThermalModel& model);
@@ -36,9 +40,12 @@ class PlainResults {
   double unit_;  // seconds per unit of the project's time
   post::FieldSampler sampler_;
   std::unique_ptr<post::PointProbe> sensors_;
+  const MechanicsRun* mechanics_ = nullptr;
+  std::unique_ptr<post::LinearProbe> solid_sensors_;
   std::vector<std::unique_ptr<post::PointProbe>> lines_;  // samples along each front line
   std::vector<double> times_;                             // of the sensor rows, project unit
   std::vector<std::vector<double>> readings_;             // per row, per sensor
+  std::vector<std::vector<std::array<double, 3>>> solid_readings_;  // per row, per sensor: ux, uy, damage
   nlohmann::json front_along_ = nlohmann::json::array(), interface_ = nlohmann::json::array();
   std::vector<particles::Vec<2>> curve_points_;  // particles and their mirror images
   std::vector<std::uint32_t> curve_source_;

@@ -14,6 +14,7 @@
 #include "run/model.hpp"
 #include "thermal/backward_euler.hpp"
 #include "thermal/super_time_stepping.hpp"
+#include "run/mechanics_run.hpp"
 #include "run/plain_results.hpp"
 #include "run/shaft_results.hpp"
 #include "particles/symmetry_group.hpp"
@@ -69,6 +70,21 @@ io::PointCloudFrame frame_of(const particles::ParticleSet<2>& particles, const t
                   {"liquid_fraction", model.liquid_fraction()}, {"phase", phase},
                   {"conductivity", k}, {"volume", particles.volume}, {"boundary", boundary}};
   return frame;
+}
+
+// The solid's displacement (a vector) and damage; the thermal layers beyond
+// held faces are not solid: 0 there.
+void add_mechanics(io::PointCloudFrame& frame, const MechanicsRun& mechanics) {
+  const auto& u = mechanics.displacement();
+  const auto damage = mechanics.damage();
+  std::vector<double> vectors(3 * frame.points.size(), 0.0), phi(frame.points.size(), 0.0);
+  for (std::size_t i = 0; i < damage.size(); ++i) {
+    vectors[3 * i] = u[2 * i];
+    vectors[3 * i + 1] = u[2 * i + 1];
+    phi[i] = damage[i];
+  }
+  frame.vectors.emplace_back("displacement", std::move(vectors));
+  frame.fields.emplace_back("damage", std::move(phi));
 }
 
 // The whole ring for ParaView: every copy of the wedge under its mirror group.
@@ -156,6 +172,11 @@ void run_project(const Project& p, const RunOptions& options) {
   std::unique_ptr<PlainResults> plain;
   if (built.shaft) results = std::make_unique<ShaftResults>(p, built);
   else plain = std::make_unique<PlainResults>(p, built);
+  std::unique_ptr<MechanicsRun> mechanics;
+  if (p.mechanics) {
+    mechanics = std::make_unique<MechanicsRun>(p, built);
+    plain->attach(mechanics.get());
+  }
   const double heat_before = model.stored_heat();
 
   thermal::TimeLoopObservers observers;
@@ -165,6 +186,7 @@ void run_project(const Project& p, const RunOptions& options) {
   std::vector<double> f_before, T_before, f_at, T_at;
   observers.after_step = [&](const thermal::ThermalModel& m, double t) {
     if (closure) closure->after_step(m, t);
+    if (mechanics) mechanics->update(m, false);
     if (!results) return;
     const auto& f = m.liquid_fraction();
     const auto& T = m.temperature();
@@ -196,10 +218,12 @@ void run_project(const Project& p, const RunOptions& options) {
                    p.time.snapshots.begin();
     const bool is_snapshot = k < static_cast<long>(stems.size()) && std::abs(p.time.snapshots[k] - t) <= 1e-12 * p.time.end;
     if (results && is_snapshot) results->snapshot(t, m, out, stems[k]);
+    if (mechanics) mechanics->update(m, is_snapshot);
     if (plain) plain->sample(t, m);
     if (plain && is_snapshot) plain->snapshot(t, m, out, stems[k]);
     if (p.output.vtk && is_snapshot) {
-      const auto frame = frame_of(particles, m);
+      auto frame = frame_of(particles, m);
+      if (mechanics) add_mechanics(frame, *mechanics);
       io::write_vtu(out / (stems[k] + ".vtu"), frame);
       pvd.push_back({t / unit, stems[k] + ".vtu"});
       if (write_ring) {
@@ -234,7 +258,8 @@ void run_project(const Project& p, const RunOptions& options) {
     summary["front"] = front;
     summary["front_axis"] = face ? nlohmann::json{{"face", face->side}} : nlohmann::json(nullptr);
     const nlohmann::json parts = plain->finish(out);
-    for (const char* key : {"front_along", "monitoring", "interface"}) summary[key] = parts[key];
+    for (const char* key : {"front_along", "monitoring", "monitoring_solid", "interface"})
+      if (parts.contains(key)) summary[key] = parts[key];
   }
   summary.update(nlohmann::ordered_json{
       {"heat_balance",
@@ -264,6 +289,7 @@ void run_project(const Project& p, const RunOptions& options) {
   }
   if (const auto* rkl2 = dynamic_cast<const thermal::SuperTimeStepping*>(built.integrator.get()))
     summary["run"]["stages"] = rkl2->statistics().stages;
+  if (mechanics) summary["run"]["mechanics"] = mechanics->facts();
   io::write_text_file(out / "summary.json", summary.dump(2) + "\n");
   if (p.output.report) report::write_report(out);  // from the files just written
 }

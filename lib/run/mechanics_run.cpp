@@ -1,0 +1,68 @@
+#include "run/mechanics_run.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "pd/relaxation.hpp"
+
+namespace frostwall::run {
+
+MechanicsRun::MechanicsRun(const project::Project& p, const Model& m) : mechanics_(*p.mechanics) {
+  const auto& rect = std::get<project::Rectangle>(p.geometry);
+  const auto& P = m.particles();
+  pd::SolidGeometry g;
+  g.position.assign(P.position.begin(), P.position.begin() + P.n_free);
+  g.volume.assign(P.volume.begin(), P.volume.begin() + P.n_free);
+  g.spacing = P.spacing;
+  g.width = rect.width;
+  g.height = rect.height;
+  solid_ = std::make_unique<pd::PdSolid>(g, mechanics_, pd::make_bond_law(mechanics_, p.numerics.horizon * P.spacing));
+  u_.assign(2 * P.n_free, 0.0);
+  dT_.assign(P.n_free, 0.0);
+  T_equilibrium_.assign(P.n_free, mechanics_.material.reference_temperature);
+}
+
+void MechanicsRun::update(const thermal::ThermalModel& model, bool force) {
+  const auto& T = model.temperature();
+  double moved = 0.0;
+  for (std::size_t i = 0; i < dT_.size(); ++i) moved = std::max(moved, std::abs(T[i] - T_equilibrium_[i]));
+  // Default: 10 % of the largest change from the reference so far.
+  double largest = 0.0;
+  for (std::size_t i = 0; i < dT_.size(); ++i)
+    largest = std::max(largest, std::abs(T[i] - mechanics_.material.reference_temperature));
+  const double threshold = mechanics_.temperature_change.value_or(std::max(0.1 * largest, 1e-6));
+  if (!force && moved < threshold) return;
+  if (moved == 0.0 && relaxations_ > 0) return;
+  for (std::size_t i = 0; i < dT_.size(); ++i) {
+    dT_[i] = T[i] - mechanics_.material.reference_temperature;
+    T_equilibrium_[i] = T[i];
+  }
+  for (int round = 0; round < 1000; ++round) {
+    const auto r = pd::relax(*solid_, u_, dT_, mechanics_.tolerance, mechanics_.max_iterations);
+    ++relaxations_;
+    iterations_ += r.iterations;
+    largest_ = std::max(largest_, r.iterations);
+    if (!r.converged) ++unconverged_;
+    const std::size_t broke = solid_->break_bonds(u_, dT_);
+    broken_ += broke;
+    if (broke == 0) break;
+  }
+}
+
+nlohmann::json MechanicsRun::facts() const {
+  double largest_u = 0.0;
+  for (std::size_t i = 0; 2 * i < u_.size(); ++i) largest_u = std::max(largest_u, std::hypot(u_[2 * i], u_[2 * i + 1]));
+  const auto& law = solid_->law();
+  return {{"bonds", solid_->bonds()},
+          {"horizon", law.horizon},
+          {"micromodulus", law.micromodulus},
+          {"critical_stretch", std::isfinite(law.critical_stretch) ? nlohmann::json(law.critical_stretch) : nlohmann::json(nullptr)},
+          {"relaxations", relaxations_},
+          {"relaxation_iterations", iterations_},
+          {"longest_relaxation", largest_},
+          {"unconverged_relaxations", unconverged_},
+          {"broken_bonds", broken_},
+          {"largest_displacement", largest_u}};
+}
+
+}  // namespace frostwall::run

@@ -1,0 +1,40 @@
+// The thermo-mechanical part of a plain-geometry run (project "mechanics"):
+// the PD solid on the thermal model's free particles, brought to
+// equilibrium by adaptive dynamic relaxation, staggered with the heat
+// conduction. After each thermal step it re-equilibrates only when some
+// particle's temperature has moved by relaxation.temperature_change (K)
+// since the last equilibrium, and at every snapshot, warm-starting from
+// the last displacement; bonds beyond their critical stretch break after
+// each equilibrium, which is then sought again until none break.
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <memory>
+#include <vector>
+
+#include "pd/solid.hpp"
+#include "project/project.hpp"
+#include "run/model.hpp"
+
+namespace frostwall::run {
+
+class MechanicsRun {
+ public:
+  MechanicsRun(const project::Project& p, const Model& m);
+  // force: equilibrate whatever the temperature change (snapshots).
+  void update(const thermal::ThermalModel& model, bool force);
+  const pd::PdSolid& solid() const { return *solid_; }
+  const std::vector<double>& displacement() const { return u_; }  // 2 per free particle
+  std::vector<double> damage() const { return solid_->damage(); }
+  // Run facts for the summary: relaxations, iterations, broken bonds.
+  nlohmann::json facts() const;
+
+ private:
+  const project::Mechanics& mechanics_;
+  std::unique_ptr<pd::PdSolid> solid_;
+  std::vector<double> u_, dT_, T_equilibrium_;
+  std::size_t relaxations_ = 0, iterations_ = 0, unconverged_ = 0, broken_ = 0;
+  int largest_ = 0;  // iterations of the longest relaxation
+};
+
+}  // namespace frostwall::run
