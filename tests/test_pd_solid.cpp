@@ -140,3 +140,56 @@ TEST_CASE("PD solid: free thermal expansion breaks nothing; overstretched bonds 
   CHECK(broken > 0);
   for (double phi : solid.damage()) CHECK(phi == 1.0);  // every bond stretched the same: all broke
 }
+
+// A plate with a central pre-crack pulled by its top edge (bottom on
+// rollers, sides free). The load at which the first intact bond reaches the
+// critical stretch follows from one equilibrium by linearity (the
+// kinematics are linear): P_c = d0 s0 / s_max(d0). Below it (0.9 P_c) no
+// bond breaks; above it (1.1 P_c) the crack tips break and the crack runs.
+// Griffith's load for the same crack (infinite plate, plane strain) is
+// printed beside it: PD at three spacings per horizon only approximates it.
+TEST_CASE("PD solid: a pre-crack holds at 0.9 of its critical load and breaks at 1.1", "[pd][mechanics][fracture]") {
+  const double L = 0.01, dx = L / 40, G0 = 50.0;
+  auto m = plate_mechanics();
+  m.left.kind = m.right.kind = project::Support::Kind::free;
+  m.material.fracture_energy = G0;
+  auto pulled = [&](double d) {
+    auto mm = m;
+    mm.top.kind = project::Support::Kind::displacement;
+    mm.top.uy = d;
+    auto solid = std::make_unique<pd::PdSolid>(square_lattice(L, dx), mm, pd::make_bond_law(mm, 3.015 * dx));
+    const std::size_t cut = solid->cut(Vec2(0.35 * L, 0.5 * L + 1e-9), Vec2(0.65 * L, 0.5 * L + 1e-9));
+    REQUIRE(cut > 0);
+    return solid;
+  };
+  const std::vector<double> dT(40 * 40, 0.0);
+  const double d0 = 1e-7;
+  auto probe = pulled(d0);
+  std::vector<double> u(2 * probe->size(), 0.0);
+  REQUIRE(pd::relax(*probe, u, dT, 1e-9, 200000).converged);
+  const double s_max = probe->largest_stretch(u, dT);
+  const double s0 = probe->law().critical_stretch;
+  const double d_critical = d0 * s0 / s_max;
+  // Griffith: sigma_c = sqrt(E' G0 / (pi a)), E' = E / (1 - nu^2); the
+  // remote stress of a free-sided plate pulled by d is about E' d / L.
+  const double a = 0.15 * L, E_plane = E / (1 - 0.25 * 0.25);
+  const double d_griffith = std::sqrt(E_plane * G0 / (M_PI * a)) * L / E_plane;
+  std::size_t broken_below = 0, broken_above = 0;
+  for (const double factor : {0.9, 1.1}) {
+    auto solid = pulled(factor * d_critical);
+    std::vector<double> w(2 * solid->size(), 0.0);
+    std::size_t broken = 0;
+    for (int round = 0; round < 200; ++round) {
+      REQUIRE(pd::relax(*solid, w, dT, 1e-9, 200000).converged);
+      const std::size_t now = solid->break_bonds(w, dT);
+      broken += now;
+      if (now == 0) break;
+    }
+    (factor < 1.0 ? broken_below : broken_above) = broken;
+  }
+  fmt::print("PD pre-crack (2a = 0.3 L, 40 x 40, G0 = {} J/m2): critical top displacement {:.4e} m (first bond at s0 = {:.3e}); "
+             "Griffith (infinite plate) {:.4e} m, ratio {:.2f}; bonds broken at 0.9: {}, at 1.1: {}\n",
+             G0, d_critical, s0, d_griffith, d_critical / d_griffith, broken_below, broken_above);
+  CHECK(broken_below == 0);
+  CHECK(broken_above > 10);
+}

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "particles/cell_list.hpp"
 #include "particles/mirror_images.hpp"
@@ -245,6 +246,37 @@ std::size_t PdSolid::break_bonds(const std::vector<double>& u, const std::vector
     }
   }
   return broken;
+}
+
+std::size_t PdSolid::cut(const Vec2& a, const Vec2& b) {
+  auto cross = [](const Vec2& p, const Vec2& q) { return p[0] * q[1] - p[1] * q[0]; };
+  std::size_t broken = 0;
+  for (std::size_t i = 0; i < n_; ++i)
+    for (std::size_t e = start_[i]; e < start_[i + 1]; ++e) {
+      const Vec2 p = position_[i], q = position_[column_[e]];
+      // Proper intersection of the segments p-q and a-b.
+      const double d1 = cross(b - a, p - a), d2 = cross(b - a, q - a), d3 = cross(q - p, a - p), d4 = cross(q - p, b - p);
+      if (d1 * d2 < 0.0 && d3 * d4 < 0.0 && intact_[e]) {
+        intact_[e] = 0;
+        weight_[e] = stiffness3_[e] = 0.0;
+        ++broken;
+      }
+    }
+  return broken;
+}
+
+double PdSolid::largest_stretch(const std::vector<double>& u, const std::vector<double>& dT) const {
+  double largest = -std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < n_; ++i) {
+    const Vec2 ui(u[2 * i], u[2 * i + 1]);
+    for (std::size_t e = start_[i]; e < start_[i + 1]; ++e) {
+      if (!intact_[e]) continue;
+      const std::uint32_t k = column_[e];
+      const double L = (position_[k] - position_[i] + displacement(k, u) - ui).norm();
+      largest = std::max(largest, (L - length_[e]) / length_[e] - thermal_stretch(i, k, dT));
+    }
+  }
+  return largest;
 }
 
 std::vector<double> PdSolid::damage() const {

@@ -70,6 +70,11 @@ class PdSolid {
   // Breaks every intact bond whose mechanical stretch s - s_T exceeds the
   // critical stretch; returns how many broke (never mended).
   std::size_t break_bonds(const std::vector<double>& u, const std::vector<double>& dT);
+  // A pre-crack: breaks every bond whose reference segment crosses the
+  // segment a-b; returns how many.
+  std::size_t cut(const Vec2& a, const Vec2& b);
+  // The largest mechanical stretch s - s_T over the intact bonds.
+  double largest_stretch(const std::vector<double>& u, const std::vector<double>& dT) const;
   // Share of broken bonds of each free particle, weighted by volume.
   std::vector<double> damage() const;
   // Strain energy density of each free particle, 1/4 sum c G (s - s_T)^2 |xi| V_j.
