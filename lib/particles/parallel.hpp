@@ -3,6 +3,7 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cstddef>
 #include <xmmintrin.h>
 
@@ -37,6 +38,24 @@ double sum_over_particles(std::size_t n, Body&& body) {
   double total = 0.0;
 #pragma omp parallel for schedule(static) reduction(+ : total) if (n >= parallel_threshold)
   for (long long i = 0; i < count; ++i) total += body(static_cast<std::size_t>(i));
+  return total;
+}
+
+// Several sums in one pass: body(i, acc) adds particle i's terms to acc
+// (K values); one fork/join instead of K (the relaxation needs four per
+// iteration).
+template <std::size_t K, class Body>
+std::array<double, K> sums_over_particles(std::size_t n, Body&& body) {
+  const long long count = static_cast<long long>(n);
+  std::array<double, K> total{};
+#pragma omp parallel if (n >= parallel_threshold)
+  {
+    std::array<double, K> local{};
+#pragma omp for schedule(static) nowait
+    for (long long i = 0; i < count; ++i) body(static_cast<std::size_t>(i), local);
+#pragma omp critical
+    for (std::size_t k = 0; k < K; ++k) total[k] += local[k];
+  }
   return total;
 }
 

@@ -1,6 +1,7 @@
 #include "pd/relaxation.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "particles/parallel.hpp"
@@ -43,17 +44,20 @@ RelaxationResult relax(const PdSolid& solid, std::vector<double>& u, const std::
     });
     F_old.swap(F);
     forces(F);
-    // The global damping from the local stiffness of this step.
-    double num = 0.0, den = 0.0;
-    for (std::size_t k = 0; k < m; ++k) {
-      den += u[k] * u[k];
-      if (v[k] != 0.0) num += u[k] * u[k] * (-(F[k] - F_old[k]) / lambda[k] / v[k]);
-    }
-    c = num > 0.0 && den > 0.0 ? std::min(2.0 * std::sqrt(num / den), 1.99) : 0.0;
+    // One pass: the damping's u.K u and u.u from the local stiffness of
+    // this step, and the RMS of the increment and of the force.
+    const auto sums = particles::sums_over_particles<4>(m, [&](std::size_t k, std::array<double, 4>& acc) {
+      const double uk2 = u[k] * u[k];
+      acc[1] += uk2;
+      if (v[k] != 0.0) acc[0] += uk2 * (-(F[k] - F_old[k]) / lambda[k] / v[k]);
+      acc[2] += v[k] * v[k];
+      acc[3] += F[k] * F[k];
+    });
+    c = sums[0] > 0.0 && sums[1] > 0.0 ? std::min(2.0 * std::sqrt(sums[0] / sums[1]), 1.99) : 0.0;
     result.iterations = it + 1;
-    const double du = rms([&](std::size_t k) { return v[k]; }), uu = rms([&](std::size_t k) { return u[k]; });
+    const double du = std::sqrt(sums[2] / m), uu = std::sqrt(sums[1] / m), ff = std::sqrt(sums[3] / m);
     result.increment = uu > 0.0 ? du / uu : 0.0;
-    if (du <= tolerance * uu || rms([&](std::size_t k) { return F[k]; }) <= 1e-14 * scale * horizon) {
+    if (du <= tolerance * uu || ff <= 1e-14 * scale * horizon) {
       result.converged = true;
       break;
     }

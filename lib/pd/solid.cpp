@@ -133,12 +133,12 @@ Vec2 PdSolid::displacement(std::uint32_t k, const std::vector<double>& u) const 
 
 void PdSolid::extend(const std::vector<double>& u, std::vector<double>& u_all) const {
   u_all.resize(2 * position_.size());
-  std::copy(u.begin(), u.begin() + 2 * n_, u_all.begin());
-  for (std::size_t g = 0; g < ghosts_.size(); ++g) {
+  particles::for_each_particle(2 * n_, [&](std::size_t k) { u_all[k] = u[k]; });
+  particles::for_each_particle(ghosts_.size(), [&](std::size_t g) {
     const Vec2 v = displacement(static_cast<std::uint32_t>(n_ + g), u);
     u_all[2 * (n_ + g)] = v[0];
     u_all[2 * (n_ + g) + 1] = v[1];
-  }
+  });
 }
 
 void PdSolid::extend_temperature(const std::vector<double>& dT, std::vector<double>& dT_all) const {
