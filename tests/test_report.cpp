@@ -230,3 +230,31 @@ TEST_CASE("Colours turn from blue to red at the freezing point", "[report][map]"
   CHECK(bar.find(">15<") != std::string::npos);
   CHECK(test::html_balance_problem(bar) == "");
 }
+
+// A PD thermo-mechanical run's report gets a mechanics section: one map of
+// the displacement and one of the damage per snapshot (inline PNG), a
+// colour bar for each, and the sensors' displacement and damage charts.
+TEST_CASE("The report of a PD plate run has displacement and damage maps", "[report][pd]") {
+  test::TempDir dir("frostwall-report-pd");
+  std::ifstream in(std::string(FROSTWALL_SOURCE_DIR) + "/projects/plate_cooling.json");
+  json project = json::parse(in);
+  project["numerics"]["spacing"] = 0.0005;
+  project["time"] = {{"end", 100}, {"unit", "s"}, {"snapshots", {50, 100}}};
+  project["output"]["directory"] = (dir.path / "out").string();
+  run::RunOptions options;
+  options.project_text = project.dump();
+  run::run_project(project::parse_project(project.dump()), options);
+  const json view = report::report_view(dir.path / "out");
+  CHECK(view["has_mechanics"] == true);
+  for (const char* name : {"mechanics_note", "displacement_bar_svg", "damage_bar_svg"}) CHECK(!view[name].get<std::string>().empty());
+  CHECK(view["displacement_maps"].size() == 2);
+  CHECK(view["damage_maps"].size() == 2);
+  const std::string html = read(dir.path / "out" / "report.html");
+  CHECK(test::html_balance_problem(html) == "");
+  CHECK(test::external_references(html).empty());
+  CHECK(html.find("<h2>Mechanics</h2>") != std::string::npos);
+  CHECK(test::count(html, "<img src=\"data:image/png;base64,") == 4);  // 2 snapshots x (displacement, damage)
+  CHECK(html.find("|displacement| (µm)") != std::string::npos);
+  CHECK(html.find("Sensors: displacement along x") != std::string::npos);
+  CHECK(html.find("Sensors: damage") != std::string::npos);
+}

@@ -50,16 +50,16 @@ std::array<std::uint8_t, 3> ColourScale::operator()(double T) const {
   return c;
 }
 
-std::string ColourScale::colour_bar_svg(int width) const {
+std::string ColourScale::colour_bar_svg(int width, const std::string& quantity) const {
   const double left = 24, right = 24, bar_top = 6, bar_height = 14;
   const double w = width - left - right;
   auto px = [&](double T) { return left + (T - lo_) / (hi_ - lo_) * w; };
   const std::string id = svg::unique_id("colours");
   std::string o = fmt::format(
       R"(<svg class="colour-bar" viewBox="0 0 {0} 58" width="{0}" height="58" role="img" font-family="{1}" font-size="11">)"
-      "<title>colour scale: temperature in degrees Celsius</title>"
+      "<title>colour scale: {3}</title>"
       R"(<defs><linearGradient id="{2}" x1="0" x2="1" y1="0" y2="0">)",
-      width, svg::font_family, id);
+      width, svg::font_family, id, quantity);
   // Stops where the table has them, placed by temperature: the bar is exact.
   for (std::size_t k = 0; k < table.size(); ++k) {
     const double s = double(k) / double(table.size() - 1);
@@ -75,10 +75,11 @@ std::string ColourScale::colour_bar_svg(int width) const {
   o += "</g><g fill=\"#222\" text-anchor=\"middle\">";
   for (double T : ticks.ticks)
     o += fmt::format(R"(<text x="{}" y="{}">{}</text>)", svg::num(px(T)), bar_top + bar_height + 16, tick_label(T, ticks.decimals));
-  o += fmt::format(R"(<text x="{}" y="54">temperature (°C)</text></g>)", svg::num(left + w / 2));
+  o += fmt::format(R"(<text x="{}" y="54">{}</text></g>)", svg::num(left + w / 2), quantity);
   if (diverging_)
-    o += fmt::format(R"(<path d="M{0} {1} l-4 -6 h8 z" fill="#222"><title>freezing point {2} °C</title></path>)",
-                     svg::num(px(pivot_)), bar_top, svg::num(pivot_));
+    o += fmt::format(R"(<path d="M{0} {1} l-4 -6 h8 z" fill="#222"><title>{2} {3}</title></path>)", svg::num(px(pivot_)),
+                     bar_top, quantity.starts_with("temperature") ? "freezing point" : "middle of the scale",
+                     svg::num(pivot_));
   o += "</svg>";
   return o;
 }

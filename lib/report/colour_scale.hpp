@@ -19,9 +19,10 @@ class ColourScale {
   double lo() const { return lo_; }
   double hi() const { return hi_; }
 
-  // A horizontal bar `width` px wide with ticks and the title
-  // "temperature (°C)"; the pivot is marked as the freezing point.
-  std::string colour_bar_svg(int width) const;
+  // A horizontal bar `width` px wide with ticks and the title (default
+  // "temperature (°C)"); the pivot is marked (as the freezing point when
+  // the quantity is the temperature).
+  std::string colour_bar_svg(int width, const std::string& quantity = "temperature (°C)") const;
 
  private:
   double position(double T) const;  // [0, 1] along the colour table

@@ -183,6 +183,7 @@ json report_view(const fs::path& dir) {
   detail::add_project(run, view);
   detail::add_maps(run, view);
   detail::add_charts(run, view);
+  detail::add_mechanics(run, view);
   detail::add_run_facts(run, view);
   return view;
 }

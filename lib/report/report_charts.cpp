@@ -127,20 +127,37 @@ void sensor_chart(const RunRecord& run, json& charts) {
   const fs::path file = run.dir / "monitoring.csv";
   if (!fs::exists(file)) return;
   const CsvTable t = read_csv(file);
-  const auto* day = t.column("day");
-  if (!day || t.header.size() < 2) return;
-  Chart c;
-  c.title = "sensor temperatures over time";
-  c.x_label = "time (d)";
-  c.y_label = "temperature (°C)";
-  c.x_include = {0.0};
-  for (std::size_t k = 1; k < t.header.size(); ++k) {
-    std::string name = t.header[k];
-    if (name.size() > 2 && name.substr(name.size() - 2) == "_C") name.resize(name.size() - 2);
-    c.series.push_back({name, *day, t.columns[k], "", false, false});
-  }
+  // Shaft runs write days; plain geometries their own time unit.
+  const std::string unit = run.shaft() ? "d" : run.summary.value("run", json::object()).value("time_unit", "s");
+  const auto* time = t.column(run.shaft() ? "day" : "time");
+  if (!time || t.header.size() < 2) return;
+  auto chart_of = [&](const std::string& suffix, const std::string& title, const std::string& y_label, double scale) {
+    Chart c;
+    c.title = title;
+    c.x_label = "time (" + unit + ")";
+    c.y_label = y_label;
+    c.x_include = {0.0};
+    for (std::size_t k = 1; k < t.header.size(); ++k) {
+      const std::string& name = t.header[k];
+      if (name.size() <= suffix.size() || name.compare(name.size() - suffix.size(), suffix.size(), suffix) != 0) continue;
+      std::vector<double> y = t.columns[k];
+      for (double& v : y) v *= scale;
+      c.series.push_back({name.substr(0, name.size() - suffix.size()), *time, y, "", false, false});
+    }
+    return c;
+  };
+  Chart c = chart_of("_C", "sensor temperatures over time", "temperature (°C)", 1.0);
   c.guides.push_back({false, run.freezing_point(), "freezing point"});
   charts.push_back(figure("sensors", "Sensors", c, "Temperature at the monitoring points (thermometer holes) of the project."));
+  if (t.column(t.header.size() > 1 ? t.header[1].substr(0, t.header[1].size() - 2) + "_ux_m" : "")) {
+    for (const auto& [suffix, axis] : {std::pair{std::string("_ux_m"), "x"}, std::pair{std::string("_uy_m"), "y"}})
+      charts.push_back(figure("sensors-u" + std::string(axis), std::string("Sensors: displacement along ") + axis,
+                              chart_of(suffix, std::string("displacement along ") + axis + " over time",
+                                       std::string("u") + axis + " (µm)", 1e6),
+                              std::string("Displacement along ") + axis + " at the monitoring points (PD solid, linear MLS)."));
+    charts.push_back(figure("sensors-damage", "Sensors: damage", chart_of("_damage", "damage over time", "damage", 1.0),
+                            "Share of broken bonds at the monitoring points."));
+  }
 }
 
 void front_chart(const RunRecord& run, json& charts) {
@@ -173,6 +190,7 @@ void add_charts(const RunRecord& run, json& view) {
     sensor_chart(run, charts);
   } else {
     front_chart(run, charts);
+    sensor_chart(run, charts);
   }
   view["charts"] = charts;
 }

@@ -28,6 +28,7 @@ void add_project(const RunRecord& run, nlohmann::json& view);   // layout, soil,
 void add_headline(const RunRecord& run, nlohmann::json& view);  // closure, thickness, design check, table
 void add_maps(const RunRecord& run, nlohmann::json& view);      // temperature maps and colour bar
 void add_charts(const RunRecord& run, nlohmann::json& view);    // thickness, OB temperature, profiles, sensors
+void add_mechanics(const RunRecord& run, nlohmann::json& view); // PD: displacement and damage maps
 void add_run_facts(const RunRecord& run, nlohmann::json& view); // run table and file links
 
 }  // namespace frostwall::report::detail

@@ -94,6 +94,30 @@ FieldSnapshot read_field(const fs::path& file) {
   return s;
 }
 
+SolidSnapshot read_solid(const fs::path& file) {
+  require_file(file);
+  vtkNew<vtkXMLUnstructuredGridReader> reader;
+  reader->SetFileName(file.c_str());
+  reader->Update();
+  vtkUnstructuredGrid* grid = reader->GetOutput();
+  SolidSnapshot s;
+  if (!grid) return s;
+  vtkDataArray *U = grid->GetPointData()->GetArray("displacement"), *D = grid->GetPointData()->GetArray("damage"),
+               *V = grid->GetPointData()->GetArray("volume"), *B = grid->GetPointData()->GetArray("boundary");
+  if (!U || !D || !V || !B) return s;
+  for (vtkIdType i = 0; i < grid->GetNumberOfPoints(); ++i) {
+    if (std::lround(B->GetTuple1(i)) >= 0) continue;  // thermal layers: not solid
+    const double* x = grid->GetPoint(i);
+    const double* u = U->GetTuple3(i);
+    s.particles.position.emplace_back(x[0], x[1]);
+    s.particles.volume.push_back(V->GetTuple1(i));
+    s.particles.boundary.push_back(-1);
+    s.particles.temperature.push_back(std::hypot(u[0], u[1]));
+    s.damage.push_back(D->GetTuple1(i));
+  }
+  return s;
+}
+
 std::vector<post::Polyline> read_polylines(const fs::path& file) {
   require_file(file);
   vtkNew<vtkXMLPolyDataReader> reader;

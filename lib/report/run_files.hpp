@@ -34,6 +34,14 @@ struct FieldSnapshot {
 };
 FieldSnapshot read_field(const std::filesystem::path& file);
 
+// The solid of a PD run's snapshot: its free particles (boundary -1) with
+// |displacement| (m) and damage; empty when the file has no displacement.
+struct SolidSnapshot {
+  FieldSnapshot particles;  // temperature holds |displacement|
+  std::vector<double> damage;
+};
+SolidSnapshot read_solid(const std::filesystem::path& file);
+
 // The polylines of an interface_XXXX.vtp file (closed ones repeat their first point).
 std::vector<post::Polyline> read_polylines(const std::filesystem::path& file);
 
