@@ -11,27 +11,12 @@
 
 #include "pd/solid.hpp"
 #include "project/project.hpp"
+#include "timing.hpp"
 #include "run/model.hpp"
 
 using namespace frostwall;
+using frostwall::bench::seconds_per_call;
 
-namespace {
-
-template <class F>
-double seconds_per_call(F&& f) {
-  f();
-  int calls = 0;
-  const auto start = std::chrono::steady_clock::now();
-  double elapsed = 0.0;
-  while (elapsed < 1.0) {
-    f();
-    ++calls;
-    elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  }
-  return elapsed / calls;
-}
-
-}  // namespace
 
 int main() {
   project::Project p = project::load_project(FROSTWALL_SOURCE_DIR "/projects/plate_cooling.json");

@@ -1,6 +1,7 @@
 // Small helpers shared by the verification tests.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <fmt/core.h>
 #include <string>
@@ -44,6 +45,43 @@ std::size_t march(run::Model& m, const std::vector<double>& times, At&& at) {
   thermal::TimeLoopObservers obs;
   obs.snapshot = [&](const thermal::ThermalModel&, double, std::size_t k) { at(k); };
   return thermal::run_time_loop(*m.model, *m.integrator, times.back(), times, obs).steps;
+}
+
+// Largest |T - exact| at t = 0.05 of the mode cos(pi x) cos(pi y) on the
+// insulated unit square (5 + mode at t = 0, no latent heat), which decays
+// as exp(-2 pi^2 t); numerics: the project's "numerics" (JSON).
+inline double insulated_sine_mode_error(const std::string& numerics) {
+  const double t_end = 0.05;
+  const std::string insulated = R"({ "left": "adiabatic", "right": "adiabatic", "top": "adiabatic", "bottom": "adiabatic" })";
+  auto m = run::build_model(rectangle_project(1.0, 1.0, insulated, unit_soil(-100.0, 0.0), 5.0, t_end, numerics));
+  const auto& x = m.particles().position;
+  auto mode = [&](std::size_t i) { return std::cos(M_PI * x[i][0]) * std::cos(M_PI * x[i][1]); };
+  for (std::size_t i = 0; i < m.model->free_count(); ++i) m.model->set_enthalpy(i, m.model->law().enthalpy(5.0 + mode(i)));
+  double error = 0.0;
+  march(m, {t_end}, [&](std::size_t) {
+    const double decay = std::exp(-2.0 * M_PI * M_PI * t_end);
+    for (std::size_t i = 0; i < m.model->free_count(); ++i)
+      error = std::max(error, std::abs(m.model->temperature()[i] - (5.0 + decay * mode(i))));
+  });
+  return error;
+}
+
+// The half-space x > 0 at 1, its face held at 0 from t = 0 (a strip two
+// rows high, 1 long, no latent heat): the largest |T - erf(x / (2 sqrt t))|
+// at t = 0.02 (the far end stays at 1); numerics as above.
+inline double cooled_half_space_error(double dx, const std::string& numerics) {
+  const double t_end = 0.02;
+  auto m = run::build_model(rectangle_project(
+      1.0, 2 * dx, R"({ "left": { "temperature": 0.0 }, "right": "adiabatic", "top": "adiabatic", "bottom": "adiabatic" })",
+      unit_soil(-100.0, 0.0), 1.0, t_end, numerics));
+  double error = 0.0;
+  march(m, {t_end}, [&](std::size_t) {
+    for (std::size_t i = 0; i < m.model->free_count(); ++i) {
+      const double x = m.particles().position[i][0];
+      error = std::max(error, std::abs(m.model->temperature()[i] - std::erf(x / (2.0 * std::sqrt(t_end)))));
+    }
+  });
+  return error;
 }
 
 // Observed order of convergence between successive halvings.

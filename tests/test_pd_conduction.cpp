@@ -50,19 +50,7 @@ double quadratic_rate_error(double dx, const std::string& laplacian) {
 }
 
 double sine_mode_error(double dx, const std::string& laplacian) {
-  const double t_end = 0.05;
-  auto p = test::rectangle_project(1.0, 1.0, insulated, test::unit_soil(-100.0, 0.0), 5.0, t_end, pd_numerics(dx, laplacian));
-  auto m = run::build_model(p);
-  const auto& x = m.particles().position;
-  auto mode = [&](std::size_t i) { return std::cos(M_PI * x[i][0]) * std::cos(M_PI * x[i][1]); };
-  for (std::size_t i = 0; i < m.model->free_count(); ++i) m.model->set_enthalpy(i, m.model->law().enthalpy(5.0 + mode(i)));
-  double error = 0.0;
-  test::march(m, {t_end}, [&](std::size_t) {
-    const double decay = std::exp(-2.0 * M_PI * M_PI * t_end);
-    for (std::size_t i = 0; i < m.model->free_count(); ++i)
-      error = std::max(error, std::abs(m.model->temperature()[i] - (5.0 + decay * mode(i))));
-  });
-  return error;
+  return test::insulated_sine_mode_error(pd_numerics(dx, laplacian));
 }
 
 }  // namespace
@@ -103,23 +91,9 @@ TEST_CASE("PD conduction: insulated sine mode, second order with renormalised bo
 }
 
 TEST_CASE("PD conduction: suddenly cooled half-space follows erf", "[pd][verification]") {
-  const double t_end = 0.02;
   const std::vector<double> spacings{0.02, 0.01, 0.005};
   std::vector<double> errors;
-  for (double dx : spacings) {
-    auto p = test::rectangle_project(
-        1.0, 2 * dx, R"({ "left": { "temperature": 0.0 }, "right": "adiabatic", "top": "adiabatic", "bottom": "adiabatic" })",
-        test::unit_soil(-100.0, 0.0), 1.0, t_end, pd_numerics(dx));
-    auto m = run::build_model(p);
-    double error = 0.0;
-    test::march(m, {t_end}, [&](std::size_t) {
-      for (std::size_t i = 0; i < m.model->free_count(); ++i) {
-        const double x = m.particles().position[i][0];
-        error = std::max(error, std::abs(m.model->temperature()[i] - std::erf(x / (2.0 * std::sqrt(t_end)))));
-      }
-    });
-    errors.push_back(error);
-  }
+  for (double dx : spacings) errors.push_back(test::cooled_half_space_error(dx, pd_numerics(dx)));
   fmt::print("\nPD suddenly cooled half-space, max |T - erf| at t = 0.02 (range 1)\n  spacing  error      order\n");
   for (std::size_t k = 0; k < spacings.size(); ++k)
     fmt::print("  {:<7}  {:.3e}  {}\n", spacings[k], errors[k],

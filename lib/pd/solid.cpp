@@ -231,20 +231,14 @@ void PdSolid::forces_linear(const std::vector<double>& u_all, const std::vector<
 std::size_t PdSolid::break_bonds(const std::vector<double>& u, const std::vector<double>& dT) {
   if (!std::isfinite(law_.critical_stretch)) return 0;
   std::size_t broken = 0;
-  for (std::size_t i = 0; i < n_; ++i) {
-    const Vec2 ui(u[2 * i], u[2 * i + 1]);
-    for (std::size_t e = start_[i]; e < start_[i + 1]; ++e) {
-      if (!intact_[e]) continue;
-      const std::uint32_t k = column_[e];
-      const double L = (position_[k] - position_[i] + displacement(k, u) - ui).norm();
+  for (std::size_t i = 0; i < n_; ++i)
+    for (std::size_t e = start_[i]; e < start_[i + 1]; ++e)
       // The mechanical stretch: free thermal expansion breaks nothing.
-      if ((L - length_[e]) / length_[e] - thermal_stretch(i, k, dT) > law_.critical_stretch) {
+      if (intact_[e] && mechanical_stretch(i, e, u, dT) > law_.critical_stretch) {
         intact_[e] = 0;
         weight_[e] = stiffness3_[e] = 0.0;  // the force loops need no test
         ++broken;
       }
-    }
-  }
   return broken;
 }
 
@@ -267,15 +261,9 @@ std::size_t PdSolid::cut(const Vec2& a, const Vec2& b) {
 
 double PdSolid::largest_stretch(const std::vector<double>& u, const std::vector<double>& dT) const {
   double largest = -std::numeric_limits<double>::infinity();
-  for (std::size_t i = 0; i < n_; ++i) {
-    const Vec2 ui(u[2 * i], u[2 * i + 1]);
-    for (std::size_t e = start_[i]; e < start_[i + 1]; ++e) {
-      if (!intact_[e]) continue;
-      const std::uint32_t k = column_[e];
-      const double L = (position_[k] - position_[i] + displacement(k, u) - ui).norm();
-      largest = std::max(largest, (L - length_[e]) / length_[e] - thermal_stretch(i, k, dT));
-    }
-  }
+  for (std::size_t i = 0; i < n_; ++i)
+    for (std::size_t e = start_[i]; e < start_[i + 1]; ++e)
+      if (intact_[e]) largest = std::max(largest, mechanical_stretch(i, e, u, dT));
   return largest;
 }
 
@@ -295,12 +283,9 @@ std::vector<double> PdSolid::damage() const {
 std::vector<double> PdSolid::energy_density(const std::vector<double>& u, const std::vector<double>& dT) const {
   std::vector<double> w(n_, 0.0);
   particles::for_each_particle(n_, [&](std::size_t i) {
-    const Vec2 ui(u[2 * i], u[2 * i + 1]);
     for (std::size_t e = start_[i]; e < start_[i + 1]; ++e) {
       if (!intact_[e]) continue;
-      const std::uint32_t k = column_[e];
-      const double L = (position_[k] - position_[i] + displacement(k, u) - ui).norm();
-      const double s = (L - length_[e]) / length_[e] - thermal_stretch(i, k, dT);
+      const double s = mechanical_stretch(i, e, u, dT);
       w[i] += 0.25 * weight_[e] * s * s * length_[e];
     }
   });

@@ -88,6 +88,13 @@ class PdSolid {
     Vec2 held_u = Vec2::Zero();
   };
   Vec2 displacement(std::uint32_t k, const std::vector<double>& u) const;
+  // s - s_T of bond e of particle i (the exact stretch).
+  double mechanical_stretch(std::size_t i, std::size_t e, const std::vector<double>& u, const std::vector<double>& dT) const {
+    const std::uint32_t k = column_[e];
+    const Vec2 ui(u[2 * i], u[2 * i + 1]);
+    const double L = (position_[k] - position_[i] + displacement(k, u) - ui).norm();
+    return (L - length_[e]) / length_[e] - thermal_stretch(i, k, dT);
+  }
   std::uint32_t source(std::uint32_t k) const { return k < n_ ? k : ghosts_[k - n_].source; }
   double thermal_stretch(std::size_t i, std::uint32_t k, const std::vector<double>& dT) const {
     return law_.thermal_stretch_per_K * 0.5 * (dT[i] + dT[source(k)]);

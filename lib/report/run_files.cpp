@@ -11,6 +11,7 @@
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
 #include <vtkUnstructuredGrid.h>
 #include <vtkXMLPolyDataReader.h>
 #include <vtkXMLUnstructuredGridReader.h>
@@ -68,13 +69,21 @@ CsvTable read_csv(const fs::path& file) {
   return t;
 }
 
-FieldSnapshot read_field(const fs::path& file) {
+namespace {
+// The particles of a .vtu snapshot (throws when there are none).
+vtkSmartPointer<vtkUnstructuredGrid> read_grid(const fs::path& file) {
   require_file(file);
   vtkNew<vtkXMLUnstructuredGridReader> reader;
   reader->SetFileName(file.c_str());
   reader->Update();
-  vtkUnstructuredGrid* grid = reader->GetOutput();
+  vtkSmartPointer<vtkUnstructuredGrid> grid = reader->GetOutput();
   if (!grid || grid->GetNumberOfPoints() == 0) throw std::runtime_error("no particles in " + file.string());
+  return grid;
+}
+}  // namespace
+
+FieldSnapshot read_field(const fs::path& file) {
+  const auto grid = read_grid(file);
   auto array = [&](const char* name) {
     vtkDataArray* a = grid->GetPointData()->GetArray(name);
     if (!a) throw std::runtime_error(file.string() + ": no point field '" + name + "'");
@@ -95,13 +104,8 @@ FieldSnapshot read_field(const fs::path& file) {
 }
 
 SolidSnapshot read_solid(const fs::path& file) {
-  require_file(file);
-  vtkNew<vtkXMLUnstructuredGridReader> reader;
-  reader->SetFileName(file.c_str());
-  reader->Update();
-  vtkUnstructuredGrid* grid = reader->GetOutput();
+  const auto grid = read_grid(file);
   SolidSnapshot s;
-  if (!grid) return s;
   vtkDataArray *U = grid->GetPointData()->GetArray("displacement"), *D = grid->GetPointData()->GetArray("damage"),
                *V = grid->GetPointData()->GetArray("volume"), *B = grid->GetPointData()->GetArray("boundary");
   if (!U || !D || !V || !B) return s;
