@@ -228,7 +228,8 @@ void PdSolid::forces_linear(const std::vector<double>& u_all, const std::vector<
   });
 }
 
-std::size_t PdSolid::break_bonds(const std::vector<double>& u, const std::vector<double>& dT) {
+std::size_t PdSolid::break_bonds(const std::vector<double>& u, const std::vector<double>& dT,
+                                 std::vector<std::pair<std::uint32_t, std::uint32_t>>* newly_broken) {
   if (!std::isfinite(law_.critical_stretch)) return 0;
   std::size_t broken = 0;
   for (std::size_t i = 0; i < n_; ++i)
@@ -238,6 +239,7 @@ std::size_t PdSolid::break_bonds(const std::vector<double>& u, const std::vector
         intact_[e] = 0;
         weight_[e] = stiffness3_[e] = 0.0;  // the force loops need no test
         ++broken;
+        if (newly_broken && column_[e] < n_) newly_broken->emplace_back(static_cast<std::uint32_t>(i), column_[e]);
       }
   return broken;
 }

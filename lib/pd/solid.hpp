@@ -69,7 +69,10 @@ class PdSolid {
   const std::vector<double>& stiffness() const { return stiffness_; }
   // Breaks every intact bond whose mechanical stretch s - s_T exceeds the
   // critical stretch; returns how many broke (never mended).
-  std::size_t break_bonds(const std::vector<double>& u, const std::vector<double>& dT);
+  // newly_broken (optional): the free particles (i, j) of each bond that
+  // broke between two of them (not to a ghost).
+  std::size_t break_bonds(const std::vector<double>& u, const std::vector<double>& dT,
+                          std::vector<std::pair<std::uint32_t, std::uint32_t>>* newly_broken = nullptr);
   // A pre-crack: breaks every bond whose reference segment crosses the
   // segment a-b; returns how many.
   std::size_t cut(const Vec2& a, const Vec2& b);

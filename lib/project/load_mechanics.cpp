@@ -36,7 +36,8 @@ Support read_support(const detail::Node& n) {
 
 Mechanics read_mechanics(const detail::Node& n, std::vector<std::string>& warnings) {
   Mechanics m;
-  if (!n.object({"material", "plane", "supports", "relaxation", "kinematics"})) return m;
+  if (!n.object({"material", "plane", "supports", "relaxation", "kinematics", "cracks_insulate"})) return m;
+  m.cracks_insulate = n["cracks_insulate"].boolean().value_or(false);
   m.linear_kinematics = n["kinematics"].choice<bool>("kinematics", {{"linear", true}, {"nonlinear", false}}).value_or(true);
   const detail::Node mat = n["material"].required();
   m.plane = n["plane"].choice<Plane>("plane", {{"strain", Plane::strain}, {"stress", Plane::stress}}).value_or(m.plane);

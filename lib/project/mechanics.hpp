@@ -45,6 +45,9 @@ struct Mechanics {
   // the exact stretch and deformed direction. Bonds break on the exact
   // stretch either way.
   bool linear_kinematics = true;
+  // A broken bond stops carrying heat too (the crack insulates): the
+  // thermal pairs between the same two particles are cut.
+  bool cracks_insulate = false;
 };
 
 namespace detail {

@@ -7,7 +7,8 @@
 
 namespace frostwall::run {
 
-MechanicsRun::MechanicsRun(const project::Project& p, const Model& m) : mechanics_(*p.mechanics) {
+MechanicsRun::MechanicsRun(const project::Project& p, Model& m)
+    : mechanics_(*p.mechanics), thermal_(mechanics_.cracks_insulate ? m.model.get() : nullptr) {
   const auto& rect = std::get<project::Rectangle>(p.geometry);
   const auto& P = m.particles();
   pd::SolidGeometry g;
@@ -43,8 +44,10 @@ void MechanicsRun::update(const thermal::ThermalModel& model, bool force) {
     iterations_ += r.iterations;
     largest_ = std::max(largest_, r.iterations);
     if (!r.converged) ++unconverged_;
-    const std::size_t broke = solid_->break_bonds(u_, dT_);
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> ends;
+    const std::size_t broke = solid_->break_bonds(u_, dT_, thermal_ ? &ends : nullptr);
     broken_ += broke;
+    if (thermal_) insulated_ += thermal_->cut_pairs(ends);
     if (broke == 0) break;
   }
 }
@@ -62,6 +65,7 @@ nlohmann::json MechanicsRun::facts() const {
           {"longest_relaxation", largest_},
           {"unconverged_relaxations", unconverged_},
           {"broken_bonds", broken_},
+          {"thermal_pairs_cut", insulated_},
           {"largest_displacement", largest_u}};
 }
 

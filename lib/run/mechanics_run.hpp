@@ -20,7 +20,9 @@ namespace frostwall::run {
 
 class MechanicsRun {
  public:
-  MechanicsRun(const project::Project& p, const Model& m);
+  // The model's thermal pairs are cut where bonds break when the project's
+  // cracks insulate.
+  MechanicsRun(const project::Project& p, Model& m);
   // force: equilibrate whatever the temperature change (snapshots).
   void update(const thermal::ThermalModel& model, bool force);
   const pd::PdSolid& solid() const { return *solid_; }
@@ -32,8 +34,9 @@ class MechanicsRun {
  private:
   const project::Mechanics& mechanics_;
   std::unique_ptr<pd::PdSolid> solid_;
+  thermal::ThermalModel* thermal_ = nullptr;
   std::vector<double> u_, dT_, T_equilibrium_;
-  std::size_t relaxations_ = 0, iterations_ = 0, unconverged_ = 0, broken_ = 0;
+  std::size_t relaxations_ = 0, iterations_ = 0, unconverged_ = 0, broken_ = 0, insulated_ = 0;
   int largest_ = 0;  // iterations of the longest relaxation
 };
 

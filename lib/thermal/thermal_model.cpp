@@ -140,4 +140,22 @@ double ThermalModel::stored_heat() const {
   return particles::sum_over_particles(pairs_.n_free, [&](std::size_t i) { return volume_[i] * H_[i]; });
 }
 
+std::size_t ThermalModel::cut_pairs(const std::vector<std::pair<std::uint32_t, std::uint32_t>>& ends) {
+  std::size_t cut = 0;
+  auto cut_row = [&](std::uint32_t i, std::uint32_t j) {
+    if (i >= pairs_.n_free) return;
+    for (std::size_t e = pairs_.row_start[i]; e < pairs_.row_start[i + 1]; ++e)
+      if (pairs_.column[e] == j && pairs_.weight[e] != 0.0) {
+        pairs_.weight[e] = 0.0;
+        ++cut;
+      }
+  };
+  for (const auto& [i, j] : ends) {
+    cut_row(i, j);
+    cut_row(j, i);
+  }
+  if (cut > 0) all_changed_ = true;  // the cached coefficients are rebuilt
+  return cut;
+}
+
 }  // namespace frostwall::thermal

@@ -71,6 +71,10 @@ class ThermalModel {
   // Heat flowing into the free particles from each boundary, W (per metre
   // of depth in 2-D), at the current state: the boundary pairs alone.
   std::vector<double> boundary_heat_rate() const;
+  // A crack that stops heat: the pairs between free particles i and j (both
+  // ways, so the flux stays antisymmetric and energy exact) carry nothing
+  // from now on. Returns how many pair entries were cut.
+  std::size_t cut_pairs(const std::vector<std::pair<std::uint32_t, std::uint32_t>>& ends);
   // Sets the enthalpy of free particle i and the fields derived from it.
   void set_enthalpy(std::size_t i, double H) { set_state(i, H); }
   // Sets every free particle's enthalpy to new_enthalpy(i), in one pass
