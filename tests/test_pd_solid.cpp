@@ -193,3 +193,40 @@ TEST_CASE("PD solid: a pre-crack holds at 0.9 of its critical load and breaks at
   CHECK(broken_below == 0);
   CHECK(broken_above > 10);
 }
+
+// The PD stress estimate 1/2 sum w (s - s_T) e (x) xi: a uniform isotropic
+// stretch s gives the continuum's plane-strain stress 2 (lambda + mu) s =
+// 8 E s / 5 inside (to the lattice's quadrature, as the energy), no shear;
+// the plate cooled freely on its rollers is stress-free.
+TEST_CASE("PD solid: the stress estimate under uniform stretch and free contraction", "[pd][mechanics]") {
+  const double L = 0.01, dx = L / 40, s = 1e-4;
+  const auto m = plate_mechanics();
+  const pd::PdSolid solid(square_lattice(L, dx), m, pd::make_bond_law(m, 3.015 * dx));
+  std::vector<double> u(2 * solid.size()), dT(solid.size(), 0.0);
+  for (std::size_t i = 0; i < solid.size(); ++i) {
+    u[2 * i] = s * solid.position()[i][0];
+    u[2 * i + 1] = s * solid.position()[i][1];
+  }
+  const auto sigma = solid.stress(u, dT);
+  const double exact = 1.6 * E * s;
+  double worst = 0.0, shear = 0.0;
+  for (std::size_t i = 0; i < solid.size(); ++i) {
+    if (std::max(solid.position()[i][0], solid.position()[i][1]) >= L - 7 * dx) continue;
+    worst = std::max({worst, std::abs(sigma[i][0] / exact - 1.0), std::abs(sigma[i][1] / exact - 1.0)});
+    shear = std::max(shear, std::abs(sigma[i][2] / exact));
+  }
+  // Cooled by 9 K and contracted freely: no stress anywhere.
+  const std::vector<double> cold(solid.size(), -9.0);
+  const double k = -(1.0 + 0.25) * alpha * 9.0;
+  for (std::size_t i = 0; i < solid.size(); ++i) {
+    u[2 * i] = k * solid.position()[i][0];
+    u[2 * i + 1] = k * solid.position()[i][1];
+  }
+  double free_stress = 0.0;
+  for (const auto& t : solid.stress(u, cold)) free_stress = std::max({free_stress, std::abs(t[0]), std::abs(t[1]), std::abs(t[2])});
+  fmt::print("PD stress: uniform stretch, worst interior error {:.2e} (shear {:.1e}); free contraction, largest |sigma| {:.2e} Pa "
+             "(against {:.2e} Pa for the same strain held)\n", worst, shear, free_stress, 1.6 * E * std::abs(k));
+  CHECK(worst < 0.02);
+  CHECK(shear < 1e-9);
+  CHECK(free_stress < 1e-6 * 1.6 * E * std::abs(k));
+}

@@ -282,6 +282,24 @@ std::vector<double> PdSolid::damage() const {
   return phi;
 }
 
+std::vector<std::array<double, 3>> PdSolid::stress(const std::vector<double>& u, const std::vector<double>& dT) const {
+  std::vector<std::array<double, 3>> sigma(n_, {0.0, 0.0, 0.0});
+  particles::for_each_particle(n_, [&](std::size_t i) {
+    const Vec2 ui(u[2 * i], u[2 * i + 1]);
+    for (std::size_t e = start_[i]; e < start_[i + 1]; ++e) {
+      if (!intact_[e]) continue;
+      const std::uint32_t k = column_[e];
+      const Vec2 xi = position_[k] - position_[i];
+      const Vec2 y = xi + displacement(k, u) - ui;
+      const double f = 0.5 * weight_[e] * mechanical_stretch(i, e, u, dT) / y.norm();  // along y, per unit |y|
+      sigma[i][0] += f * y[0] * xi[0];
+      sigma[i][1] += f * y[1] * xi[1];
+      sigma[i][2] += f * 0.5 * (y[0] * xi[1] + y[1] * xi[0]);
+    }
+  });
+  return sigma;
+}
+
 std::vector<double> PdSolid::energy_density(const std::vector<double>& u, const std::vector<double>& dT) const {
   std::vector<double> w(n_, 0.0);
   particles::for_each_particle(n_, [&](std::size_t i) {

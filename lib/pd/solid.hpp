@@ -20,6 +20,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -80,6 +81,11 @@ class PdSolid {
   double largest_stretch(const std::vector<double>& u, const std::vector<double>& dT) const;
   // Share of broken bonds of each free particle, weighted by volume.
   std::vector<double> damage() const;
+  // The PD stress estimate of each free particle (sigma_xx, sigma_yy,
+  // sigma_xy, Pa): half the sum over its bonds of the bond force per unit
+  // volume times the bond vector, 1/2 sum w (s - s_T) e (x) xi. A uniform
+  // strain gives the continuum's stress where the neighbourhood is whole.
+  std::vector<std::array<double, 3>> stress(const std::vector<double>& u, const std::vector<double>& dT) const;
   // Strain energy density of each free particle, 1/4 sum c G (s - s_T)^2 |xi| V_j.
   std::vector<double> energy_density(const std::vector<double>& u, const std::vector<double>& dT) const;
 

@@ -28,6 +28,7 @@ class MechanicsRun {
   const pd::PdSolid& solid() const { return *solid_; }
   const std::vector<double>& displacement() const { return u_; }  // 2 per free particle
   std::vector<double> damage() const { return solid_->damage(); }
+  std::vector<std::array<double, 3>> stress() const { return solid_->stress(u_, dT_); }  // Pa
   // Run facts for the summary: relaxations, iterations, broken bonds.
   nlohmann::json facts() const;
 

@@ -85,6 +85,13 @@ void add_mechanics(io::PointCloudFrame& frame, const MechanicsRun& mechanics) {
   }
   frame.vectors.emplace_back("displacement", std::move(vectors));
   frame.fields.emplace_back("damage", std::move(phi));
+  const auto sigma = mechanics.stress();
+  const char* names[3] = {"stress_xx", "stress_yy", "stress_xy"};
+  for (int c = 0; c < 3; ++c) {
+    std::vector<double> component(frame.points.size(), 0.0);
+    for (std::size_t i = 0; i < sigma.size(); ++i) component[i] = sigma[i][c];
+    frame.fields.emplace_back(names[c], std::move(component));
+  }
 }
 
 // The whole ring for ParaView: every copy of the wedge under its mirror group.
