@@ -51,6 +51,16 @@ project::Mechanics plate_mechanics(project::Plane plane = project::Plane::strain
   return m;
 }
 
+// u = s x: a uniform isotropic stretch (or, with s < 0, contraction).
+std::vector<double> uniform_stretch(const pd::PdSolid& solid, double s) {
+  std::vector<double> u(2 * solid.size());
+  for (std::size_t i = 0; i < solid.size(); ++i) {
+    u[2 * i] = s * solid.position()[i][0];
+    u[2 * i + 1] = s * solid.position()[i][1];
+  }
+  return u;
+}
+
 }  // namespace
 
 TEST_CASE("PD solid: uniform stretch stores the continuum's energy", "[pd][mechanics]") {
@@ -58,11 +68,7 @@ TEST_CASE("PD solid: uniform stretch stores the continuum's energy", "[pd][mecha
   for (const auto plane : {project::Plane::strain, project::Plane::stress}) {
     const auto m = plate_mechanics(plane);
     const pd::PdSolid solid(square_lattice(L, dx), m, pd::make_bond_law(m, 3.015 * dx));
-    std::vector<double> u(2 * solid.size()), dT(solid.size(), 0.0);
-    for (std::size_t i = 0; i < solid.size(); ++i) {
-      u[2 * i] = s * solid.position()[i][0];
-      u[2 * i + 1] = s * solid.position()[i][1];
-    }
+    std::vector<double> u = uniform_stretch(solid, s), dT(solid.size(), 0.0);
     const auto W = solid.energy_density(u, dT);
     const double exact = plane == project::Plane::strain ? 1.6 * E * s * s : 1.5 * E * s * s;
     double interior = 0.0, edge = 0.0;
@@ -125,11 +131,7 @@ TEST_CASE("PD solid: free thermal expansion breaks nothing; overstretched bonds 
   const double sT = solid.law().thermal_stretch_per_K * 50.0;
   REQUIRE(solid.law().critical_stretch < 0.1 * sT);
   // Heated by 50 K and expanded freely: every bond's stretch is its thermal one.
-  std::vector<double> u(2 * solid.size()), dT(solid.size(), 50.0);
-  for (std::size_t i = 0; i < solid.size(); ++i) {
-    u[2 * i] = sT * solid.position()[i][0];
-    u[2 * i + 1] = sT * solid.position()[i][1];
-  }
+  std::vector<double> u = uniform_stretch(solid, sT), dT(solid.size(), 50.0);
   CHECK(solid.break_bonds(u, dT) == 0);
   for (double phi : solid.damage()) CHECK(phi == 0.0);
   // The same displacement without the heat: mechanical stretch sT everywhere.
@@ -202,11 +204,7 @@ TEST_CASE("PD solid: the stress estimate under uniform stretch and free contract
   const double L = 0.01, dx = L / 40, s = 1e-4;
   const auto m = plate_mechanics();
   const pd::PdSolid solid(square_lattice(L, dx), m, pd::make_bond_law(m, 3.015 * dx));
-  std::vector<double> u(2 * solid.size()), dT(solid.size(), 0.0);
-  for (std::size_t i = 0; i < solid.size(); ++i) {
-    u[2 * i] = s * solid.position()[i][0];
-    u[2 * i + 1] = s * solid.position()[i][1];
-  }
+  std::vector<double> u = uniform_stretch(solid, s), dT(solid.size(), 0.0);
   const auto sigma = solid.stress(u, dT);
   const double exact = 1.6 * E * s;
   double worst = 0.0, shear = 0.0;
@@ -218,10 +216,7 @@ TEST_CASE("PD solid: the stress estimate under uniform stretch and free contract
   // Cooled by 9 K and contracted freely: no stress anywhere.
   const std::vector<double> cold(solid.size(), -9.0);
   const double k = -(1.0 + 0.25) * alpha * 9.0;
-  for (std::size_t i = 0; i < solid.size(); ++i) {
-    u[2 * i] = k * solid.position()[i][0];
-    u[2 * i + 1] = k * solid.position()[i][1];
-  }
+  u = uniform_stretch(solid, k);
   double free_stress = 0.0;
   for (const auto& t : solid.stress(u, cold)) free_stress = std::max({free_stress, std::abs(t[0]), std::abs(t[1]), std::abs(t[2])});
   fmt::print("PD stress: uniform stretch, worst interior error {:.2e} (shear {:.1e}); free contraction, largest |sigma| {:.2e} Pa "

@@ -20,7 +20,9 @@ RelaxationResult relax(const PdSolid& solid, std::vector<double>& u, const std::
     if (solid.linear()) solid.forces_linear(u_all, thermal, out);
     else solid.forces_extended(u_all, dT_all, out);
   };
-  for (std::size_t i = 0; i < n; ++i) lambda[2 * i] = lambda[2 * i + 1] = 0.25 * 4.0 * solid.stiffness()[i];
+  // 1/4 of the Gershgorin sum (each bond's stiffness counted for both its
+  // ends, so twice the particle's own sum), with a factor 2 of margin.
+  for (std::size_t i = 0; i < n; ++i) lambda[2 * i] = lambda[2 * i + 1] = 0.25 * 2.0 * 2.0 * solid.stiffness()[i];
   RelaxationResult result;
   forces(F);
   // A reference force: the stiffness times a strain of 1e-12 on a bond.

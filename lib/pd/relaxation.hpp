@@ -4,9 +4,9 @@
 //     v(n+1/2) = ((2 - c) v(n-1/2) + 2 F(n) / lambda) / (2 + c)
 //     u(n+1)   = u(n) + v(n+1/2),
 // lambda_i >= 1/4 sum_j |K_ij| (Gershgorin: here the sum of c G V_j / |xi|
-// over i's bonds, doubled for the neighbours' share) so the unit step is
-// stable, and one global damping c = 2 sqrt(u.K u / u.u) from the local
-// diagonal stiffness K_ii = -(F_i(n)/lambda_i - F_i(n-1)/lambda_i) / v_i(n-1/2)
+// over i's bonds, doubled for the neighbours' share, with a margin of 2)
+// so the unit step is stable, and one global damping c = 2 sqrt(u.K u / u.u)
+// from the local diagonal stiffness K_ii = -(F_i(n)/lambda_i - F_i(n-1)/lambda_i) / v_i(n-1/2)
 // (physics.md: per-thread dampings made results depend on the thread
 // count), clamped to [0, 2). It stops when the RMS of a step's
 // displacement increment is below tolerance x the RMS displacement (or when

@@ -25,12 +25,13 @@ MechanicsRun::MechanicsRun(const project::Project& p, Model& m)
 
 void MechanicsRun::update(const thermal::ThermalModel& model, bool force) {
   const auto& T = model.temperature();
-  double moved = 0.0;
-  for (std::size_t i = 0; i < dT_.size(); ++i) moved = std::max(moved, std::abs(T[i] - T_equilibrium_[i]));
-  // Default: 10 % of the largest change from the reference so far.
-  double largest = 0.0;
-  for (std::size_t i = 0; i < dT_.size(); ++i)
+  // How far any temperature moved since the last equilibrium, and the
+  // largest change from the reference (the default threshold is 10 % of it).
+  double moved = 0.0, largest = 0.0;
+  for (std::size_t i = 0; i < dT_.size(); ++i) {
+    moved = std::max(moved, std::abs(T[i] - T_equilibrium_[i]));
     largest = std::max(largest, std::abs(T[i] - mechanics_.material.reference_temperature));
+  }
   const double threshold = mechanics_.temperature_change.value_or(std::max(0.1 * largest, 1e-6));
   if (!force && moved < threshold) return;
   if (moved == 0.0 && relaxations_ > 0) return;

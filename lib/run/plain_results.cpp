@@ -40,9 +40,8 @@ PlainResults::PlainResults(const project::Project& p, const Model& m)
   sensors_ = std::make_unique<post::PointProbe>(sampler_, where);
   const double step = 0.5 * m.particles().spacing;
   for (const auto& line : p.output.front_along) {
-    const auto points = along(line, step);
-    // The step actually used: the segment split into whole steps.
-    lines_.push_back(std::make_unique<post::PointProbe>(sampler_, points));
+    // (snapshot() reads the step back from the points: the segment is split into whole steps.)
+    lines_.push_back(std::make_unique<post::PointProbe>(sampler_, along(line, step)));
   }
   const auto& P = m.particles();
   curve_points_ = P.position;
