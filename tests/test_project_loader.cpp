@@ -341,3 +341,195 @@ TEST_CASE("implausible but computable input loads with warnings", "[project]") {
     CHECK(load_edited("single_ring_sand.json", {{"pipe", {{"temperature", 0.0}}}}).warnings.empty());
   }
 }
+
+namespace {
+
+// The plate of tests/data/bad/pores_*.json without their mistakes: 300 um
+// square, two pores, PD mechanics without a freezing_expansion block.
+nlohmann::json porous_plate() {
+  return nlohmann::json::parse(R"({
+    "name": "porous plate",
+    "geometry": { "type": "rectangle", "width": 0.0003, "height": 0.0003,
+                  "boundaries": { "top": { "temperature": -10.0 }, "right": { "temperature": -10.0 },
+                                  "left": "adiabatic", "bottom": "adiabatic" },
+                  "pores": [ { "x": 0.0001, "y": 0.0001, "radius": 2e-5 },
+                             { "x": 0.0002, "y": 0.0002, "radius": 1.5e-5 } ] },
+    "soil": { "name": "cement paste", "density": 2000.0,
+              "unfrozen": { "conductivity": 1.0, "heat_capacity": 900.0 },
+              "frozen": { "conductivity": 1.0, "heat_capacity": 900.0 },
+              "latent_heat": 0.0, "freezing_point": -100.0 },
+    "domain": { "initial_temperature": 5.0 },
+    "time": { "end": 10, "unit": "s" },
+    "numerics": { "method": "pd", "spacing": 1e-5 },
+    "mechanics": { "material": { "elastic_modulus": 25e9, "thermal_expansion": 1e-5,
+                                 "reference_temperature": 5.0 } },
+    "output": { "directory": "out/porous_plate" }
+  })");
+}
+
+nlohmann::json patched_plate(const nlohmann::json& patch) {
+  auto plate = porous_plate();
+  plate.merge_patch(patch);  // null removes a field
+  return plate;
+}
+
+Project load_plate(const nlohmann::json& patch) { return parse_project(patched_plate(patch).dump()); }
+
+std::vector<std::string> plate_problems(const nlohmann::json& patch) {
+  return problems_of(patched_plate(patch).dump(), "plate.json");
+}
+
+const nlohmann::json generator = {{"count", 30}, {"radius", {8e-6, 1.5e-5}}, {"min_gap", 2e-6}, {"seed", 7}};
+
+}  // namespace
+
+TEST_CASE("porous plate: listed pores read back, freezing expansion set by default", "[project][pores]") {
+  const Project p = load_plate(nlohmann::json::object());
+  const auto& plate = std::get<Rectangle>(p.geometry);
+  REQUIRE(plate.pores.size() == 2);
+  CHECK(plate.pores[0].x == 0.0001);
+  CHECK(plate.pores[0].y == 0.0001);
+  CHECK(plate.pores[0].radius == 2e-5);
+  CHECK(plate.pores[1].x == 0.0002);
+  CHECK(plate.pores[1].radius == 1.5e-5);
+  CHECK_FALSE(plate.pore_generator);
+  CHECK(p.warnings.empty());
+  // pores + mechanics: the engines find freezing_expansion set
+  REQUIRE(p.mechanics);
+  REQUIRE(p.mechanics->freezing_expansion);
+  CHECK(p.mechanics->freezing_expansion->model == FreezingExpansion::Model::ice_eigenstrain);
+  CHECK(p.mechanics->freezing_expansion->volume_change == 0.09);
+  CHECK(p.mechanics->freezing_expansion->ice_elastic_modulus == 9e9);
+  CHECK(p.mechanics->frozen_fraction_change == 0.05);
+
+  const Project given = load_plate(
+      {{"mechanics",
+        {{"freezing_expansion", {{"model", "rim_displacement"}, {"volume_change", 0.1}, {"ice_elastic_modulus", 8e9}}},
+         {"relaxation", {{"frozen_fraction_change", 0.02}}}}}});
+  const auto& e = *given.mechanics->freezing_expansion;
+  CHECK(e.model == FreezingExpansion::Model::rim_displacement);
+  CHECK(e.volume_change == 0.1);
+  CHECK(e.ice_elastic_modulus == 8e9);
+  CHECK(given.mechanics->frozen_fraction_change == 0.02);
+  // A plate without pores or mechanics gets neither.
+  const Project plain = load_plate({{"geometry", {{"pores", nullptr}}}});
+  CHECK(std::get<Rectangle>(plain.geometry).pores.empty());
+  CHECK_FALSE(plain.mechanics->freezing_expansion);
+  CHECK_FALSE(load_plate({{"mechanics", nullptr}}).mechanics);
+}
+
+TEST_CASE("porous plate: drawn pores are reproducible and keep their gaps", "[project][pores]") {
+  const Project p = load_plate({{"geometry", {{"pores", generator}}}});
+  const auto& plate = std::get<Rectangle>(p.geometry);
+  REQUIRE(plate.pore_generator);
+  CHECK(plate.pore_generator->count == 30);
+  CHECK(plate.pore_generator->radius_min == 8e-6);
+  CHECK(plate.pore_generator->radius_max == 1.5e-5);
+  CHECK(plate.pore_generator->min_gap == 2e-6);
+  CHECK(plate.pore_generator->seed == 7);
+  const auto& pores = plate.pores;
+  REQUIRE(pores.size() == 30);
+  const double gap = 2e-6;
+  for (std::size_t i = 0; i < pores.size(); ++i) {
+    INFO("pore " << i << " at " << pores[i].x << ", " << pores[i].y << " radius " << pores[i].radius);
+    CHECK(pores[i].radius >= 8e-6);
+    CHECK(pores[i].radius <= 1.5e-5);
+    CHECK(pores[i].x - pores[i].radius >= gap);
+    CHECK(pores[i].y - pores[i].radius >= gap);
+    CHECK(pores[i].x + pores[i].radius + gap <= plate.width);
+    CHECK(pores[i].y + pores[i].radius + gap <= plate.height);
+    for (std::size_t j = 0; j < i; ++j) {
+      const double dx = pores[i].x - pores[j].x, dy = pores[i].y - pores[j].y;
+      const double reach = pores[i].radius + pores[j].radius + gap;
+      CHECK(dx * dx + dy * dy >= reach * reach);
+    }
+  }
+  // The radii are drawn, not all alike.
+  const auto [smallest, largest] = std::minmax_element(pores.begin(), pores.end(),
+                                                        [](const Pore& a, const Pore& b) { return a.radius < b.radius; });
+  CHECK(largest->radius - smallest->radius > 1e-6);
+
+  const auto same = [](const std::vector<Pore>& a, const std::vector<Pore>& b) {
+    return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](const Pore& u, const Pore& v) {
+             return u.x == v.x && u.y == v.y && u.radius == v.radius;
+           });
+  };
+  const auto pores_of = [](const Project& q) { return std::get<Rectangle>(q.geometry).pores; };
+  CHECK(same(pores, pores_of(load_plate({{"geometry", {{"pores", generator}}}}))));
+  auto other_seed = generator;
+  other_seed["seed"] = 8;
+  const auto other = pores_of(load_plate({{"geometry", {{"pores", other_seed}}}}));
+  CHECK(other.size() == 30);
+  CHECK_FALSE(same(pores, other));
+
+  // One radius for all; min_gap 0 and seed 1 by default.
+  const Project single = load_plate({{"geometry", {{"pores", {{"count", 5}, {"radius", 1e-5}}}}}});
+  const auto& g = *std::get<Rectangle>(single.geometry).pore_generator;
+  CHECK(g.radius_min == 1e-5);
+  CHECK(g.radius_max == 1e-5);
+  CHECK(g.min_gap == 0.0);
+  CHECK(g.seed == 1);
+  for (const auto& pore : pores_of(single)) CHECK(pore.radius == 1e-5);
+}
+
+TEST_CASE("porous plate: pore fluid defaults and overrides", "[project][pores]") {
+  const PoreFluid defaults = load_plate(nlohmann::json::object()).pore_fluid;
+  CHECK(defaults.water_conductivity == 0.6);
+  CHECK(defaults.ice_conductivity == 2.14);
+  CHECK(defaults.water_heat_capacity == 4182.0);
+  CHECK(defaults.ice_heat_capacity == 2060.0);
+  CHECK(defaults.water_density == 1000.0);
+  CHECK(defaults.ice_density == 920.0);
+  CHECK(defaults.latent_heat == 334e3);
+  CHECK(defaults.freezing_point == 0.0);
+
+  const Project p = load_plate({{"pore_fluid",
+                                 {{"water", {{"conductivity", 0.56}}},
+                                  {"ice", {{"density", 917.0}, {"heat_capacity", 2100.0}}},
+                                  {"freezing_point", -0.5}}}});
+  CHECK(p.pore_fluid.water_conductivity == 0.56);
+  CHECK(p.pore_fluid.ice_density == 917.0);
+  CHECK(p.pore_fluid.ice_heat_capacity == 2100.0);
+  CHECK(p.pore_fluid.freezing_point == -0.5);
+  CHECK(p.pore_fluid.water_density == 1000.0);  // not given: kept
+  CHECK(p.pore_fluid.ice_conductivity == 2.14);
+  CHECK(p.pore_fluid.latent_heat == 334e3);
+  CHECK(p.warnings.empty());
+
+  const Project no_pores = load_plate({{"geometry", {{"pores", nullptr}}}, {"pore_fluid", {{"latent_heat", 0}}}});
+  CHECK(no_pores.warnings ==
+        std::vector<std::string>{"pore_fluid: the plate has no pores (geometry.pores); ignored"});
+}
+
+TEST_CASE("porous plate: every problem of pores, pore fluid and freezing expansion", "[project][pores]") {
+  CHECK(plate_problems({{"pore_fluid", {{"water", {{"conductivity", 0}, {"viscosity", 1e-3}}}, {"latent_heat", -1}}}}) ==
+        std::vector<std::string>{"pore_fluid.water.viscosity: unknown field",
+                                 "pore_fluid.water.conductivity: must be positive, got 0",
+                                 "pore_fluid.latent_heat: must not be negative, got -1"});
+  CHECK(plate_problems({{"geometry", {{"pores", {{"count", 0}, {"radius", {2e-5, 1e-5}}, {"min_gap", -1e-6}, {"seed", -1}}}}}}) ==
+        std::vector<std::string>{"geometry.pores.count: must be a positive integer, got 0",
+                                 "geometry.pores.radius: must be [min, max] with min <= max, got [2e-05,1e-05]",
+                                 "geometry.pores.min_gap: must not be negative, got -1e-06",
+                                 "geometry.pores.seed: must be a non-negative integer, got -1"});
+  CHECK(plate_problems({{"geometry", {{"pores", nlohmann::json::array()}}}}) ==
+        std::vector<std::string>{
+            R"(geometry.pores: must list at least one pore (leave "pores" out for a plate without pores))"});
+  // A pore may touch a side; the later of two that overlap is named.
+  CHECK(plate_problems({{"geometry", {{"pores", {{{"x", 2e-5}, {"y", 2e-5}, {"radius", 2e-5}},
+                                                 {{"x", 1e-4}, {"y", 2e-5}, {"radius", 2e-5}},
+                                                 {{"x", 1.3e-4}, {"y", 5e-5}, {"radius", 3e-5}}}}}}}) ==
+        std::vector<std::string>{"geometry.pores[2]: overlaps geometry.pores[1]"});
+  CHECK(plate_problems({{"geometry", {{"pores", nullptr}}},
+                        {"mechanics", {{"freezing_expansion", {{"model", "rim_displacement"}}}}}}) ==
+        std::vector<std::string>{"mechanics.freezing_expansion: the plate has no pores (geometry.pores)"});
+  CHECK(plate_problems({{"mechanics",
+                         {{"freezing_expansion", {{"model", "ice"}, {"ice_elastic_modulus", 0}}},
+                          {"relaxation", {{"frozen_fraction_change", 1.5}}}}}}) ==
+        std::vector<std::string>{
+            "mechanics.relaxation.frozen_fraction_change: must be at most 1, got 1.5",
+            "mechanics.freezing_expansion.model: unknown freezing expansion model 'ice' (expected rim_displacement, "
+            "ice_eigenstrain)",
+            "mechanics.freezing_expansion.ice_elastic_modulus: must be positive, got 0"});
+  CHECK(plate_problems({{"mechanics", {{"freezing_expansion", {{"volume_change", 0.09}}}}}}) ==
+        std::vector<std::string>{"mechanics.freezing_expansion.model: required field is missing"});
+}

@@ -22,7 +22,12 @@ RelaxationResult relax(const PdSolid& solid, std::vector<double>& u, const std::
   };
   // 1/4 of the Gershgorin sum (each bond's stiffness counted for both its
   // ends, so twice the particle's own sum), with a factor 2 of margin.
-  for (std::size_t i = 0; i < n; ++i) lambda[2 * i] = lambda[2 * i + 1] = 0.25 * 2.0 * 2.0 * solid.stiffness()[i];
+  // Particles the relaxation leaves (held, or without bonds) get 1/lambda = 0.
+  std::vector<double> inv_lambda(m);
+  for (std::size_t i = 0; i < n; ++i) {
+    lambda[2 * i] = lambda[2 * i + 1] = 0.25 * 2.0 * 2.0 * solid.stiffness()[i];
+    inv_lambda[2 * i] = inv_lambda[2 * i + 1] = solid.moves(i) ? 1.0 / lambda[2 * i] : 0.0;
+  }
   RelaxationResult result;
   forces(F);
   // A reference force: the stiffness times a strain of 1e-12 on a bond.
@@ -32,7 +37,7 @@ RelaxationResult relax(const PdSolid& solid, std::vector<double>& u, const std::
   auto rms = [&](auto&& value) {
     return std::sqrt(particles::sum_over_particles(m, [&](std::size_t k) { return value(k) * value(k); }) / m);
   };
-  if (rms([&](std::size_t k) { return F[k]; }) <= 1e-14 * scale * horizon) {
+  if (rms([&](std::size_t k) { return inv_lambda[k] > 0.0 ? F[k] : 0.0; }) <= 1e-14 * scale * horizon) {
     result.converged = true;
     return result;
   }
@@ -41,7 +46,7 @@ RelaxationResult relax(const PdSolid& solid, std::vector<double>& u, const std::
     // First step: v(1/2) = F / (2 lambda).
     const double c_now = it == 0 ? 0.0 : c;
     particles::for_each_particle(m, [&](std::size_t k) {
-      v[k] = it == 0 ? 0.5 * F[k] / lambda[k] : ((2.0 - c_now) * v[k] + 2.0 * F[k] / lambda[k]) / (2.0 + c_now);
+      v[k] = it == 0 ? 0.5 * F[k] * inv_lambda[k] : ((2.0 - c_now) * v[k] + 2.0 * F[k] * inv_lambda[k]) / (2.0 + c_now);
       u[k] += v[k];
     });
     F_old.swap(F);
@@ -49,9 +54,10 @@ RelaxationResult relax(const PdSolid& solid, std::vector<double>& u, const std::
     // One pass: the damping's u.K u and u.u from the local stiffness of
     // this step, and the RMS of the increment and of the force.
     const auto sums = particles::sums_over_particles<4>(m, [&](std::size_t k, std::array<double, 4>& acc) {
+      if (inv_lambda[k] == 0.0) return;
       const double uk2 = u[k] * u[k];
       acc[1] += uk2;
-      if (v[k] != 0.0) acc[0] += uk2 * (-(F[k] - F_old[k]) / lambda[k] / v[k]);
+      if (v[k] != 0.0) acc[0] += uk2 * (-(F[k] - F_old[k]) * inv_lambda[k] / v[k]);
       acc[2] += v[k] * v[k];
       acc[3] += F[k] * F[k];
     });

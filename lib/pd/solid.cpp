@@ -122,6 +122,29 @@ PdSolid::PdSolid(const SolidGeometry& g, const project::Mechanics& m, const Bond
   });
   stiffness3_.resize(column_.size());
   for (std::size_t e = 0; e < column_.size(); ++e) stiffness3_[e] = weight_[e] / std::pow(length_[e], 3);
+  matrix_weight_ = weight_;
+}
+
+void PdSolid::set_eigenstrain(const std::vector<double>& eigenstrain) { eigen_ = eigenstrain; }
+
+void PdSolid::set_stiffness_ratio(const std::vector<double>& ratio) {
+  particles::for_each_particle(n_, [&](std::size_t i) {
+    double sum = 0.0;
+    for (std::size_t e = start_[i]; e < start_[i + 1]; ++e) {
+      const double ri = ratio[i], rj = ratio[source(column_[e])];
+      const double series = ri + rj > 0.0 ? 2.0 * ri * rj / (ri + rj) : 0.0;
+      weight_[e] = intact_[e] ? matrix_weight_[e] * series : 0.0;
+      stiffness3_[e] = weight_[e] / (length_[e] * length_[e] * length_[e]);
+      sum += weight_[e] / length_[e];
+    }
+    stiffness_[i] = sum;
+  });
+}
+
+std::size_t PdSolid::intact_bonds() const {
+  std::size_t count = 0;
+  for (std::uint8_t b : intact_) count += b;
+  return count;
 }
 
 Vec2 PdSolid::displacement(std::uint32_t k, const std::vector<double>& u) const {
@@ -139,6 +162,13 @@ void PdSolid::extend(const std::vector<double>& u, std::vector<double>& u_all) c
     u_all[2 * (n_ + g)] = v[0];
     u_all[2 * (n_ + g) + 1] = v[1];
   });
+}
+
+std::vector<double> PdSolid::eigen_all() const {
+  if (eigen_.empty()) return {};
+  std::vector<double> all(position_.size());
+  for (std::size_t k = 0; k < position_.size(); ++k) all[k] = eigen_[source(static_cast<std::uint32_t>(k))];
+  return all;
 }
 
 void PdSolid::extend_temperature(const std::vector<double>& dT, std::vector<double>& dT_all) const {
@@ -163,15 +193,17 @@ void PdSolid::forces_extended(const std::vector<double>& u_all, const std::vecto
   const double* Len = length_.data();
   const std::uint32_t* C = column_.data();
   const double half_kT = 0.5 * law_.thermal_stretch_per_K;
+  const std::vector<double> E = eigen_all();
+  auto half = [&](const std::vector<double>& v, std::uint32_t k) { return v.empty() ? 0.0 : 0.5 * v[k]; };
   particles::for_each_particle(n_, [&](std::size_t i) {
-    const double uxi = U[2 * i], uyi = U[2 * i + 1], Di = D[i];
+    const double uxi = U[2 * i], uyi = U[2 * i + 1], Di = D[i], Ei = half(E, static_cast<std::uint32_t>(i));
     double fx = 0.0, fy = 0.0;
     for (std::size_t e = start_[i], end = start_[i + 1]; e < end; ++e) {
       const std::uint32_t k = C[e];
       const double yx = X[2 * e] + U[2 * k] - uxi, yy = X[2 * e + 1] + U[2 * k + 1] - uyi;
       const double L = std::sqrt(yx * yx + yy * yy);
       // w (s - s_T) / L with s = L / |xi| - 1: the force along y.
-      const double a = W[e] * ((L - Len[e]) / Len[e] - half_kT * (Di + D[k])) / L;
+      const double a = W[e] * ((L - Len[e]) / Len[e] - half_kT * (Di + D[k]) - Ei - half(E, k)) / L;
       fx += a * yx;
       fy += a * yy;
     }
@@ -183,10 +215,12 @@ void PdSolid::forces_extended(const std::vector<double>& u_all, const std::vecto
 void PdSolid::thermal_force(const std::vector<double>& dT_all, std::vector<double>& force) const {
   force.resize(2 * n_);
   const double half_kT = 0.5 * law_.thermal_stretch_per_K;
+  const std::vector<double> E = eigen_all();
   particles::for_each_particle(n_, [&](std::size_t i) {
     double fx = 0.0, fy = 0.0;
     for (std::size_t e = start_[i]; e < start_[i + 1]; ++e) {
-      const double a = -weight_[e] * half_kT * (dT_all[i] + dT_all[column_[e]]) / length_[e];
+      const double eigen = E.empty() ? 0.0 : 0.5 * (E[i] + E[column_[e]]);
+      const double a = -weight_[e] * (half_kT * (dT_all[i] + dT_all[column_[e]]) + eigen) / length_[e];
       fx += a * xi_[2 * e];
       fy += a * xi_[2 * e + 1];
     }
@@ -234,8 +268,11 @@ std::size_t PdSolid::break_bonds(const std::vector<double>& u, const std::vector
   std::size_t broken = 0;
   for (std::size_t i = 0; i < n_; ++i)
     for (std::size_t e = start_[i]; e < start_[i + 1]; ++e)
-      // The mechanical stretch: free thermal expansion breaks nothing.
-      if (intact_[e] && mechanical_stretch(i, e, u, dT) > law_.critical_stretch) {
+      // The mechanical stretch: free thermal expansion breaks nothing. A
+      // bond without stiffness (to liquid water) or to a held particle
+      // carries nothing to break.
+      if (intact_[e] && weight_[e] != 0.0 && !held(i) && !held(source(column_[e])) &&
+          mechanical_stretch(i, e, u, dT) > law_.critical_stretch) {
         intact_[e] = 0;
         weight_[e] = stiffness3_[e] = 0.0;  // the force loops need no test
         ++broken;
@@ -274,6 +311,7 @@ std::vector<double> PdSolid::damage() const {
   for (std::size_t i = 0; i < n_; ++i) {
     double all = 0.0, lost = 0.0;
     for (std::size_t e = start_[i]; e < start_[i + 1]; ++e) {
+      if (held(source(column_[e]))) continue;  // a loading device, not material
       all += volume_share_[e];
       if (!intact_[e]) lost += volume_share_[e];
     }

@@ -79,7 +79,8 @@ class PdSolid {
   std::size_t cut(const Vec2& a, const Vec2& b);
   // The largest mechanical stretch s - s_T over the intact bonds.
   double largest_stretch(const std::vector<double>& u, const std::vector<double>& dT) const;
-  // Share of broken bonds of each free particle, weighted by volume.
+  // Share of broken bonds of each free particle, weighted by volume (bonds
+  // to held particles left out).
   std::vector<double> damage() const;
   // The PD stress estimate of each free particle (sigma_xx, sigma_yy,
   // sigma_xy, Pa): half the sum over its bonds of the bond force per unit
@@ -88,6 +89,30 @@ class PdSolid {
   std::vector<std::array<double, 3>> stress(const std::vector<double>& u, const std::vector<double>& dT) const;
   // Strain energy density of each free particle, 1/4 sum c G (s - s_T)^2 |xi| V_j.
   std::vector<double> energy_density(const std::vector<double>& u, const std::vector<double>& dT) const;
+
+  // ---- several materials (a porous plate) ----
+  // A free strain of each free particle beyond the thermal one (ice that
+  // grows as it freezes): a bond takes the mean of its ends', as it takes
+  // their mean temperature change.
+  void set_eigenstrain(const std::vector<double>& eigenstrain);
+  // Each free particle's stiffness relative to the matrix's (1): a bond
+  // is two springs in series, each end's half, so its micromodulus is the
+  // matrix's times 2 r_i r_j / (r_i + r_j); 0 when either end is 0 (liquid
+  // water carries no bonds). Broken bonds stay broken.
+  void set_stiffness_ratio(const std::vector<double>& ratio);
+  // Held particles take the displacement they are given (the relaxation
+  // leaves them): a loading device, so their bonds never break.
+  void set_held(std::vector<std::uint8_t> held) { held_ = std::move(held); }
+  // Whether the relaxation moves free particle i: not held and bonded.
+  bool moves(std::size_t i) const { return (held_.empty() || !held_[i]) && stiffness_[i] > 0.0; }
+  // Intact bonds of each free particle (its own row), and in all.
+  std::size_t intact_bonds() const;
+  // Calls f(i, k, intact) for every bond of the free particles (k a point).
+  template <class F>
+  void for_each_bond(F&& f) const {
+    for (std::size_t i = 0; i < n_; ++i)
+      for (std::size_t e = start_[i]; e < start_[i + 1]; ++e) f(i, source(column_[e]), position_[column_[e]], intact_[e] != 0);
+  }
 
  private:
   struct Ghost {
@@ -106,8 +131,12 @@ class PdSolid {
   }
   std::uint32_t source(std::uint32_t k) const { return k < n_ ? k : ghosts_[k - n_].source; }
   double thermal_stretch(std::size_t i, std::uint32_t k, const std::vector<double>& dT) const {
-    return law_.thermal_stretch_per_K * 0.5 * (dT[i] + dT[source(k)]);
+    const std::uint32_t j = source(k);
+    const double eigen = eigen_.empty() ? 0.0 : 0.5 * (eigen_[i] + eigen_[j]);
+    return law_.thermal_stretch_per_K * 0.5 * (dT[i] + dT[j]) + eigen;
   }
+  std::vector<double> eigen_all() const;  // eigen_ at every point (ghosts: their source's)
+  bool held(std::size_t i) const { return !held_.empty() && held_[i]; }
 
   BondLaw law_;
   std::size_t n_ = 0;
@@ -117,6 +146,9 @@ class PdSolid {
   std::vector<std::uint32_t> column_;   // point index (>= n_: ghost)
   std::vector<double> length_;          // |xi|
   std::vector<double> weight_;          // c G V_j share (force per unit volume per unit stretch); 0 once broken
+  std::vector<double> matrix_weight_;   // weight_ of the matrix material (set_stiffness_ratio scales it)
+  std::vector<double> eigen_;           // per free particle; empty: none
+  std::vector<std::uint8_t> held_;      // per free particle; empty: none
   std::vector<double> xi_;              // reference bond vector x_j - x_i, 2 per bond
   std::vector<double> stiffness3_;      // w / |xi|^3 (linear kinematics; 0 once broken)
   bool linear_ = true;

@@ -36,7 +36,8 @@ Support read_support(const detail::Node& n) {
 
 Mechanics read_mechanics(const detail::Node& n, std::vector<std::string>& warnings) {
   Mechanics m;
-  if (!n.object({"material", "plane", "supports", "relaxation", "kinematics", "cracks_insulate"})) return m;
+  if (!n.object({"material", "plane", "supports", "relaxation", "kinematics", "cracks_insulate", "freezing_expansion"}))
+    return m;
   m.cracks_insulate = n["cracks_insulate"].boolean().value_or(false);
   m.linear_kinematics = n["kinematics"].choice<bool>("kinematics", {{"linear", true}, {"nonlinear", false}}).value_or(true);
   const detail::Node mat = n["material"].required();
@@ -65,10 +66,27 @@ Mechanics read_mechanics(const detail::Node& n, std::vector<std::string>& warnin
     m.bottom = read_support(s["bottom"]);
     m.top = read_support(s["top"]);
   }
-  if (const detail::Node r = n["relaxation"]; r.object({"tolerance", "temperature_change", "max_iterations"})) {
+  if (const detail::Node r = n["relaxation"];
+      r.object({"tolerance", "temperature_change", "max_iterations", "frozen_fraction_change"})) {
     m.tolerance = r["tolerance"].positive().value_or(m.tolerance);
     m.temperature_change = r["temperature_change"].positive();
     m.max_iterations = r["max_iterations"].count().value_or(m.max_iterations);
+    if (const auto f = r["frozen_fraction_change"].positive()) {
+      if (*f > 1.0) r["frozen_fraction_change"].problem(fmt::format("must be at most 1, got {}", *f));
+      else m.frozen_fraction_change = *f;
+    }
+  }
+  // Only with pores (load_pores.cpp checks that, and sets the default).
+  if (const detail::Node f = n["freezing_expansion"]; f.object({"model", "volume_change", "ice_elastic_modulus"})) {
+    using Model = FreezingExpansion::Model;
+    FreezingExpansion e;
+    e.model = f["model"].required().choice<Model>("freezing expansion model",
+                                                  {{"rim_displacement", Model::rim_displacement},
+                                                   {"ice_eigenstrain", Model::ice_eigenstrain}})
+                  .value_or(e.model);
+    e.volume_change = f["volume_change"].non_negative().value_or(e.volume_change);
+    e.ice_elastic_modulus = f["ice_elastic_modulus"].positive().value_or(e.ice_elastic_modulus);
+    m.freezing_expansion = e;
   }
   return m;
 }

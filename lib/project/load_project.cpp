@@ -13,6 +13,7 @@
 #include <fmt/format.h>
 
 #include "project/json_reader.hpp"
+#include "project/load_pores.hpp"
 #include "project/load_reports.hpp"
 #include "project/project.hpp"
 
@@ -240,10 +241,11 @@ void warn_warm_pipe(const Node& temperature, const TemperatureSchedule& schedule
 
 Rectangle read_rectangle(const Node& n) {
   Rectangle rectangle;
-  if (!n.object({"type", "width", "height", "boundaries"})) return rectangle;
+  if (!n.object({"type", "width", "height", "boundaries", "pores"})) return rectangle;
   n["type"].required().choice<int>("geometry type", {{"rectangle", 0}});
   rectangle.width = n["width"].required().positive().value_or(0.0);
   rectangle.height = n["height"].required().positive().value_or(0.0);
+  detail::read_pores(n["pores"], rectangle);
   const Node sides = n["boundaries"].required();
   if (!sides.object({"left", "right", "top", "bottom"})) return rectangle;
   for (const auto& [key, side] : {std::pair{"left", &rectangle.left}, std::pair{"right", &rectangle.right},
@@ -364,7 +366,7 @@ Numerics read_numerics(const Node& n, bool shaft) {
 Project read_project(const Node& root) {
   Project project;
   root.object({"name", "description", "layout", "shaft", "geometry", "pipe", "soil", "domain", "time",
-               "numerics", "design", "monitoring", "output", "mechanics"});
+               "numerics", "design", "monitoring", "output", "mechanics", "pore_fluid"});
   project.name = root["name"].required().string().value_or("");
   project.description = root["description"].string(true).value_or("");
 
@@ -437,6 +439,7 @@ Project read_project(const Node& root) {
     if (!shaft && project.numerics.placement == Placement::graded)
       mech.problem(R"(needs "placement": "lattice" (one horizon for the whole cloud))");
   }
+  detail::read_pore_settings(root, project);
   project.design = read_design(root["design"]);
   project.monitoring = read_monitoring(root["monitoring"]);
   check_sensors_inside(project, root["monitoring"]);

@@ -27,6 +27,19 @@ struct SolidMaterial {
   double reference_temperature = 0.0;     // degC: stress-free
 };
 
+// How pore water that freezes loads the solid around it
+// (mechanics.freezing_expansion; only with pores).
+struct FreezingExpansion {
+  // rim_displacement (the PD paper's): each pore's rim is pushed out
+  // radially so the pore gains volume_change x its volume, ramped with the
+  // pore's frozen fraction. ice_eigenstrain: ice particles carry bonds
+  // (ice_elastic_modulus) and a free areal expansion of volume_change x
+  // their frozen fraction; liquid water carries no bonds.
+  enum class Model { rim_displacement, ice_eigenstrain } model = Model::ice_eigenstrain;
+  double volume_change = 0.09;        // relative, at full freezing
+  double ice_elastic_modulus = 9e9;   // Pa
+};
+
 struct Mechanics {
   SolidMaterial material;
   Plane plane = Plane::strain;
@@ -39,6 +52,10 @@ struct Mechanics {
   // the largest temperature change from the reference so far.
   std::optional<double> temperature_change;
   int max_iterations = 200000;
+  // With pores: re-equilibrate also when some pore particle's frozen
+  // fraction has moved this much since the last equilibrium.
+  double frozen_fraction_change = 0.05;
+  std::optional<FreezingExpansion> freezing_expansion;  // default set by the loader when there are pores
   // "linear" (default): bond stretch and direction linearised in the
   // displacement (strains of 1e-4 make the rest 1e-8 relative), so a force
   // evaluation is a gather of fixed 2x2 bond stiffnesses; "nonlinear":

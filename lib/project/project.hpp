@@ -52,10 +52,39 @@ struct FixedTemperature {
 };
 using SideCondition = std::variant<Adiabatic, FixedTemperature>;
 
+// ---- pores of a porous plate (frost damage) ----------------------------------
+
+// A water-filled pore: a disc, m.
+struct Pore {
+  double x = 0.0, y = 0.0, radius = 0.0;
+};
+
+// Pores drawn at random (geometry.pores as an object): `count` discs of
+// radius uniform in [radius_min, radius_max], each at least min_gap from
+// every other pore and from the plate's sides; the same seed draws the
+// same pores. The drawn list is Rectangle::pores (and goes to summary.json).
+struct PoreGenerator {
+  int count = 0;
+  double radius_min = 0.0, radius_max = 0.0, min_gap = 0.0;  // m
+  unsigned long long seed = 0;
+};
+
+// The fluid that fills the pores (project "pore_fluid"): water that
+// freezes to ice at freezing_point, releasing latent_heat per kg of water.
+struct PoreFluid {
+  double water_conductivity = 0.6, ice_conductivity = 2.14;      // W/(m K)
+  double water_heat_capacity = 4182.0, ice_heat_capacity = 2060.0;  // J/(kg K)
+  double water_density = 1000.0, ice_density = 920.0;            // kg/m3
+  double latent_heat = 334e3;                                    // J/kg
+  double freezing_point = 0.0;                                   // degC
+};
+
 struct Rectangle {
   double width = 0.0;   // along x
   double height = 0.0;  // along y
   SideCondition left, right, top, bottom;
+  std::vector<Pore> pores;                      // explicit or drawn; none: a plain plate
+  std::optional<PoreGenerator> pore_generator;  // how they were drawn, when they were
 };
 
 // ---- shaft layouts -----------------------------------------------------------
@@ -201,6 +230,7 @@ struct Project {
   std::vector<Sensor> monitoring;
   Output output;
   std::optional<Mechanics> mechanics;  // plain geometries: PD thermo-mechanics
+  PoreFluid pore_fluid;                // what fills Rectangle::pores (default water/ice)
   // Physically implausible but computable input (latent heat above that of
   // pure water, pipe warmer than the freezing point): printed and reported.
   std::vector<std::string> warnings;

@@ -21,10 +21,18 @@ MechanicsRun::MechanicsRun(const project::Project& p, Model& m)
   u_.assign(2 * P.n_free, 0.0);
   dT_.assign(P.n_free, 0.0);
   T_equilibrium_.assign(P.n_free, mechanics_.material.reference_temperature);
+  if (!m.pore_of.empty() && mechanics_.freezing_expansion) {
+    pores_.emplace(*mechanics_.freezing_expansion, mechanics_.material.elastic_modulus, rect.pores, m.pore_of);
+    pores_->prepare(*solid_);
+    const auto& model = *m.model;
+    f_equilibrium_.assign(model.liquid_fraction().begin(), model.liquid_fraction().begin() + P.n_free);
+    pores_->apply(*solid_, f_equilibrium_, model.volume(), u_);
+  }
 }
 
-void MechanicsRun::update(const thermal::ThermalModel& model, bool force) {
+void MechanicsRun::update(const thermal::ThermalModel& model, double t, bool force) {
   const auto& T = model.temperature();
+  const auto& f = model.liquid_fraction();
   // How far any temperature moved since the last equilibrium, and the
   // largest change from the reference (the default threshold is 10 % of it).
   double moved = 0.0, largest = 0.0;
@@ -33,8 +41,16 @@ void MechanicsRun::update(const thermal::ThermalModel& model, bool force) {
     largest = std::max(largest, std::abs(T[i] - mechanics_.material.reference_temperature));
   }
   const double threshold = mechanics_.temperature_change.value_or(std::max(0.1 * largest, 1e-6));
-  if (!force && moved < threshold) return;
-  if (moved == 0.0 && relaxations_ > 0) return;
+  double froze = 0.0;  // how far any pore particle's frozen fraction moved
+  for (std::size_t i = 0; i < f_equilibrium_.size(); ++i) froze = std::max(froze, std::abs(f[i] - f_equilibrium_[i]));
+  const bool freezing = froze >= mechanics_.frozen_fraction_change;
+  if (!force && moved < threshold && !freezing) return;
+  if (moved == 0.0 && froze == 0.0 && relaxations_ > 0) return;
+  if (pores_) {
+    f_equilibrium_.assign(f.begin(), f.begin() + dT_.size());
+    pores_->apply(*solid_, f_equilibrium_, model.volume(), u_);
+  }
+  t_equilibrium_ = t;
   for (std::size_t i = 0; i < dT_.size(); ++i) {
     dT_[i] = T[i] - mechanics_.material.reference_temperature;
     T_equilibrium_[i] = T[i];
@@ -51,6 +67,7 @@ void MechanicsRun::update(const thermal::ThermalModel& model, bool force) {
     if (thermal_) insulated_ += thermal_->cut_pairs(ends);
     if (broke == 0) break;
   }
+  if (after_equilibrium) after_equilibrium(t);
 }
 
 nlohmann::json MechanicsRun::facts() const {

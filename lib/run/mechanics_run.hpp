@@ -6,12 +6,18 @@
 // since the last equilibrium, and at every snapshot, warm-starting from
 // the last displacement; bonds beyond their critical stretch break after
 // each equilibrium, which is then sought again until none break.
+// With pores, it re-equilibrates too when some pore particle's frozen
+// fraction has moved by relaxation.frozen_fraction_change, and the
+// freezing pores load the solid (pd/pore_expansion.hpp).
 #pragma once
 
 #include <nlohmann/json.hpp>
+#include <functional>
 #include <memory>
+#include <optional>
 #include <vector>
 
+#include "pd/pore_expansion.hpp"
 #include "pd/solid.hpp"
 #include "project/project.hpp"
 #include "run/model.hpp"
@@ -24,17 +30,24 @@ class MechanicsRun {
   // cracks insulate.
   MechanicsRun(const project::Project& p, Model& m);
   // force: equilibrate whatever the temperature change (snapshots).
-  void update(const thermal::ThermalModel& model, bool force);
+  void update(const thermal::ThermalModel& model, double t, bool force);
   const pd::PdSolid& solid() const { return *solid_; }
   const std::vector<double>& displacement() const { return u_; }  // 2 per free particle
   std::vector<double> damage() const { return solid_->damage(); }
   std::vector<std::array<double, 3>> stress() const { return solid_->stress(u_, dT_); }  // Pa
   // Run facts for the summary: relaxations, iterations, broken bonds.
   nlohmann::json facts() const;
+  // Called after every equilibrium (time, s): the damage record follows.
+  std::function<void(double)> after_equilibrium;
+  // Time of the last equilibrium, s.
+  double equilibrium_time() const { return t_equilibrium_; }
 
  private:
   const project::Mechanics& mechanics_;
   std::unique_ptr<pd::PdSolid> solid_;
+  std::optional<pd::PoreExpansion> pores_;
+  std::vector<double> f_equilibrium_;
+  double t_equilibrium_ = 0.0;
   thermal::ThermalModel* thermal_ = nullptr;
   std::vector<double> u_, dT_, T_equilibrium_;
   std::size_t relaxations_ = 0, iterations_ = 0, unconverged_ = 0, broken_ = 0, insulated_ = 0;

@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "geometry/layout.hpp"
+#include "geometry/pores.hpp"
 #include "pd/conduction_bonds.hpp"
 #include "geometry/symmetry.hpp"
 #include "sph/laplacian.hpp"
@@ -105,7 +106,14 @@ Model build_model(const project::Project& p) {
       m.particles().volume, m.particles().boundary, std::move(pairs), law, m.scene->boundaries,
       thermal::ConductionOptions{p.numerics.conductivity_mean, p.numerics.laplacian}, p.domain.initial_temperature,
       sph::build_wall_extrapolation(m.particles(), *m.kernel, m.smoothing));
-  const double explicit_step = p.numerics.beta * m.h * m.h / law.max_diffusivity();
+  if (const auto* rect = std::get_if<project::Rectangle>(&p.geometry); rect && !rect->pores.empty()) {
+    const auto& P = m.particles();
+    m.pore_of = geometry::pore_membership(P.position, P.n_free, rect->pores);
+    std::vector<std::uint8_t> material(P.size(), 0);
+    for (std::size_t i = 0; i < P.n_free; ++i) material[i] = m.pore_of[i] >= 0 ? 1 : 0;
+    m.model->set_materials({law, thermal::pore_water_law(p.pore_fluid)}, std::move(material), p.domain.initial_temperature);
+  }
+  const double explicit_step = p.numerics.beta * m.h * m.h / m.model->max_diffusivity();
   if (p.numerics.integrator == project::IntegratorKind::implicit) {
     thermal::BackwardEulerSettings settings;
     settings.step_change = p.numerics.step_change;

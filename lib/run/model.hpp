@@ -31,6 +31,9 @@ struct Model {
   double h = 0.0;  // the smallest smoothing length (it sets the explicit step)
   std::unique_ptr<thermal::ThermalModel> model;
   std::unique_ptr<thermal::Integrator> integrator;
+  // A porous plate: the pore each free particle lies in (-1: the matrix);
+  // empty without pores. Pore particles are thermal material 1 (water).
+  std::vector<int> pore_of;
 
   const particles::ParticleSet<2>& particles() const { return scene->particles; }
 };

@@ -193,7 +193,7 @@ void run_project(const Project& p, const RunOptions& options) {
   std::vector<double> f_before, T_before, f_at, T_at;
   observers.after_step = [&](const thermal::ThermalModel& m, double t) {
     if (closure) closure->after_step(m, t);
-    if (mechanics) mechanics->update(m, false);
+    if (mechanics) mechanics->update(m, t, false);
     if (!results) return;
     const auto& f = m.liquid_fraction();
     const auto& T = m.temperature();
@@ -225,7 +225,7 @@ void run_project(const Project& p, const RunOptions& options) {
                    p.time.snapshots.begin();
     const bool is_snapshot = k < static_cast<long>(stems.size()) && std::abs(p.time.snapshots[k] - t) <= 1e-12 * p.time.end;
     if (results && is_snapshot) results->snapshot(t, m, out, stems[k]);
-    if (mechanics) mechanics->update(m, is_snapshot);
+    if (mechanics) mechanics->update(m, t, is_snapshot);
     if (plain) plain->sample(t, m);
     if (plain && is_snapshot) plain->snapshot(t, m, out, stems[k]);
     if (p.output.vtk && is_snapshot) {

@@ -127,10 +127,8 @@ bool BackwardEuler::try_step(ThermalModel& model, double t, double dt) {
   const std::size_t n = model.free_count();
   const auto& P = model.pairs();
   const auto& W = model.beyond_wall();
-  const auto& law = model.law();
-  const double scale = ActivityStepControl::enthalpy_scale(law);
+  const double scale = ActivityStepControl::enthalpy_scale(model);
   const std::vector<double>& H_old = control_.before();
-  const double kinks[2] = {0.0, law.latent_enthalpy()};
   std::vector<double> slope(n);
   residual_.resize(n);
   next_H_.resize(n);
@@ -151,7 +149,7 @@ bool BackwardEuler::try_step(ThermalModel& model, double t, double dt) {
     ++stats_.newton_iterations;
 
     particles::for_each_particle(n, [&](std::size_t i) {
-      slope[i] = law.temperature_slope(H[i], residual_[i]);
+      slope[i] = model.law_of(i).temperature_slope(H[i], residual_[i]);
       rhs[i] = slope[i] == 0.0 ? 0.0 : residual_[i];
     });
     system_->assemble(model, a_, slope, dt);
@@ -179,6 +177,7 @@ bool BackwardEuler::try_step(ThermalModel& model, double t, double dt) {
         dH = dt * inflow;
       }
       double next = H[i] + dH;
+      const double kinks[2] = {0.0, model.law_of(i).latent_enthalpy()};
       for (double k : kinks)
         if ((H[i] < k && next > k) || (H[i] > k && next < k)) next = k;  // stop on the kink
       next_H_[i] = next;

@@ -28,7 +28,7 @@ class ExplicitEuler final : public Integrator {
  public:
   ExplicitEuler(double beta, double h) : beta_(beta), h_(h) {}
   double preferred_step(const ThermalModel& model) const override {
-    return beta_ * h_ * h_ / model.law().max_diffusivity();
+    return beta_ * h_ * h_ / model.max_diffusivity();
   }
   std::vector<double> advance(ThermalModel& model, double t, double dt) override;
   const char* name() const override { return "explicit"; }

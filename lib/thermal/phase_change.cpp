@@ -19,6 +19,19 @@ PhaseChangeLaw::PhaseChangeLaw(const project::Soil& soil)
       inv_H_l_(H_l_ > 0.0 ? 1.0 / H_l_ : 0.0),
       range_per_H_l_(range_ > 0.0 ? range_ / H_l_ : 0.0) {}
 
+PhaseChangeLaw pore_water_law(const project::PoreFluid& fluid) {
+  project::Soil water;
+  water.name = "pore water";
+  water.density = fluid.water_density;
+  water.unfrozen.conductivity = {fluid.water_conductivity, fluid.water_conductivity};
+  water.unfrozen.heat_capacity = fluid.water_heat_capacity;
+  water.frozen.conductivity = {fluid.ice_conductivity, fluid.ice_conductivity};
+  water.frozen.heat_capacity = fluid.ice_heat_capacity;  // per kg: the water's mass freezes
+  water.latent_heat = fluid.latent_heat;
+  water.freezing_point = fluid.freezing_point;
+  return PhaseChangeLaw(water);
+}
+
 double PhaseChangeLaw::enthalpy(double T) const {
   if (T < Ts_) return rho_cs_ * (T - Ts_);
   if (T > Tf_) return H_l_ + rho_cl_ * (T - Tf_);

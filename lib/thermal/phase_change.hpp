@@ -62,4 +62,11 @@ class PhaseChangeLaw {
   double inv_rho_cs_, inv_rho_cl_, inv_H_l_, range_per_H_l_;
 };
 
+// The law of pore water (a porous plate's pores), per unit volume of the
+// pore: latent heat rho_w L, liquid rho_w C_w, ice rho_w C_i. The pore's
+// mass freezes, so the ice's capacity is that mass's (rho_i C_i over the
+// 1000/920 = 8.7 % larger volume the ice would take free); the particles
+// keep their volume, the expansion is the mechanics' concern.
+PhaseChangeLaw pore_water_law(const project::PoreFluid& fluid);
+
 }  // namespace frostwall::thermal

@@ -28,7 +28,7 @@ class ActivityStepControl {
   const std::vector<double>& before() const { return before_; }
   // After a step of length dt: the next step from the change it made.
   void adapt(const ThermalModel& model, double dt) {
-    const double scale = enthalpy_scale(model.law());
+    const double scale = enthalpy_scale(model);
     const auto& H = model.enthalpy();
     const double change = particles::max_over_particles(
         model.free_count(), [&](std::size_t i) { return std::abs(H[i] - before_[i]) / scale; });
@@ -45,6 +45,12 @@ class ActivityStepControl {
   static double enthalpy_scale(const PhaseChangeLaw& law) {
     const double Tf = law.freezing_point();
     return std::max(law.latent_enthalpy(), law.enthalpy(Tf + 1.0) - law.enthalpy(Tf - 1.0));
+  }
+  // Several materials: the smallest of their scales.
+  static double enthalpy_scale(const ThermalModel& model) {
+    double scale = enthalpy_scale(model.laws()[0]);
+    for (const auto& law : model.laws()) scale = std::min(scale, enthalpy_scale(law));
+    return scale;
   }
 
  private:

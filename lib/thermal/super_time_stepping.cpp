@@ -11,18 +11,24 @@ namespace {
 constexpr double safety = 0.8;  // of the Gershgorin limit: k rises as particles freeze within a step
 constexpr double spectral_safety = 0.9;  // of the eigenvalue's limit: the power iteration's estimate is from below
 
+double smallest_capacity(const PhaseChangeLaw& law) {
+  return 1.0 / std::max(law.temperature_slope(-1.0, -1.0), law.temperature_slope(2.0 * law.latent_enthalpy() + 1.0, 1.0));
+}
+
 // Largest |eigenvalue| of dT/dt = J T for the model's coefficients now and
-// heat capacity C (boundaries held at zero, beyond-wall particles
-// following their free ones). J is self-adjoint in the volume-weighted
-// inner product (V_i a_ij = V_j a_ji), so the power iteration's growth
-// factor rises towards it from below; the caller keeps a margin.
-double largest_eigenvalue(const ThermalModel& model, double C) {
+// each particle's smallest heat capacity C_i (boundaries held at zero,
+// beyond-wall particles following their free ones). J is self-adjoint in
+// the inner product weighted by V_i C_i (V_i a_ij = V_j a_ji), so the power
+// iteration's growth factor rises towards it from below; the caller keeps
+// a margin.
+double largest_eigenvalue(const ThermalModel& model) {
   const auto& P = model.pairs();
   const auto& W = model.beyond_wall();
   const auto& V = model.volume();
   const std::vector<double>& a = model.pair_coefficients();
   const std::size_t n = P.n_free, N = model.size();
-  std::vector<double> x(N, 0.0), y(n, 0.0);
+  std::vector<double> x(N, 0.0), y(n, 0.0), C(n);
+  for (std::size_t i = 0; i < n; ++i) C[i] = smallest_capacity(model.law_of(i));
   // A start with every wavelength in it (the stiffest is the grid scale).
   for (std::size_t i = 0; i < n; ++i) x[i] = std::sin(1.7 * i) + std::cos(0.37 * double(i) * double(i));
   double lambda = 0.0;
@@ -31,10 +37,10 @@ double largest_eigenvalue(const ThermalModel& model, double C) {
     particles::for_each_particle(n, [&](std::size_t i) {
       double r = 0.0;
       for (std::size_t e = P.row_start[i]; e < P.row_start[i + 1]; ++e) r += a[e] * (x[P.column[e]] - x[i]);
-      y[i] = r / C;
+      y[i] = r / C[i];
     });
-    const double xx = particles::sum_over_particles(n, [&](std::size_t i) { return V[i] * x[i] * x[i]; });
-    const double yy = particles::sum_over_particles(n, [&](std::size_t i) { return V[i] * y[i] * y[i]; });
+    const double xx = particles::sum_over_particles(n, [&](std::size_t i) { return V[i] * C[i] * x[i] * x[i]; });
+    const double yy = particles::sum_over_particles(n, [&](std::size_t i) { return V[i] * C[i] * y[i] * y[i]; });
     if (!(yy > 0.0) || !(xx > 0.0)) return 0.0;
     lambda = std::sqrt(yy / xx);
     for (std::size_t i = 0; i < n; ++i) x[i] = y[i] / lambda;
@@ -42,8 +48,10 @@ double largest_eigenvalue(const ThermalModel& model, double C) {
   return lambda;
 }
 
-double smallest_capacity(const PhaseChangeLaw& law) {
-  return 1.0 / std::max(law.temperature_slope(-1.0, -1.0), law.temperature_slope(2.0 * law.latent_enthalpy() + 1.0, 1.0));
+double smallest_capacity(const ThermalModel& model) {
+  double C = smallest_capacity(model.laws()[0]);
+  for (const auto& law : model.laws()) C = std::min(C, smallest_capacity(law));
+  return C;
 }
 
 }  // namespace
@@ -63,8 +71,7 @@ double SuperTimeStepping::forward_euler_limit(const ThermalModel& model) {
   const std::vector<double>& a = model.pair_coefficients();
   const auto& P = model.pairs();
   const auto& W = model.beyond_wall();
-  const auto& law = model.law();
-  const double C_min = smallest_capacity(law);
+  const double C_min = smallest_capacity(model);
   const std::size_t n = P.n_free;
   const double worst = particles::max_over_particles(n, [&](std::size_t i) {
     double row = 0.0;
@@ -82,12 +89,12 @@ double SuperTimeStepping::forward_euler_limit(const ThermalModel& model) {
 
 
 double SuperTimeStepping::spectral_limit(const ThermalModel& model) {
-  const PhaseChangeLaw& law = model.law();
   double lambda = 0.0;
-  for (double H : {-1.0, 2.0 * law.latent_enthalpy() + 1.0}) {  // all frozen, all unfrozen
+  for (bool frozen : {true, false}) {  // all frozen, all unfrozen
     ThermalModel state = model;
-    for (std::size_t i = 0; i < state.size(); ++i) state.set_enthalpy(i, H);
-    lambda = std::max(lambda, largest_eigenvalue(state, smallest_capacity(law)));
+    for (std::size_t i = 0; i < state.size(); ++i)
+      state.set_enthalpy(i, frozen ? -1.0 : 2.0 * state.law_of(i).latent_enthalpy() + 1.0);
+    lambda = std::max(lambda, largest_eigenvalue(state));
   }
   // 150 iterations reach the eigenvalue to about 2 % from below on our
   // clouds; 0.9 covers that with room.

@@ -11,11 +11,11 @@ ThermalModel::ThermalModel(std::vector<double> volume, std::vector<int> boundary
     : volume_(std::move(volume)),
       boundary_id_(std::move(boundary_id)),
       pairs_(std::move(pairs)),
-      law_(law),
+      laws_{law},
       boundaries_(std::move(boundaries)),
       options_(options),
       beyond_wall_(std::move(beyond_wall)),
-      anisotropic_(law_.anisotropic()) {
+      anisotropic_(law.anisotropic()) {
   particles::flush_denormals_to_zero();
   const std::size_t n = volume_.size();
   H_.resize(n);
@@ -23,7 +23,7 @@ ThermalModel::ThermalModel(std::vector<double> volume, std::vector<int> boundary
   f_.resize(n);
   k_.resize(2 * n);
   k_changed_.assign(n, 1);
-  const double H0 = law_.enthalpy(initial_temperature);
+  const double H0 = law.enthalpy(initial_temperature);
   for (std::size_t i = 0; i < n; ++i) set_state(i, H0);
   // Transpose of the pair list: where each particle appears as a neighbour.
   incoming_start_.assign(n + 1, 0);
@@ -52,8 +52,18 @@ void ThermalModel::apply_boundaries(double t) {
   for (std::size_t i = n; i < size(); ++i) {
     const double Tw = T_wall[boundary_id_[i]];
     const double T = !extend || beyond_wall_.on_wall(i - n) ? Tw : 2.0 * Tw - beyond_wall_.value(i - n, T_);
-    set_state(i, law_.enthalpy(T));
+    set_state(i, laws_[0].enthalpy(T));
   }
+}
+
+void ThermalModel::set_materials(std::vector<PhaseChangeLaw> laws, std::vector<std::uint8_t> material,
+                                 double initial_temperature) {
+  laws_ = std::move(laws);
+  material_ = std::move(material);
+  material_.resize(size(), 0);
+  for (const auto& law : laws_) anisotropic_ = anisotropic_ || law.anisotropic();
+  for (std::size_t i = 0; i < pairs_.n_free; ++i) set_state(i, law_of(i).enthalpy(initial_temperature));
+  all_changed_ = true;
 }
 
 double ThermalModel::pair_conductivity(double ki, double kj) const {

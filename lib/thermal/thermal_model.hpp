@@ -4,7 +4,9 @@
 // stored pairs. Integrators (explicit, later implicit) drive it in time.
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "project/project.hpp"
@@ -53,7 +55,20 @@ class ThermalModel {
 
   std::size_t size() const { return volume_.size(); }
   std::size_t free_count() const { return pairs_.n_free; }
-  const PhaseChangeLaw& law() const { return law_; }
+  // The first material's law (the soil, or a porous plate's matrix).
+  const PhaseChangeLaw& law() const { return laws_[0]; }
+  // Several materials (a plate and the water in its pores): laws[m] for
+  // the particles of material m (fixed particles keep material 0); every
+  // free particle restarts at initial_temperature.
+  void set_materials(std::vector<PhaseChangeLaw> laws, std::vector<std::uint8_t> material, double initial_temperature);
+  const std::vector<PhaseChangeLaw>& laws() const { return laws_; }
+  double max_diffusivity() const {
+    double a = 0.0;
+    for (const auto& law : laws_) a = std::max(a, law.max_diffusivity());
+    return a;
+  }
+  std::uint8_t material(std::size_t i) const { return material_.empty() ? 0 : material_[i]; }
+  const PhaseChangeLaw& law_of(std::size_t i) const { return laws_[material(i)]; }
   const particles::PairWeights& pairs() const { return pairs_; }
   const std::vector<FixedTemperatureBoundary>& boundaries() const { return boundaries_; }
 
@@ -87,7 +102,7 @@ class ThermalModel {
   // latent_left): what closure follows through 0.
   void latent_left(std::vector<double>& out) const {
     out.resize(free_count());
-    for (std::size_t i = 0; i < out.size(); ++i) out[i] = law_.latent_left(H_[i]);
+    for (std::size_t i = 0; i < out.size(); ++i) out[i] = law_of(i).latent_left(H_[i]);
   }
 
   const std::vector<double>& enthalpy() const { return H_; }
@@ -110,7 +125,8 @@ class ThermalModel {
   std::vector<double> volume_;
   std::vector<int> boundary_id_;
   particles::PairWeights pairs_;
-  PhaseChangeLaw law_;
+  std::vector<PhaseChangeLaw> laws_;
+  std::vector<std::uint8_t> material_;  // per particle; empty: all material 0
   std::vector<FixedTemperatureBoundary> boundaries_;
   ConductionOptions options_;
   sph::WallExtrapolation beyond_wall_;
@@ -132,13 +148,19 @@ class ThermalModel {
   std::vector<std::pair<std::uint32_t, std::size_t>> boundary_pairs_;
 };
 
-inline void ThermalModel::set_state(std::size_t i, double H) { state_view().set(law_, i, H); }
+inline void ThermalModel::set_state(std::size_t i, double H) { state_view().set(law_of(i), i, H); }
 
 template <class NewEnthalpy>
 void ThermalModel::update_free(NewEnthalpy&& new_enthalpy) {
-  const PhaseChangeLaw law = law_;
   const StateView state = state_view();
-  particles::for_each_particle(pairs_.n_free, [&](std::size_t i) { state.set(law, i, new_enthalpy(i)); });
+  if (material_.empty()) {  // one material: its law stays in registers
+    const PhaseChangeLaw law = laws_[0];
+    particles::for_each_particle(pairs_.n_free, [&](std::size_t i) { state.set(law, i, new_enthalpy(i)); });
+    return;
+  }
+  const PhaseChangeLaw* laws = laws_.data();
+  const std::uint8_t* material = material_.data();
+  particles::for_each_particle(pairs_.n_free, [&](std::size_t i) { state.set(laws[material[i]], i, new_enthalpy(i)); });
 }
 
 }  // namespace frostwall::thermal

@@ -1,0 +1,49 @@
+// Pore water that freezes and grows by volume_change (9 %): how it loads
+// the solid around it (project mechanics.freezing_expansion).
+//  - rim_displacement (the PD paper's): the pore particles are a held
+//    loading device; the rim moves out radially by
+//    u_a = R (sqrt(1 + dV F) - 1), F the pore's frozen fraction, so the
+//    pore's area grows by dV F; the particles within it carry the
+//    elastic field's continuation u_a R / r (the displacement an
+//    infinite plate around a pushed hole has), so the matrix's bonds into
+//    the pore see what a continuum's rim would.
+//  - ice_eigenstrain: each pore particle is ice to its frozen fraction
+//    phi = 1 - f: stiffness E_ice phi (water carries no bonds) and a free
+//    areal strain sqrt(1 + dV phi) - 1 (a 2-D model takes the volume
+//    change as an area change: 4.40 % linear at 9 %).
+#pragma once
+
+#include <vector>
+
+#include "particles/vec.hpp"
+#include "pd/solid.hpp"
+#include "project/project.hpp"
+
+namespace frostwall::pd {
+
+class PoreExpansion {
+ public:
+  PoreExpansion(const project::FreezingExpansion& expansion, double matrix_modulus, std::vector<project::Pore> pores,
+                std::vector<int> pore_of);
+
+  // The linear free strain of ice at frozen fraction phi (areal dV phi).
+  double free_strain(double phi) const;
+  // Each pore's frozen fraction: the volume-weighted mean of 1 - f.
+  std::vector<double> frozen_fraction(const std::vector<double>& liquid_fraction, const std::vector<double>& volume) const;
+  // Installs the model on the solid (held pore particles, or the starting
+  // stiffness of liquid pores) and sets u on them for the liquid fractions.
+  void prepare(PdSolid& solid) const;
+  // The load at the liquid fractions now: held displacements into u, or
+  // the ice's stiffness and eigenstrain into the solid.
+  void apply(PdSolid& solid, const std::vector<double>& liquid_fraction, const std::vector<double>& volume,
+             std::vector<double>& u) const;
+  bool rim_displacement() const { return expansion_.model == project::FreezingExpansion::Model::rim_displacement; }
+
+ private:
+  project::FreezingExpansion expansion_;
+  double ice_ratio_;  // E_ice / E_matrix
+  std::vector<project::Pore> pores_;
+  std::vector<int> pore_of_;
+};
+
+}  // namespace frostwall::pd
