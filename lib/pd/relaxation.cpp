@@ -10,6 +10,12 @@ namespace frostwall::pd {
 
 RelaxationResult relax(const PdSolid& solid, std::vector<double>& u, const std::vector<double>& dT, double tolerance,
                        int max_iterations) {
+  return relax_with_breakage(const_cast<PdSolid&>(solid), u, dT, tolerance, max_iterations, {}, 0);
+}
+
+BreakingResult relax_with_breakage(PdSolid& solid, std::vector<double>& u, const std::vector<double>& dT,
+                                   double tolerance, int max_iterations, const std::function<std::size_t()>& break_bonds,
+                                   int check_every) {
   const std::size_t n = solid.size(), m = 2 * n;
   u.resize(m, 0.0);
   std::vector<double> lambda(m), v(m, 0.0), F(m), F_old(m), u_all, dT_all, thermal;
@@ -28,7 +34,19 @@ RelaxationResult relax(const PdSolid& solid, std::vector<double>& u, const std::
     lambda[2 * i] = lambda[2 * i + 1] = 0.25 * 2.0 * 2.0 * solid.stiffness()[i];
     inv_lambda[2 * i] = inv_lambda[2 * i + 1] = solid.moves(i) ? 1.0 / lambda[2 * i] : 0.0;
   }
-  RelaxationResult result;
+  BreakingResult result;
+  // Breaks bonds; true when some broke (the thermal force, which the
+  // broken bonds no longer carry, is rebuilt).
+  auto broke = [&] {
+    if (!break_bonds) return false;
+    const std::size_t b = break_bonds();
+    if (b == 0) return false;
+    result.broken += b;
+    if (solid.linear()) solid.thermal_force(dT_all, thermal);
+    for (std::size_t i = 0; i < n; ++i)
+      if (!solid.moves(i)) inv_lambda[2 * i] = inv_lambda[2 * i + 1] = 0.0;  // lost every bond
+    return true;
+  };
   forces(F);
   // A reference force: the stiffness times a strain of 1e-12 on a bond.
   double scale = 0.0;
@@ -37,7 +55,7 @@ RelaxationResult relax(const PdSolid& solid, std::vector<double>& u, const std::
   auto rms = [&](auto&& value) {
     return std::sqrt(particles::sum_over_particles(m, [&](std::size_t k) { return value(k) * value(k); }) / m);
   };
-  if (rms([&](std::size_t k) { return inv_lambda[k] > 0.0 ? F[k] : 0.0; }) <= 1e-14 * scale * horizon) {
+  if (rms([&](std::size_t k) { return inv_lambda[k] > 0.0 ? F[k] : 0.0; }) <= 1e-14 * scale * horizon && !broke()) {
     result.converged = true;
     return result;
   }
@@ -65,7 +83,12 @@ RelaxationResult relax(const PdSolid& solid, std::vector<double>& u, const std::
     result.iterations = it + 1;
     const double du = std::sqrt(sums[2] / m), uu = std::sqrt(sums[1] / m), ff = std::sqrt(sums[3] / m);
     result.increment = uu > 0.0 ? du / uu : 0.0;
-    if (du <= tolerance * uu || ff <= 1e-14 * scale * horizon) {
+    const bool still = du <= tolerance * uu || ff <= 1e-14 * scale * horizon;
+    if ((still || (check_every > 0 && (it + 1) % check_every == 0)) && broke()) {
+      forces(F);  // the same u, fewer bonds
+      continue;
+    }
+    if (still) {
       result.converged = true;
       break;
     }

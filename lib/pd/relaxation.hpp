@@ -13,6 +13,7 @@
 // the force vanishes), starting from the u it is given (warm start).
 #pragma once
 
+#include <functional>
 #include <vector>
 
 #include "pd/solid.hpp"
@@ -27,5 +28,16 @@ struct RelaxationResult {
 
 RelaxationResult relax(const PdSolid& solid, std::vector<double>& u, const std::vector<double>& dT, double tolerance,
                        int max_iterations);
+
+// The same with bonds breaking on the way (Kilic & Madenci check every
+// step; here every `check_every` iterations and whenever it would stop):
+// break_bonds() breaks what is over-stretched at u and returns how many;
+// the relaxation stops only at an equilibrium where nothing more breaks.
+struct BreakingResult : RelaxationResult {
+  std::size_t broken = 0;
+};
+BreakingResult relax_with_breakage(PdSolid& solid, std::vector<double>& u, const std::vector<double>& dT,
+                                   double tolerance, int max_iterations, const std::function<std::size_t()>& break_bonds,
+                                   int check_every = 50);
 
 }  // namespace frostwall::pd

@@ -266,7 +266,8 @@ std::size_t PdSolid::break_bonds(const std::vector<double>& u, const std::vector
                                  std::vector<std::pair<std::uint32_t, std::uint32_t>>* newly_broken) {
   if (!std::isfinite(law_.critical_stretch)) return 0;
   std::size_t broken = 0;
-  for (std::size_t i = 0; i < n_; ++i)
+  for (std::size_t i = 0; i < n_; ++i) {
+    const std::size_t before = broken;
     for (std::size_t e = start_[i]; e < start_[i + 1]; ++e)
       // The mechanical stretch: free thermal expansion breaks nothing. A
       // bond without stiffness (to liquid water) or to a held particle
@@ -278,6 +279,11 @@ std::size_t PdSolid::break_bonds(const std::vector<double>& u, const std::vector
         ++broken;
         if (newly_broken && column_[e] < n_) newly_broken->emplace_back(static_cast<std::uint32_t>(i), column_[e]);
       }
+    if (broken != before) {  // what the particle still feels
+      stiffness_[i] = 0.0;
+      for (std::size_t e = start_[i]; e < start_[i + 1]; ++e) stiffness_[i] += weight_[e] / length_[e];
+    }
+  }
   return broken;
 }
 

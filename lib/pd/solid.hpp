@@ -103,6 +103,7 @@ class PdSolid {
   // Held particles take the displacement they are given (the relaxation
   // leaves them): a loading device, so their bonds never break.
   void set_held(std::vector<std::uint8_t> held) { held_ = std::move(held); }
+  bool held(std::size_t i) const { return !held_.empty() && held_[i]; }
   // Whether the relaxation moves free particle i: not held and bonded.
   bool moves(std::size_t i) const { return (held_.empty() || !held_[i]) && stiffness_[i] > 0.0; }
   // Intact bonds of each free particle (its own row), and in all.
@@ -136,7 +137,7 @@ class PdSolid {
     return law_.thermal_stretch_per_K * 0.5 * (dT[i] + dT[j]) + eigen;
   }
   std::vector<double> eigen_all() const;  // eigen_ at every point (ghosts: their source's)
-  bool held(std::size_t i) const { return !held_.empty() && held_[i]; }
+
 
   BondLaw law_;
   std::size_t n_ = 0;

@@ -52,7 +52,7 @@ struct Mechanics {
   // the largest temperature change from the reference so far.
   std::optional<double> temperature_change;
   int max_iterations = 200000;
-  // With pores: re-equilibrate also when some pore particle's frozen
+  // With pores: re-equilibrate also when some pore's frozen
   // fraction has moved this much since the last equilibrium.
   double frozen_fraction_change = 0.05;
   std::optional<FreezingExpansion> freezing_expansion;  // default set by the loader when there are pores

@@ -17,6 +17,7 @@ using Vec2 = particles::Vec<2>;
 using svg::num;
 
 struct FieldMap::Probe {
+  std::vector<Vec2> position;  // the particles, in the snapshot's order
   std::unique_ptr<sph::Kernel> kernel;
   std::unique_ptr<post::PointProbe> probe;
   std::vector<std::size_t> pixel;  // raster index of each probe point
@@ -120,6 +121,7 @@ FieldMap::FieldMap(const FieldSnapshot& particles, const WedgeSymmetry& symmetry
   symmetry_ = wedge ? symmetry : WedgeSymmetry{};
   probe_->kernel = sph::make_kernel<2>(kernel == "cubic_spline" ? project::KernelKind::cubic_spline
                                                                  : project::KernelKind::wendland_c2);
+  probe_->position = particles.position;
   const auto P = particle_set(particles, symmetry_, wedge, spacing);
   const post::FieldSampler sampler(P, *probe_->kernel, h);
   std::vector<Vec2> where;
@@ -154,15 +156,59 @@ RgbaImage FieldMap::raster(const std::vector<double>& temperature, const ColourS
   return image;
 }
 
+RgbaImage FieldMap::nearest_raster(const std::vector<std::array<std::uint8_t, 3>>& colours, double reach) const {
+  RgbaImage image(window_.pixels, window_.pixels);
+  const auto& x = probe_->position;
+  if (x.empty() || colours.size() != x.size()) return image;
+  // The particles in square cells of side `radius`: the nearest one within
+  // it lies in the pixel's cell or one of the eight around.
+  const double radius = reach * (spacing_ > 0.0 ? spacing_ : window_.size / window_.pixels);
+  Vec2 lo = x.front(), hi = x.front();
+  for (const auto& p : x) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+  const long nx = long((hi[0] - lo[0]) / radius) + 1, ny = long((hi[1] - lo[1]) / radius) + 1;
+  std::vector<std::vector<std::size_t>> cell(std::size_t(nx * ny));
+  auto cell_of = [&](const Vec2& p, long& cx, long& cy) {
+    cx = long(std::floor((p[0] - lo[0]) / radius)), cy = long(std::floor((p[1] - lo[1]) / radius));
+  };
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    long cx, cy;
+    cell_of(x[i], cx, cy);
+    cell[std::size_t(std::min(cy, ny - 1) * nx + std::min(cx, nx - 1))].push_back(i);
+  }
+  const int n = window_.pixels;
+  const double d = window_.size / n;
+  for (const std::size_t k : probe_->pixel) {
+    const long row = long(k) / n, col = long(k) % n;
+    const Vec2 p = symmetry_.fold(Vec2(window_.x0 + (col + 0.5) * d, window_.y0 + window_.size - (row + 0.5) * d));
+    long cx, cy;
+    cell_of(p, cx, cy);
+    double best = radius * radius;
+    std::size_t nearest = x.size();
+    for (long j = std::max(cy - 1, 0L); j <= std::min(cy + 1, ny - 1); ++j)
+      for (long i = std::max(cx - 1, 0L); i <= std::min(cx + 1, nx - 1); ++i)
+        for (const std::size_t q : cell[std::size_t(j * nx + i)])
+          if (const double r2 = (x[q] - p).squaredNorm(); r2 <= best) best = r2, nearest = q;
+    if (nearest == x.size()) continue;
+    std::uint8_t* out = image.pixels.data() + 4 * k;
+    out[0] = colours[nearest][0], out[1] = colours[nearest][1], out[2] = colours[nearest][2], out[3] = 255;
+  }
+  return image;
+}
+
 std::string FieldMap::html(const std::vector<double>& temperature, const ColourScale& colours,
                            const std::vector<post::Polyline>& fronts, bool fronts_whole, const MapOverlay& overlay,
                            const std::string& title) const {
+  return html(raster(temperature, colours), "temperature", fronts, fronts_whole, overlay, title);
+}
+
+std::string FieldMap::html(const RgbaImage& image, const std::string& what, const std::vector<post::Polyline>& fronts,
+                           bool fronts_whole, const MapOverlay& overlay, const std::string& title) const {
   const int n = window_.pixels;
   const double scale = n / window_.size;  // px per metre
   auto px = [&](const Vec2& x) { return std::pair{(x[0] - window_.x0) * scale, (window_.y0 + window_.size - x[1]) * scale}; };
   // The raster is an <img>; the vectors lie over it in an SVG of the same size.
-  std::string o = fmt::format(R"(<div class="map"><img src="{}" width="{}" height="{}" alt="temperature map, {}">)",
-                              png_data_uri(raster(temperature, colours)), n, n, svg::escape(title));
+  std::string o = fmt::format(R"(<div class="map"><img src="{}" width="{}" height="{}" alt="{} map, {}">)",
+                              png_data_uri(image), n, n, svg::escape(what), svg::escape(title));
   o += fmt::format(
       R"(<svg viewBox="0 0 {0} {0}" width="{0}" height="{0}" role="img" font-family="{1}" font-size="13"><title>{2}</title>)",
       n, svg::font_family, svg::escape(title));

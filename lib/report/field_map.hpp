@@ -7,6 +7,8 @@
 // a scale bar drawn on top as vectors (an SVG laid over it).
 #pragma once
 
+#include <array>
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -48,6 +50,12 @@ class FieldMap {
   // Pixels outside the domain, or with no particle in reach, are transparent.
   RgbaImage raster(const std::vector<double>& temperature, const ColourScale& colours) const;
 
+  // Categories that must not blend (the material of a porous plate): each
+  // pixel takes the colour of its nearest particle (colours[i] is particle
+  // i's, as in the snapshot given to the constructor); pixels with no
+  // particle within `reach` spacings are transparent.
+  RgbaImage nearest_raster(const std::vector<std::array<std::uint8_t, 3>>& colours, double reach = 1.0) const;
+
   // The map as HTML: the raster as an <img> (PNG data URI) under an SVG with
   // the overlay, the front curves (wedge curves copied around by the
   // symmetry unless `fronts_whole`: they cover the section already), a title
@@ -55,6 +63,10 @@ class FieldMap {
   std::string html(const std::vector<double>& temperature, const ColourScale& colours,
                   const std::vector<post::Polyline>& fronts, bool fronts_whole, const MapOverlay& overlay,
                   const std::string& title) const;
+  // The same around a raster made elsewhere (window-sized, e.g.
+  // nearest_raster's); `what` names the map in the image's alt text.
+  std::string html(const RgbaImage& image, const std::string& what, const std::vector<post::Polyline>& fronts,
+                   bool fronts_whole, const MapOverlay& overlay, const std::string& title) const;
 
   const MapWindow& window() const { return window_; }
 

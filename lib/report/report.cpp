@@ -132,6 +132,7 @@ void add_run_facts(const RunRecord& run, json& view) {
       {"profiles_OA.csv", "temperature along OA at the snapshots"},
       {"profiles_OB.csv", "temperature along OB at the snapshots"},
       {"monitoring.csv", "sensor temperatures over time"},
+      {"damage.csv", "broken bonds, largest damage and damaged area at every mechanical equilibrium"},
       {"field.pvd", "ParaView: the wedge's particles at every snapshot"},
       {"ring.pvd", "ParaView: the whole ring at every snapshot"},
   };
@@ -184,6 +185,7 @@ json report_view(const fs::path& dir) {
   detail::add_maps(run, view);
   detail::add_charts(run, view);
   detail::add_mechanics(run, view);
+  detail::add_frost(run, view);
   detail::add_run_facts(run, view);
   return view;
 }

@@ -29,6 +29,7 @@ void add_headline(const RunRecord& run, nlohmann::json& view);  // closure, thic
 void add_maps(const RunRecord& run, nlohmann::json& view);      // temperature maps and colour bar
 void add_charts(const RunRecord& run, nlohmann::json& view);    // thickness, OB temperature, profiles, sensors
 void add_mechanics(const RunRecord& run, nlohmann::json& view); // PD: displacement and damage maps
+void add_frost(const RunRecord& run, nlohmann::json& view);     // porous plate: maps, pore freezing, damage
 void add_run_facts(const RunRecord& run, nlohmann::json& view); // run table and file links
 
 }  // namespace frostwall::report::detail

@@ -109,6 +109,7 @@ SolidSnapshot read_solid(const fs::path& file) {
   vtkDataArray *U = grid->GetPointData()->GetArray("displacement"), *D = grid->GetPointData()->GetArray("damage"),
                *V = grid->GetPointData()->GetArray("volume"), *B = grid->GetPointData()->GetArray("boundary");
   if (!U || !D || !V || !B) return s;
+  vtkDataArray *T = grid->GetPointData()->GetArray("temperature"), *M = grid->GetPointData()->GetArray("material");
   for (vtkIdType i = 0; i < grid->GetNumberOfPoints(); ++i) {
     if (std::lround(B->GetTuple1(i)) >= 0) continue;  // thermal layers: not solid
     const double* x = grid->GetPoint(i);
@@ -118,6 +119,8 @@ SolidSnapshot read_solid(const fs::path& file) {
     s.particles.boundary.push_back(-1);
     s.particles.temperature.push_back(std::hypot(u[0], u[1]));
     s.damage.push_back(D->GetTuple1(i));
+    if (T) s.temperature.push_back(T->GetTuple1(i));
+    if (M) s.material.push_back(static_cast<int>(std::lround(M->GetTuple1(i))));
   }
   return s;
 }

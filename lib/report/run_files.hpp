@@ -36,9 +36,14 @@ FieldSnapshot read_field(const std::filesystem::path& file);
 
 // The solid of a PD run's snapshot: its free particles (boundary -1) with
 // |displacement| (m) and damage; empty when the file has no displacement.
+// Also the temperature (degC) and, for a porous plate, the material of
+// each particle (0 matrix, 1 pore water, 2 pore ice); each empty when the
+// file lacks it.
 struct SolidSnapshot {
   FieldSnapshot particles;  // temperature holds |displacement|
   std::vector<double> damage;
+  std::vector<double> temperature;
+  std::vector<int> material;
 };
 SolidSnapshot read_solid(const std::filesystem::path& file);
 

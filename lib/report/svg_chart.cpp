@@ -192,4 +192,90 @@ std::string render_svg(const Chart& chart) {
   return o;
 }
 
+std::string render_svg(const BarChart& chart) {
+  Range xr;
+  for (const auto& b : chart.bars) xr.add(b.start), xr.add(b.end);
+  xr.add(chart.open_end);
+  for (double v : chart.x_include) xr.add(v);
+  for (const auto& g : chart.guides)
+    if (g.vertical) xr.add(g.value);
+  if (xr.empty()) xr.add(0), xr.add(1);
+  const NiceScale xs = tight_scale(xr.lo, xr.hi);
+
+  double label_width = 0;
+  for (const auto& b : chart.bars) label_width = std::max(label_width, svg::text_width(b.label, font));
+  const double rows = static_cast<double>(std::max<std::size_t>(chart.bars.size(), 1));
+  const double left = label_width + tick_length + 12, right = 16, top = 20, bottom = 44;
+  const double W = chart.width, pw = W - left - right, ph = rows * chart.row_height, H = top + ph + bottom;
+  auto px = [&](double x) { return left + (x - xs.lo) / (xs.hi - xs.lo) * pw; };
+  auto row_y = [&](std::size_t k) { return top + (static_cast<double>(k) + 0.5) * chart.row_height; };
+  const std::string clip = svg::unique_id("plot"), fade = svg::unique_id("fade");
+
+  std::string o = fmt::format(
+      R"(<svg class="chart bars" viewBox="0 0 {} {}" width="{}" height="{}" role="img" font-family="{}" font-size="{}">)"
+      "\n<title>{}</title>\n",
+      W, num(H), W, num(H), svg::font_family, num(font), escape(chart.title));
+  o += fmt::format(R"(<defs><clipPath id="{}"><rect x="{}" y="{}" width="{}" height="{}"/></clipPath>)", clip, num(left),
+                   num(top), num(pw), num(ph));
+  o += fmt::format(R"(<linearGradient id="{0}" x1="0" x2="1" y1="0" y2="0"><stop offset="0" stop-color="{1}"/>)"
+                   R"(<stop offset="1" stop-color="{1}" stop-opacity="0.1"/></linearGradient></defs>)" "\n",
+                   fade, chart.colour);
+  // Grid, axes, ticks and labels.
+  o += R"(<g stroke="#e4e4e4" stroke-width="1">)";
+  for (double v : xs.ticks) o += fmt::format(R"(<line x1="{0}" y1="{1}" x2="{0}" y2="{2}"/>)", num(px(v)), num(top), num(top + ph));
+  o += "</g>\n<g stroke=\"#222\" stroke-width=\"1\">";
+  for (double v : xs.ticks)
+    o += fmt::format(R"(<line x1="{0}" y1="{1}" x2="{0}" y2="{2}"/>)", num(px(v)), num(top + ph), num(top + ph + tick_length));
+  o += fmt::format(R"(<polyline fill="none" points="{0},{1} {0},{2} {3},{2}"/>)", num(left), num(top), num(top + ph),
+                   num(left + pw));
+  o += "</g>\n<g fill=\"#222\">";
+  for (double v : xs.ticks)
+    o += fmt::format(R"(<text x="{}" y="{}" text-anchor="middle">{}</text>)", num(px(v)), num(top + ph + tick_length + 13),
+                     tick_label(v, xs.decimals));
+  for (std::size_t k = 0; k < chart.bars.size(); ++k)
+    o += fmt::format(R"(<text x="{}" y="{}" text-anchor="end">{}</text>)", num(left - tick_length - 2), num(row_y(k) + 4),
+                     escape(chart.bars[k].label));
+  o += fmt::format(R"(<text x="{}" y="{}" text-anchor="middle">{}</text>)", num(left + pw / 2), num(H - 6), escape(chart.x_label));
+  o += "</g>\n";
+
+  // The bars; an unended one fades out towards open_end and has no right edge.
+  const double thick = 0.62 * chart.row_height, open_end = std::isfinite(chart.open_end) ? chart.open_end : xs.hi;
+  o += fmt::format(R"svg(<g clip-path="url(#{})">)svg", clip);
+  for (std::size_t k = 0; k < chart.bars.size(); ++k) {
+    const Bar& b = chart.bars[k];
+    const double y0 = row_y(k) - thick / 2;
+    if (!std::isfinite(b.start)) {
+      o += fmt::format(R"(<g class="bar never"><text x="{}" y="{}" fill="#777" font-size="{}">{}</text></g>)", num(left + 4),
+                       num(row_y(k) + 4), num(small_font), escape(chart.never_started));
+      continue;
+    }
+    const bool open = !std::isfinite(b.end);
+    const double x0 = px(b.start), x1 = std::max(px(open ? open_end : b.end), x0 + 1.0);
+    const std::string tip = fmt::format("{}: {:g} to {}", b.label, b.start, open ? "not finished" : fmt::format("{:g}", b.end));
+    if (open)
+      o += fmt::format(R"svg(<g class="bar open"><title>{0}</title><rect x="{1}" y="{2}" width="{3}" height="{4}" fill="url(#{5})"/>)svg"
+                       R"(<path d="M{6} {2}H{1}V{7}H{6}" fill="none" stroke="{8}" stroke-width="1"/></g>)",
+                       escape(tip), num(x0), num(y0), num(x1 - x0), num(thick), fade, num(x1), num(y0 + thick), chart.colour);
+    else
+      o += fmt::format(R"(<g class="bar"><title>{}</title><rect x="{}" y="{}" width="{}" height="{}" fill="{}"/></g>)",
+                       escape(tip), num(x0), num(y0), num(x1 - x0), num(thick), chart.colour);
+  }
+  o += "</g>\n";
+  // Reference lines over the bars, labelled above the plot.
+  o += R"(<g stroke="#555" stroke-width="1" stroke-dasharray="5 3">)";
+  for (const auto& g : chart.guides)
+    if (g.vertical) o += fmt::format(R"(<line x1="{0}" y1="{1}" x2="{0}" y2="{2}"/>)", num(px(g.value)), num(top - 4), num(top + ph));
+  o += fmt::format(R"(</g><g fill="#444" font-size="{}">)", num(small_font));
+  for (const auto& g : chart.guides)
+    if (g.vertical && !g.label.empty())
+      o += fmt::format(R"(<text x="{}" y="{}" text-anchor="{}">{}</text>)", num(px(g.value)), num(top - 7),
+                       px(g.value) > left + 0.7 * pw ? "end" : px(g.value) < left + 0.3 * pw ? "start" : "middle",
+                       escape(g.label));
+  o += "</g>\n";
+  if (chart.bars.empty())
+    o += fmt::format(R"(<text x="{}" y="{}" text-anchor="middle" fill="#777">no bars</text>)", num(left + pw / 2), num(row_y(0) + 4));
+  o += "</svg>";
+  return o;
+}
+
 }  // namespace frostwall::report

@@ -37,6 +37,30 @@ struct Chart {
 
 std::string render_svg(const Chart& chart);
 
+// One row of a horizontal bar chart over time (the pores' freezing): from
+// start to end. A NaN end: not ended, the bar runs open (fading, no right
+// edge) to the chart's open_end; a NaN start: never started, no bar but a
+// note in the row.
+struct Bar {
+  std::string label;  // at the row's left
+  double start = 0.0, end = 0.0;
+};
+
+struct BarChart {
+  std::string title;     // the figure's accessible name (<title>)
+  std::string x_label;   // with units
+  std::vector<Bar> bars; // top to bottom
+  std::vector<Guide> guides;  // vertical ones only
+  std::vector<double> x_include;
+  double open_end = 0.0;      // where unended bars stop (the end of the run)
+  std::string colour = "#0072B2";
+  std::string never_started = "not started";
+  int width = 540, row_height = 18;
+};
+
+// Every row is a <g class="bar">, "bar open" or "bar never">.
+std::string render_svg(const BarChart& chart);
+
 // Okabe-Ito colours, distinguishable with colour-blind vision.
 const std::vector<std::string>& categorical_colours();
 // n colours along a dark-to-light ramp (plasma), for a progression such as snapshot days.

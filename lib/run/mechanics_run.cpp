@@ -41,8 +41,11 @@ void MechanicsRun::update(const thermal::ThermalModel& model, double t, bool for
     largest = std::max(largest, std::abs(T[i] - mechanics_.material.reference_temperature));
   }
   const double threshold = mechanics_.temperature_change.value_or(std::max(0.1 * largest, 1e-6));
-  double froze = 0.0;  // how far any pore particle's frozen fraction moved
-  for (std::size_t i = 0; i < f_equilibrium_.size(); ++i) froze = std::max(froze, std::abs(f[i] - f_equilibrium_[i]));
+  double froze = 0.0;  // how far any pore's frozen fraction moved
+  if (pores_) {
+    const auto now = pores_->frozen_fraction(f, model.volume()), then = pores_->frozen_fraction(f_equilibrium_, model.volume());
+    for (std::size_t p = 0; p < now.size(); ++p) froze = std::max(froze, std::abs(now[p] - then[p]));
+  }
   const bool freezing = froze >= mechanics_.frozen_fraction_change;
   if (!force && moved < threshold && !freezing) return;
   if (moved == 0.0 && froze == 0.0 && relaxations_ > 0) return;
@@ -55,18 +58,19 @@ void MechanicsRun::update(const thermal::ThermalModel& model, double t, bool for
     dT_[i] = T[i] - mechanics_.material.reference_temperature;
     T_equilibrium_[i] = T[i];
   }
-  for (int round = 0; round < 1000; ++round) {
-    const auto r = pd::relax(*solid_, u_, dT_, mechanics_.tolerance, mechanics_.max_iterations);
-    ++relaxations_;
-    iterations_ += r.iterations;
-    largest_ = std::max(largest_, r.iterations);
-    if (!r.converged) ++unconverged_;
-    std::vector<std::pair<std::uint32_t, std::uint32_t>> ends;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> ends;
+  auto break_bonds = [&] {
+    ends.clear();
     const std::size_t broke = solid_->break_bonds(u_, dT_, thermal_ ? &ends : nullptr);
-    broken_ += broke;
     if (thermal_) insulated_ += thermal_->cut_pairs(ends);
-    if (broke == 0) break;
-  }
+    return broke;
+  };
+  const auto r = pd::relax_with_breakage(*solid_, u_, dT_, mechanics_.tolerance, mechanics_.max_iterations, break_bonds);
+  ++relaxations_;
+  iterations_ += r.iterations;
+  largest_ = std::max(largest_, r.iterations);
+  if (!r.converged) ++unconverged_;
+  broken_ += r.broken;
   if (after_equilibrium) after_equilibrium(t);
 }
 

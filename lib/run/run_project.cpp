@@ -14,6 +14,7 @@
 #include "run/model.hpp"
 #include "thermal/backward_euler.hpp"
 #include "thermal/super_time_stepping.hpp"
+#include "run/frost_results.hpp"
 #include "run/mechanics_run.hpp"
 #include "run/plain_results.hpp"
 #include "run/shaft_results.hpp"
@@ -184,6 +185,11 @@ void run_project(const Project& p, const RunOptions& options) {
     mechanics = std::make_unique<MechanicsRun>(p, built);
     plain->attach(mechanics.get());
   }
+  std::unique_ptr<FrostResults> frost;
+  if (!built.pore_of.empty()) {
+    frost = std::make_unique<FrostResults>(p, built, mechanics.get());
+    if (mechanics) mechanics->after_equilibrium = [&](double t) { frost->after_equilibrium(t); };
+  }
   const double heat_before = model.stored_heat();
 
   thermal::TimeLoopObservers observers;
@@ -193,6 +199,7 @@ void run_project(const Project& p, const RunOptions& options) {
   std::vector<double> f_before, T_before, f_at, T_at;
   observers.after_step = [&](const thermal::ThermalModel& m, double t) {
     if (closure) closure->after_step(m, t);
+    if (frost) frost->after_step(m, t);
     if (mechanics) mechanics->update(m, t, false);
     if (!results) return;
     const auto& f = m.liquid_fraction();
@@ -228,9 +235,11 @@ void run_project(const Project& p, const RunOptions& options) {
     if (mechanics) mechanics->update(m, t, is_snapshot);
     if (plain) plain->sample(t, m);
     if (plain && is_snapshot) plain->snapshot(t, m, out, stems[k]);
+    if (frost && is_snapshot) frost->snapshot(t, out, stems[k]);
     if (p.output.vtk && is_snapshot) {
       auto frame = frame_of(particles, m);
       if (mechanics) add_mechanics(frame, *mechanics);
+      if (frost) frost->add_fields(frame, m);
       io::write_vtu(out / (stems[k] + ".vtu"), frame);
       pvd.push_back({t / unit, stems[k] + ".vtu"});
       if (write_ring) {
@@ -267,6 +276,10 @@ void run_project(const Project& p, const RunOptions& options) {
     const nlohmann::json parts = plain->finish(out);
     for (const char* key : {"front_along", "monitoring", "monitoring_solid", "interface"})
       if (parts.contains(key)) summary[key] = parts[key];
+    if (frost) {
+      const nlohmann::json pores = frost->finish(out);
+      for (const auto& [key, value] : pores.items()) summary[key] = value;
+    }
   }
   summary.update(nlohmann::ordered_json{
       {"heat_balance",

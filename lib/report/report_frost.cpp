@@ -1,0 +1,245 @@
+// The frost damage section of a porous plate's run (summary.json has
+// "pores"): at each snapshot the temperature, the material (matrix, pore
+// water, pore ice) and the damage side by side (the PD paper's Fig. 10);
+// when each pore froze, as bars; the broken bonds and the largest damage
+// over time (damage.csv); and a table of the pores.
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <fmt/core.h>
+#include <limits>
+#include <regex>
+
+#include "report/field_map.hpp"
+#include "report/nice_scale.hpp"
+#include "report/report_sections.hpp"
+#include "report/run_files.hpp"
+#include "report/svg.hpp"
+#include "report/svg_chart.hpp"
+
+namespace frostwall::report::detail {
+
+using nlohmann::json;
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+
+double value_of(const json& v) { return v.is_number() ? v.get<double>() : nan; }
+std::string time_text(double t) {
+  if (!std::isfinite(t)) return "–";
+  return std::abs(t) >= 1000 ? fmt::format("{:.0f}", t) : fmt::format("{:.3g}", t);
+}
+
+// Matrix, pore water, pore ice: apart in lightness too (mid, dark, light).
+constexpr std::array<std::array<std::uint8_t, 3>, 3> material_colour{{{189, 181, 166}, {31, 104, 180}, {196, 234, 247}}};
+constexpr std::array<const char*, 3> material_name{"matrix", "pore water", "pore ice"};
+
+// The material map's legend, as tall as a colour bar.
+std::string material_legend_svg() {
+  std::string o = fmt::format(
+      R"(<svg class="colour-bar" viewBox="0 0 340 58" width="340" height="58" role="img" font-family="{}" font-size="11">)"
+      "<title>colours of the material map</title>",
+      svg::font_family);
+  double x = 24;
+  for (std::size_t m = 0; m < material_name.size(); ++m) {
+    const auto& c = material_colour[m];
+    o += fmt::format(R"(<rect x="{}" y="6" width="18" height="14" fill="#{:02x}{:02x}{:02x}" stroke="#222" stroke-width="0.8"/>)"
+                     R"(<text x="{}" y="17" fill="#222">{}</text>)",
+                     svg::num(x), c[0], c[1], c[2], svg::num(x + 24), material_name[m]);
+    x += 24 + svg::text_width(material_name[m], 11) + 18;
+  }
+  return o + R"(<text x="170" y="54" text-anchor="middle" fill="#222">material</text></svg>)";
+}
+
+// An area in m2 (per metre of depth) in µm2 or mm2, whichever reads better.
+std::string area_text(double a) {
+  if (!std::isfinite(a)) return "–";
+  return a < 1e-6 ? fmt::format("{:.3g} µm²", 1e12 * a) : fmt::format("{:.3g} mm²", 1e6 * a);
+}
+
+struct DamageSeries {
+  std::vector<double> time, broken_share, largest, area;
+  std::string source;
+};
+
+// damage.csv (one row per mechanical equilibrium); else summary "damage" (one per snapshot).
+DamageSeries damage_series(const RunRecord& run) {
+  DamageSeries d;
+  if (fs::exists(run.dir / "damage.csv")) {
+    const CsvTable t = read_csv(run.dir / "damage.csv");
+    auto column = [&](const char* name) { return t.column(name) ? *t.column(name) : std::vector<double>(t.rows(), nan); };
+    d = {column("time"), column("broken_bond_share"), column("largest_damage"), column("damaged_area"), "damage.csv"};
+    return d;
+  }
+  d.source = "summary.json";
+  for (const auto& r : run.summary.value("damage", json::array())) {
+    d.time.push_back(value_of(r.value("time", json())));
+    d.broken_share.push_back(value_of(r.value("broken_bond_share", json())));
+    d.largest.push_back(value_of(r.value("largest_damage", json())));
+    d.area.push_back(value_of(r.value("damaged_area", json())));
+  }
+  return d;
+}
+
+// The three maps of every snapshot of field.pvd, on one colour scale each.
+void add_frost_maps(const RunRecord& run, const std::string& unit, json& view) {
+  const auto text = read_text(run.dir / "field.pvd");
+  static const std::regex dataset(R"re(<DataSet\s+timestep="([^"]*)"[^>]*\sfile="([^"]*)")re");
+  std::vector<std::pair<double, SolidSnapshot>> snapshots;
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  if (text)
+    for (auto it = std::sregex_iterator(text->begin(), text->end(), dataset); it != std::sregex_iterator(); ++it) {
+      SolidSnapshot s = read_solid(run.dir / (*it)[2].str());
+      const std::size_t n = s.particles.position.size();
+      if (n == 0 || s.temperature.size() != n || s.material.size() != n) continue;
+      for (double T : s.temperature) lo = std::min(lo, T), hi = std::max(hi, T);
+      snapshots.emplace_back(std::stod((*it)[1].str()), std::move(s));
+    }
+  if (snapshots.empty()) {
+    view["frost_maps_note"] = "No snapshots with the pores' material in this directory (output.vtk off?), so no maps.";
+    return;
+  }
+  const auto& facts = run.summary["run"];
+  const auto& first = snapshots.front().second.particles;
+  const double spacing = facts.value("spacing", 0.0), h = facts.value("smoothing_length", 1.3 * spacing);
+  // A square window over the plate (its particles' extent).
+  particles::Vec<2> a = first.position.front(), b = a;
+  for (const auto& x : first.position) a = a.cwiseMin(x), b = b.cwiseMax(x);
+  MapWindow window;
+  window.pixels = 300;
+  window.x0 = a[0] - 0.5 * spacing, window.y0 = a[1] - 0.5 * spacing;
+  window.size = std::max(b[0] - a[0], b[1] - a[1]) + spacing;
+  const FieldMap map(first, WedgeSymmetry{}, facts.value("kernel", "wendland_c2"), h, spacing, window, 0.0);
+  const double freezing_point = run.project ? run.project->pore_fluid.freezing_point : 0.0;
+  const NiceScale ends = nice_scale(lo, hi, 10);
+  const ColourScale temperature(ends.lo, ends.hi, freezing_point), damage(0.0, 1.0, 0.5);
+  json rows = json::array();
+  for (const auto& [t, s] : snapshots) {
+    std::vector<std::array<std::uint8_t, 3>> colours;
+    colours.reserve(s.material.size());
+    for (int m : s.material) colours.push_back(material_colour[std::size_t(std::clamp(m, 0, 2))]);
+    const std::string title = fmt::format("t = {:g} {}", t, unit);
+    json maps = json::array();
+    maps.push_back({{"html", map.html(s.temperature, temperature, {}, true, MapOverlay{}, title)},
+                    {"caption", fmt::format("temperature (°C) at {:g} {}", t, unit)}});
+    maps.push_back({{"html", map.html(map.nearest_raster(colours), "material", {}, true, MapOverlay{}, title)},
+                    {"caption", fmt::format("matrix, pore water and pore ice at {:g} {}", t, unit)}});
+    maps.push_back({{"html", map.html(s.damage, damage, {}, true, MapOverlay{}, title)},
+                    {"caption", fmt::format("damage (share of broken bonds) at {:g} {}", t, unit)}});
+    rows.push_back({{"maps", maps}});
+  }
+  view["frost_snapshots"] = rows;
+  view["frost_has_maps"] = true;
+  view["frost_temperature_bar_svg"] = temperature.colour_bar_svg(340);
+  view["frost_material_legend_svg"] = material_legend_svg();
+  view["frost_damage_bar_svg"] = damage.colour_bar_svg(340, "damage (share of broken bonds)");
+  view["frost_maps_note"] = fmt::format(
+      "Each snapshot of the plate: the temperature (blue to red at the pore water's freezing point, {} °C) and the "
+      "damage resampled from the particles (SPH interpolation); the material is each particle's own, its nearest "
+      "pixels taking its colour, so water and ice do not blend.",
+      number(freezing_point, 1));
+}
+
+Chart damage_chart(const DamageSeries& d, bool percent, double all_frozen, const std::string& unit) {
+  Chart c;
+  c.title = percent ? "Broken bonds over time" : "Largest damage over time";
+  c.x_label = "time (" + unit + ")";
+  c.y_label = percent ? "broken bonds (% of all)" : "largest damage (share of bonds)";
+  Series s;
+  s.x = d.time;
+  s.y = percent ? d.broken_share : d.largest;
+  if (percent)
+    for (double& v : s.y) v *= 100.0;
+  s.colour = percent ? categorical_colours()[1] : categorical_colours()[0];
+  s.markers = d.time.size() <= 40;
+  c.series.push_back(std::move(s));
+  c.x_include = {0.0};
+  c.y_include = percent ? std::vector<double>{0.0} : std::vector<double>{0.0, 1.0};
+  if (std::isfinite(all_frozen)) c.guides.push_back({true, all_frozen, "all pores frozen"});
+  c.empty_note = "no mechanical equilibria recorded";
+  c.width = 500, c.height = 300;
+  return c;
+}
+
+}  // namespace
+
+void add_frost(const RunRecord& run, json& view) {
+  view["has_frost"] = false;
+  view["frost_has_maps"] = false;
+  for (const char* key : {"frost_snapshots", "frost_charts", "pore_rows"}) view[key] = json::array();
+  for (const char* key : {"frost_note", "frost_maps_note", "frost_temperature_bar_svg", "frost_material_legend_svg",
+                          "frost_damage_bar_svg", "pore_bars_svg", "pore_bars_caption", "frost_time_unit"})
+    view[key] = "";
+  if (!run.summary.contains("pores") || !run.summary["pores"].is_array()) return;
+  view["has_frost"] = true;
+  const auto& pores = run.summary["pores"];
+  const std::string unit = run.summary.value("run", json::object()).value("time_unit", "s");
+  view["frost_time_unit"] = unit;
+  const double all_frozen = value_of(run.summary.value("all_pores_frozen", json()));
+  const DamageSeries d = damage_series(run);
+
+  // The end of the run, where unfinished freezing bars stop.
+  double end = run.project ? run.project->time.end / run.project->time.unit_seconds() : nan;
+  if (!std::isfinite(end)) {
+    end = all_frozen;
+    for (double t : d.time) end = std::isfinite(end) ? std::max(end, t) : t;
+  }
+
+  // When each pore froze, as listed; the table beside.
+  BarChart bars;
+  bars.title = "Freezing of each pore";
+  bars.x_label = "time (" + unit + ")";
+  bars.x_include = {0.0};
+  bars.open_end = end;
+  bars.never_started = "not started within the run";
+  if (std::isfinite(all_frozen)) bars.guides.push_back({true, all_frozen, "all pores frozen"});
+  json rows = json::array();
+  std::size_t started = 0, finished = 0;
+  double first_start = nan;
+  for (const auto& p : pores) {
+    const std::string id = p.contains("id") ? p["id"].dump() : std::to_string(rows.size());
+    const double start = value_of(p.value("freezing_start", json())), stop = value_of(p.value("freezing_end", json()));
+    bars.bars.push_back({"pore " + id, start, stop});
+    started += std::isfinite(start), finished += std::isfinite(start) && std::isfinite(stop);
+    if (std::isfinite(start)) first_start = std::isfinite(first_start) ? std::min(first_start, start) : start;
+    rows.push_back({{"pore", id},
+                    {"centre_x", number(1e6 * value_of(p.value("x", json())), 1)},
+                    {"centre_y", number(1e6 * value_of(p.value("y", json())), 1)},
+                    {"radius", number(1e6 * value_of(p.value("radius", json())), 1)},
+                    {"freezing_start", time_text(start)},
+                    {"freezing_end", time_text(stop)},
+                    {"max_rim_damage", number(p.value("max_rim_damage", json()), 2)}});
+  }
+  bars.width = 720;
+  view["pore_rows"] = rows;
+  view["pore_bars_svg"] = render_svg(bars);
+  view["pore_bars_caption"] = fmt::format(
+      "Each pore from its first ice to fully frozen, in the order of the list{}. A fading bar without a right end is still "
+      "freezing at the end of the run ({} {}).",
+      std::isfinite(all_frozen) ? "; dashed: all pores frozen" : "", time_text(end), unit);
+
+  // Damage over time.
+  const std::string source = d.source == "damage.csv" ? "damage.csv, one point per mechanical equilibrium"
+                                                      : "summary.json, one point per snapshot";
+  view["frost_charts"] = json::array(
+      {{{"id", "frost-broken-bonds"}, {"title", "Broken bonds"}, {"svg", render_svg(damage_chart(d, true, all_frozen, unit))},
+        {"caption", "Broken bonds as a share of all bonds of the plate (" + source + ")."}},
+       {{"id", "frost-largest-damage"}, {"title", "Largest damage"}, {"svg", render_svg(damage_chart(d, false, all_frozen, unit))},
+        {"caption", "The largest damage of any particle, its share of broken bonds (" + source + ")."}}});
+
+  std::string note = fmt::format("{} water-filled pores; ", pores.size());
+  if (std::isfinite(all_frozen)) note += fmt::format("all frozen at {} {}", time_text(all_frozen), unit);
+  else note += fmt::format("{} of them fully frozen within the run, {} started", finished, started);
+  if (std::isfinite(first_start)) note += fmt::format(" (the first ice at {} {})", time_text(first_start), unit);
+  note += ".";
+  if (!d.time.empty())
+    note += fmt::format(" At {} {}: {} % of the bonds broken, largest damage {}, damaged area (damage above 0.4) {}.",
+                        time_text(d.time.back()), unit, fmt::format("{:.3g}", 100.0 * d.broken_share.back()), number(d.largest.back(), 2),
+                        area_text(d.area.back()));
+  view["frost_note"] = note;
+  add_frost_maps(run, unit, view);
+}
+
+}  // namespace frostwall::report::detail
