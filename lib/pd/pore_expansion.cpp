@@ -27,7 +27,51 @@ std::vector<double> PoreExpansion::frozen_fraction(const std::vector<double>& f,
   return ice;
 }
 
-void PoreExpansion::prepare(PdSolid& solid) const {
+bool PoreExpansion::follow(const PdSolid& solid, const std::vector<double>& dT, std::vector<double>& u,
+                           double significant) {
+  if (!rim_displacement()) return false;
+  const auto& x = solid.position();
+  const double kT = solid.law().thermal_stretch_per_K;
+  std::vector<Vec2> mean(pores_.size(), Vec2::Zero());
+  std::vector<double> dT_mean(pores_.size(), 0.0), count(pores_.size(), 0.0);
+  for (std::size_t p = 0; p < pores_.size(); ++p) {
+    for (std::size_t i : ring_[p]) mean[p] += Vec2(u[2 * i], u[2 * i + 1]);
+    if (!ring_[p].empty()) mean[p] /= double(ring_[p].size());
+  }
+  for (std::size_t i = 0; i < pore_of_.size(); ++i)
+    if (pore_of_[i] >= 0) {
+      dT_mean[pore_of_[i]] += dT[i];
+      count[pore_of_[i]] += 1.0;
+    }
+  double moved = 0.0;
+  for (std::size_t i = 0; i < pore_of_.size(); ++i) {
+    const int p = pore_of_[i];
+    if (p < 0) continue;
+    const auto& pore = pores_[p];
+    const double R = pore.radius, ua = rim_u_.empty() ? 0.0 : rim_u_[p];
+    const Vec2 d = x[i] - Vec2(pore.x, pore.y);
+    const double r = d.norm();
+    // u_a R / r, radial; u_a R / (R/2) towards the centre (no bond from
+    // the matrix reaches that deep unless the pore is tiny).
+    const Vec2 radial = r > 0.0 ? Vec2(d * (ua * R / std::max(r, 0.5 * R) / r)) : Vec2(Vec2::Zero());
+    const Vec2 target = mean[p] + kT * (dT_mean[p] / std::max(count[p], 1.0)) * d + radial;
+    moved = std::max(moved, (target - Vec2(u[2 * i], u[2 * i + 1])).norm());
+    u[2 * i] = target[0];
+    u[2 * i + 1] = target[1];
+  }
+  return moved > significant;
+}
+
+void PoreExpansion::prepare(PdSolid& solid) {
+  ring_.assign(pores_.size(), {});
+  const auto& x = solid.position();
+  for (std::size_t i = 0; i < pore_of_.size(); ++i) {
+    if (pore_of_[i] >= 0) continue;
+    for (std::size_t p = 0; p < pores_.size(); ++p) {
+      const double d = std::hypot(x[i][0] - pores_[p].x, x[i][1] - pores_[p].y) - pores_[p].radius;
+      if (d >= 0.0 && d <= solid.law().horizon) ring_[p].push_back(i);
+    }
+  }
   if (rim_displacement()) {
     std::vector<std::uint8_t> held(pore_of_.size(), 0);
     for (std::size_t i = 0; i < held.size(); ++i) held[i] = pore_of_[i] >= 0;
@@ -36,21 +80,11 @@ void PoreExpansion::prepare(PdSolid& solid) const {
 }
 
 void PoreExpansion::apply(PdSolid& solid, const std::vector<double>& f, const std::vector<double>& volume,
-                          std::vector<double>& u) const {
-  const auto& x = solid.position();
+                          std::vector<double>& u) {
   if (rim_displacement()) {
     const std::vector<double> F = frozen_fraction(f, volume);
-    for (std::size_t i = 0; i < pore_of_.size(); ++i) {
-      if (pore_of_[i] < 0) continue;
-      const auto& pore = pores_[pore_of_[i]];
-      const double R = pore.radius, ua = R * free_strain(F[pore_of_[i]]);
-      const double dx = x[i][0] - pore.x, dy = x[i][1] - pore.y, r = std::hypot(dx, dy);
-      // u_a R / r, radial; held at u_a R / (R/2) towards the centre (no
-      // bond from the matrix reaches that deep unless the pore is tiny).
-      const double ur = r > 0.0 ? ua * R / std::max(r, 0.5 * R) : 0.0;
-      u[2 * i] = r > 0.0 ? ur * dx / r : 0.0;
-      u[2 * i + 1] = r > 0.0 ? ur * dy / r : 0.0;
-    }
+    rim_u_.resize(pores_.size());
+    for (std::size_t p = 0; p < pores_.size(); ++p) rim_u_[p] = pores_[p].radius * free_strain(F[p]);
     return;
   }
   std::vector<double> ratio(pore_of_.size(), 1.0), eigen(pore_of_.size(), 0.0);

@@ -6,13 +6,17 @@
 //    pore's area grows by dV F; the particles within it carry the
 //    elastic field's continuation u_a R / r (the displacement an
 //    infinite plate around a pushed hole has), so the matrix's bonds into
-//    the pore see what a continuum's rim would.
+//    the pore see what a continuum's rim would. The pore is no anchor:
+//    the held field rides on the mean displacement of the matrix ring
+//    around it (a horizon deep) plus the matrix's free thermal strain at
+//    the pore's mean temperature, updated as the relaxation goes (follow).
 //  - ice_eigenstrain: each pore particle is ice to its frozen fraction
 //    phi = 1 - f: stiffness E_ice phi (water carries no bonds) and a free
 //    areal strain sqrt(1 + dV phi) - 1 (a 2-D model takes the volume
 //    change as an area change: 4.40 % linear at 9 %).
 #pragma once
 
+#include <algorithm>
 #include <vector>
 
 #include "particles/vec.hpp"
@@ -32,11 +36,20 @@ class PoreExpansion {
   std::vector<double> frozen_fraction(const std::vector<double>& liquid_fraction, const std::vector<double>& volume) const;
   // Installs the model on the solid (held pore particles, or the starting
   // stiffness of liquid pores) and sets u on them for the liquid fractions.
-  void prepare(PdSolid& solid) const;
+  void prepare(PdSolid& solid);
   // The load at the liquid fractions now: held displacements into u, or
   // the ice's stiffness and eigenstrain into the solid.
   void apply(PdSolid& solid, const std::vector<double>& liquid_fraction, const std::vector<double>& volume,
-             std::vector<double>& u) const;
+             std::vector<double>& u);
+  // rim_displacement: moves each pore's held field with its ring; true
+  // when some held displacement moved by more than `significant` (m).
+  bool follow(const PdSolid& solid, const std::vector<double>& dT, std::vector<double>& u, double significant);
+  // The largest rim push u_a now, m (rim_displacement).
+  double largest_push() const {
+    double largest = 0.0;
+    for (double ua : rim_u_) largest = std::max(largest, ua);
+    return largest;
+  }
   bool rim_displacement() const { return expansion_.model == project::FreezingExpansion::Model::rim_displacement; }
 
  private:
@@ -44,6 +57,8 @@ class PoreExpansion {
   double ice_ratio_;  // E_ice / E_matrix
   std::vector<project::Pore> pores_;
   std::vector<int> pore_of_;
+  std::vector<std::vector<std::size_t>> ring_;  // matrix particles within a horizon outside each rim
+  std::vector<double> rim_u_;                   // u_a of each pore at the last apply
 };
 
 }  // namespace frostwall::pd

@@ -10,12 +10,12 @@ namespace frostwall::pd {
 
 RelaxationResult relax(const PdSolid& solid, std::vector<double>& u, const std::vector<double>& dT, double tolerance,
                        int max_iterations) {
-  return relax_with_breakage(const_cast<PdSolid&>(solid), u, dT, tolerance, max_iterations, {}, 0);
+  return relax_adjusting(const_cast<PdSolid&>(solid), u, dT, tolerance, max_iterations, {}, 0);
 }
 
-BreakingResult relax_with_breakage(PdSolid& solid, std::vector<double>& u, const std::vector<double>& dT,
-                                   double tolerance, int max_iterations, const std::function<std::size_t()>& break_bonds,
-                                   int check_every) {
+RelaxationResult relax_adjusting(PdSolid& solid, std::vector<double>& u, const std::vector<double>& dT,
+                                 double tolerance, int max_iterations, const std::function<bool()>& adjust,
+                                 int check_every) {
   const std::size_t n = solid.size(), m = 2 * n;
   u.resize(m, 0.0);
   std::vector<double> lambda(m), v(m, 0.0), F(m), F_old(m), u_all, dT_all, thermal;
@@ -34,14 +34,11 @@ BreakingResult relax_with_breakage(PdSolid& solid, std::vector<double>& u, const
     lambda[2 * i] = lambda[2 * i + 1] = 0.25 * 2.0 * 2.0 * solid.stiffness()[i];
     inv_lambda[2 * i] = inv_lambda[2 * i + 1] = solid.moves(i) ? 1.0 / lambda[2 * i] : 0.0;
   }
-  BreakingResult result;
-  // Breaks bonds; true when some broke (the thermal force, which the
-  // broken bonds no longer carry, is rebuilt).
+  RelaxationResult result;
+  // The solid's changes; true when there were some (the thermal force,
+  // which broken bonds no longer carry, is rebuilt).
   auto broke = [&] {
-    if (!break_bonds) return false;
-    const std::size_t b = break_bonds();
-    if (b == 0) return false;
-    result.broken += b;
+    if (!adjust || !adjust()) return false;
     if (solid.linear()) solid.thermal_force(dT_all, thermal);
     for (std::size_t i = 0; i < n; ++i)
       if (!solid.moves(i)) inv_lambda[2 * i] = inv_lambda[2 * i + 1] = 0.0;  // lost every bond

@@ -29,15 +29,14 @@ struct RelaxationResult {
 RelaxationResult relax(const PdSolid& solid, std::vector<double>& u, const std::vector<double>& dT, double tolerance,
                        int max_iterations);
 
-// The same with bonds breaking on the way (Kilic & Madenci check every
-// step; here every `check_every` iterations and whenever it would stop):
-// break_bonds() breaks what is over-stretched at u and returns how many;
-// the relaxation stops only at an equilibrium where nothing more breaks.
-struct BreakingResult : RelaxationResult {
-  std::size_t broken = 0;
-};
-BreakingResult relax_with_breakage(PdSolid& solid, std::vector<double>& u, const std::vector<double>& dT,
-                                   double tolerance, int max_iterations, const std::function<std::size_t()>& break_bonds,
-                                   int check_every = 50);
+// The same with the solid changing on the way: bonds that break (Kilic &
+// Madenci check every step; here every `check_every` iterations and
+// whenever it would stop) and held particles that follow the rest (pores
+// riding on their ring). adjust() makes those changes at u and returns
+// true when it changed anything; the relaxation stops only at an
+// equilibrium where it changes nothing.
+RelaxationResult relax_adjusting(PdSolid& solid, std::vector<double>& u, const std::vector<double>& dT,
+                                 double tolerance, int max_iterations, const std::function<bool()>& adjust,
+                                 int check_every = 50);
 
 }  // namespace frostwall::pd

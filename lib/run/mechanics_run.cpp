@@ -59,18 +59,22 @@ void MechanicsRun::update(const thermal::ThermalModel& model, double t, bool for
     T_equilibrium_[i] = T[i];
   }
   std::vector<std::pair<std::uint32_t, std::uint32_t>> ends;
-  auto break_bonds = [&] {
+  // Pores ride on their rings to within 1e-4 of the largest rim push.
+  const double significant = 1e-4 * std::max(pores_ ? pores_->largest_push() : 0.0, 1e-12);
+  auto adjust = [&] {
     ends.clear();
     const std::size_t broke = solid_->break_bonds(u_, dT_, thermal_ ? &ends : nullptr);
     if (thermal_) insulated_ += thermal_->cut_pairs(ends);
-    return broke;
+    broken_ += broke;
+    const bool moved = pores_ && pores_->follow(*solid_, dT_, u_, significant);
+    return broke > 0 || moved;
   };
-  const auto r = pd::relax_with_breakage(*solid_, u_, dT_, mechanics_.tolerance, mechanics_.max_iterations, break_bonds);
+  if (pores_) pores_->follow(*solid_, dT_, u_, significant);
+  const auto r = pd::relax_adjusting(*solid_, u_, dT_, mechanics_.tolerance, mechanics_.max_iterations, adjust);
   ++relaxations_;
   iterations_ += r.iterations;
   largest_ = std::max(largest_, r.iterations);
   if (!r.converged) ++unconverged_;
-  broken_ += r.broken;
   if (after_equilibrium) after_equilibrium(t);
 }
 

@@ -1,0 +1,146 @@
+// Story: water-filled pores that freeze and push on the solid around them
+// (pd/pore_expansion.hpp), checked against the continuum:
+//  - rim_displacement: a pore pushed out radially in a disc-shaped plate
+//    (free outside) gives the thick-walled cylinder's (Lame) hoop stress,
+//    sigma_tt = 2 G B (1/r^2 + 1/b^2), at the rim and further out, within
+//    5 %, so it falls off as 1/r^2; the pore rides on the plate (no anchor);
+//  - ice_eigenstrain: an unconfined ice disc (no matrix) grows freely by
+//    volume_change in area (a 2-D model: the volume change is an area
+//    change) within 1 % and no bond breaks, however small the critical
+//    stretch.
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <numbers>
+
+#include "pd/pore_expansion.hpp"
+#include "pd/relaxation.hpp"
+#include "pd/solid.hpp"
+
+using namespace frostwall;
+using pd::Vec2;
+
+namespace {
+
+constexpr double E = 25.7e9;
+
+// Lattice points (spacing dx) of the disc of radius b around c.
+pd::SolidGeometry disc(Vec2 c, double b, double dx) {
+  pd::SolidGeometry g;
+  const int n = static_cast<int>(std::ceil(b / dx)) + 1;
+  for (int j = -n; j <= n; ++j)
+    for (int i = -n; i <= n; ++i) {
+      const Vec2 x = c + Vec2((i + 0.5) * dx, (j + 0.5) * dx);
+      if ((x - c).norm() >= b) continue;
+      g.position.push_back(x);
+      g.volume.push_back(dx * dx);
+    }
+  g.spacing = dx;
+  g.width = g.height = 2.0 * (c[0] + b);
+  return g;
+}
+
+project::Mechanics free_body(std::optional<double> fracture_energy = std::nullopt) {
+  project::Mechanics m;  // every side free: no ghosts
+  m.material.elastic_modulus = E;
+  m.material.fracture_energy = fracture_energy;
+  return m;
+}
+
+double hoop(const std::array<double, 3>& s, const Vec2& d) {
+  const double r = d.norm(), c = d[0] / r, sn = d[1] / r;
+  return s[0] * sn * sn + s[1] * c * c - 2.0 * s[2] * sn * c;
+}
+
+}  // namespace
+
+TEST_CASE("a frozen pore pushing its rim out gives the Lame hoop stress, falling off as 1/r^2", "[frost]") {
+  const double dx = 1.0, a = 8.0, b = 48.0;
+  const Vec2 c(60.0, 60.0);
+  const auto g = disc(c, b, dx);
+  const auto m = free_body();
+  pd::PdSolid solid(g, m, pd::make_bond_law(m, 3.015 * dx));
+  std::vector<int> pore_of(g.position.size(), -1);
+  for (std::size_t i = 0; i < pore_of.size(); ++i)
+    if ((g.position[i] - c).norm() < a) pore_of[i] = 0;
+  project::FreezingExpansion fe;
+  fe.model = project::FreezingExpansion::Model::rim_displacement;
+  pd::PoreExpansion pores(fe, E, {{c[0], c[1], a}}, pore_of);
+  pores.prepare(solid);
+  std::vector<double> u(2 * g.position.size(), 0.0), dT(g.position.size(), 0.0), f(g.position.size(), 0.0);
+  pores.apply(solid, f, g.volume, u);  // every pore particle frozen
+  const double ua = a * (std::sqrt(1.09) - 1.0);
+  REQUIRE(pores.largest_push() == Approx(ua).epsilon(1e-12));
+  pores.follow(solid, dT, u, 0.0);
+  const auto r = pd::relax_adjusting(solid, u, dT, 1e-9, 200000, [&] { return pores.follow(solid, dT, u, 1e-6 * ua); });
+  REQUIRE(r.converged);
+
+  // Lame, plane strain, nu = 1/4 (lambda = G): u = A r + B / r with
+  // sigma_rr(b) = 0 and u(a) = ua.
+  const double G = E / 2.5, B = ua / (a / (2.0 * b * b) + 1.0 / a);
+  auto lame = [&](double rr) { return 2.0 * G * B * (1.0 / (rr * rr) + 1.0 / (b * b)); };
+  const auto sigma = solid.stress(u, dT);
+  // Mean hoop stress of the particles in a band, against Lame at their radii.
+  auto band = [&](double r0, double r1) {
+    double pd_sum = 0.0, exact = 0.0;
+    int count = 0;
+    for (std::size_t i = 0; i < g.position.size(); ++i) {
+      const Vec2 d = g.position[i] - c;
+      if (d.norm() < r0 || d.norm() >= r1) continue;
+      pd_sum += hoop(sigma[i], d);
+      exact += lame(d.norm());
+      ++count;
+    }
+    return std::pair{pd_sum / count, exact / count};
+  };
+  for (const auto& [r0, r1] : {std::pair{a, a + dx}, std::pair{a + 4 * dx, a + 5 * dx}, std::pair{2 * a, 2 * a + dx},
+                               std::pair{3 * a, 3 * a + dx}}) {
+    const auto [got, want] = band(r0, r1);
+    INFO("band " << r0 << ".." << r1 << ": PD " << got / 1e6 << " MPa, Lame " << want / 1e6 << " MPa");
+    CHECK(std::abs(got / want - 1.0) < 0.05);
+  }
+  // The rim's mean displacement is radial: the pore moved with the plate,
+  // and the plate, free, did not move as a whole.
+  Vec2 mean = Vec2::Zero();
+  for (std::size_t i = 0; i < g.position.size(); ++i) mean += Vec2(u[2 * i], u[2 * i + 1]);
+  CHECK(mean.norm() / g.position.size() < 1e-3 * ua);
+}
+
+TEST_CASE("an unconfined ice disc grows freely by the volume change in area and stays whole", "[frost]") {
+  const double dx = 1.0, R = 12.0;
+  const Vec2 c(20.0, 20.0);
+  const auto g = disc(c, R, dx);
+  // A critical stretch of 1e-4: any stretch the expansion caused would break bonds.
+  const auto m = free_body(1e-4 * 1e-4 * 12.0 * E * 3.015 / (5.0 * std::numbers::pi));
+  pd::PdSolid solid(g, m, pd::make_bond_law(m, 3.015 * dx));
+  REQUIRE(solid.law().critical_stretch == Approx(1e-4));
+  const std::vector<int> pore_of(g.position.size(), 0);  // all ice, no matrix
+  project::FreezingExpansion fe;                          // ice_eigenstrain, 9 %
+  pd::PoreExpansion pores(fe, E, {{c[0], c[1], R}}, pore_of);
+  pores.prepare(solid);
+  std::vector<double> u(2 * g.position.size(), 0.0), dT(g.position.size(), 0.0);
+  for (double frozen : {0.5, 1.0}) {
+    const std::vector<double> f(g.position.size(), 1.0 - frozen);
+    pores.apply(solid, f, g.volume, u);
+    std::size_t broken = 0;
+    const auto r = pd::relax_adjusting(solid, u, dT, 1e-10, 200000, [&] {
+      const std::size_t b = solid.break_bonds(u, dT);
+      broken += b;
+      return b > 0;
+    });
+    REQUIRE(r.converged);
+    CHECK(broken == 0);
+    // Area from the outermost particles' mean radial displacement: (1 + u_r / r)^2.
+    double growth = 0.0;
+    int count = 0;
+    for (std::size_t i = 0; i < g.position.size(); ++i) {
+      const Vec2 d = g.position[i] - c;
+      if (d.norm() < R - dx) continue;
+      growth += (d + Vec2(u[2 * i], u[2 * i + 1])).squaredNorm() / d.squaredNorm();
+      ++count;
+    }
+    const double area_change = growth / count - 1.0;
+    INFO("frozen " << frozen << ": area change " << area_change);
+    CHECK(std::abs(area_change / (0.09 * frozen) - 1.0) < 0.01);
+  }
+  CHECK(solid.intact_bonds() == solid.bonds());
+}
