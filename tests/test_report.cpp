@@ -15,8 +15,10 @@
 
 #include "cli.hpp"
 #include "html_check.hpp"
+#include "io/point_cloud_vtk.hpp"
 #include "report/base64.hpp"
 #include "report/colour_scale.hpp"
+#include "report/field_map.hpp"
 #include "report/mustache_view.hpp"
 #include "report/nice_scale.hpp"
 #include "report/report.hpp"
@@ -70,6 +72,90 @@ bool has_key(const json& j, const std::string& key) {
   return false;
 }
 
+// The template split at a section {{#name}}...{{/name}}: (inside, the rest).
+std::pair<std::string, std::string> split_section(std::string_view t, const std::string& name) {
+  const std::string open = "{{#" + name + "}}", close = "{{/" + name + "}}";
+  const std::size_t a = t.find(open), b = t.find(close);
+  REQUIRE(a != std::string_view::npos);
+  REQUIRE(b != std::string_view::npos);
+  return {std::string(t.substr(a, b + close.size() - a)), std::string(t.substr(0, a)) + std::string(t.substr(b + close.size()))};
+}
+
+// The output directory of a porous plate's run, written by hand with the
+// files a frost run leaves: a 24 x 24 lattice (10 µm spacing) with three
+// pores, two snapshots in field.pvd whose particles carry temperature,
+// liquid fraction, damage, pore id and material; summary.json with the
+// pores (one frozen, one still freezing, one not started) and damage.csv.
+// Without `pores` the same directory of a plain PD plate. Returns the summary.
+json write_frost_output(const fs::path& out, bool pores) {
+  fs::create_directories(out);
+  const double s = 1e-5;
+  const int n = 24;
+  const json pore_list = json::parse(R"([
+    {"id": 0, "x": 6.0e-5, "y": 1.7e-4, "radius": 3.0e-5, "freezing_start": 0.0041, "freezing_end": 0.0093, "max_rim_damage": 0.63},
+    {"id": 1, "x": 1.7e-4, "y": 7.0e-5, "radius": 4.0e-5, "freezing_start": 0.006, "freezing_end": null, "max_rim_damage": 0.2},
+    {"id": 2, "x": 1.8e-4, "y": 1.9e-4, "radius": 2.0e-5, "freezing_start": null, "freezing_end": null, "max_rim_damage": 0.0}])");
+  const std::vector<double> times{0.005, 0.01};
+  std::vector<io::PvdEntry> pvd;
+  for (std::size_t k = 0; k < times.size(); ++k) {
+    io::PointCloudFrame f;
+    std::vector<double> T, lf, damage, pore_id, material, volume, boundary, u;
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) {
+        const double x = (i + 0.5) * s, y = (j + 0.5) * s;
+        int pore = -1;
+        double rim = 1.0;  // distance beyond pore 0's rim, in spacings
+        for (std::size_t p = 0; p < pore_list.size(); ++p) {
+          const auto& q = pore_list[p];
+          const double r = std::hypot(x - q["x"].get<double>(), y - q["y"].get<double>()) - q["radius"].get<double>();
+          if (r <= 0.0) pore = int(p);
+          if (p == 0) rim = r / s;
+        }
+        const bool ice = pore == 0 && k == 1;  // pore 0 frozen at the second snapshot
+        f.points.push_back({x, y, 0.0});
+        T.push_back(2.0 - 400.0 * times[k] * y / (n * s));
+        lf.push_back(pore < 0 ? 1.0 : (ice ? 0.0 : 1.0));
+        damage.push_back(k == 1 && rim > 0 && rim < 2 ? 0.5 : 0.0);
+        pore_id.push_back(pore);
+        material.push_back(pore < 0 ? 0 : (ice ? 2 : 1));
+        volume.push_back(s * s);
+        boundary.push_back(-1);
+        u.insert(u.end(), {1e-9 * i, 0.0, 0.0});
+      }
+    f.fields = {{"temperature", T},   {"liquid_fraction", lf}, {"damage", damage},    {"pore_id", pore_id},
+                {"material", material}, {"volume", volume},      {"boundary", boundary}};
+    f.vectors = {{"displacement", u}};
+    const std::string file = fmt::format("field_{:04d}.vtu", k + 1);
+    io::write_vtu(out / file, f);
+    pvd.push_back({times[k], file});
+  }
+  io::write_pvd(out / "field.pvd", pvd);
+  json summary = {{"project", "porous plate by hand"},
+                  {"frostwall_version", "test"},
+                  {"front", json::array()},
+                  {"run", {{"time_unit", "s"}, {"spacing", s}, {"smoothing_length", 1.3 * s}, {"kernel", "wendland_c2"}}}};
+  if (pores) {
+    summary["pores"] = pore_list;
+    summary["all_pores_frozen"] = nullptr;
+    summary["damage"] = json::array();
+    for (double t : times)
+      summary["damage"].push_back({{"time", t}, {"broken_bond_share", 0.01}, {"largest_damage", 0.5}, {"damaged_area", 1e-11}});
+    std::ofstream csv(out / "damage.csv");
+    csv << "time,broken_bond_share,largest_damage,damaged_area\n";
+    for (int r = 0; r <= 9; ++r) csv << fmt::format("{},{},{},{}\n", 0.001 * (r + 1), 0.002 * r, 0.08 * r, 1e-12 * r);
+  }
+  std::ofstream(out / "summary.json") << summary.dump(1);
+  return summary;
+}
+
+// The coordinate pairs of the first data polyline of a chart.
+std::size_t polyline_points(const std::string& svg) {
+  const std::size_t line = svg.find("<polyline stroke=");
+  if (line == std::string::npos) return 0;
+  const std::size_t a = svg.find("points=\"", line) + 8, b = svg.find('"', a);
+  return test::count(svg.substr(a, b - a), ",");
+}
+
 }  // namespace
 
 TEST_CASE("The report of a shaft run fills every placeholder, loads nothing and balances its tags", "[report]") {
@@ -79,9 +165,11 @@ TEST_CASE("The report of a shaft run fills every placeholder, loads nothing and 
   REQUIRE(fs::exists(out / "report.html"));
   REQUIRE(fs::exists(out / "project.json"));
 
-  // Every name the template uses is in the view (else it would render empty).
+  // Every name the template uses is in the view (else it would render
+  // empty); the frost damage section's own names are checked on a porous
+  // plate's view.
   const json view = report::report_view(out);
-  for (const auto& name : report::template_names(report::templates::report_html)) {
+  for (const auto& name : report::template_names(split_section(report::templates::report_html, "has_frost").second)) {
     INFO(name);
     CHECK(has_key(view, name));
   }
@@ -257,4 +345,119 @@ TEST_CASE("The report of a PD plate run has displacement and damage maps", "[rep
   CHECK(html.find("|displacement| (µm)") != std::string::npos);
   CHECK(html.find("Sensors: displacement along x") != std::string::npos);
   CHECK(html.find("Sensors: damage") != std::string::npos);
+}
+
+// A porous plate's report gets a frost damage section: per snapshot the
+// temperature, material and damage maps side by side, one freezing bar per
+// pore (open when unfinished, a note when never started, a marker when all
+// froze), the damage over time from damage.csv and a table of the pores. A
+// run without pores has no such section.
+TEST_CASE("The report of a porous plate has a frost damage section", "[report][frost]") {
+  test::TempDir dir("frostwall-report-frost");
+  const fs::path out = dir.path / "out";
+  json summary = write_frost_output(out, true);
+  const auto& pores = summary["pores"];
+  const std::size_t snapshots = 2, rows = report::read_csv(out / "damage.csv").rows();
+  std::size_t open = 0, never = 0;
+  for (const auto& p : pores) {
+    open += p["freezing_start"].is_number() && p["freezing_end"].is_null();
+    never += p["freezing_start"].is_null();
+  }
+  REQUIRE(open > 0);
+  REQUIRE(never > 0);
+
+  json view = report::report_view(out);
+  CHECK(view["has_frost"] == true);
+  for (const auto& name : report::template_names(split_section(report::templates::report_html, "has_frost").first)) {
+    INFO(name);
+    CHECK(has_key(view, name));
+  }
+  REQUIRE(view["frost_snapshots"].size() == snapshots);
+  for (const auto& s : view["frost_snapshots"]) CHECK(s["maps"].size() == 3);  // temperature, material, damage
+  REQUIRE(view["pore_rows"].size() == pores.size());
+  for (std::size_t k = 0; k < pores.size(); ++k) {
+    CHECK(view["pore_rows"][k]["pore"] == pores[k]["id"].dump());  // in the order listed
+    CHECK(view["pore_rows"][k]["radius"] == report::tick_label(1e6 * pores[k]["radius"].get<double>(), 1));
+  }
+  // One bar per pore, labelled by its id; no marker while not all froze.
+  const std::string bars = view["pore_bars_svg"];
+  CHECK(test::count(bars, "<g class=\"bar") == pores.size());
+  CHECK(test::count(bars, "<g class=\"bar open\"") == open);
+  CHECK(test::count(bars, "<g class=\"bar never\"") == never);
+  for (const auto& p : pores) CHECK(bars.find(">pore " + p["id"].dump() + "<") != std::string::npos);
+  CHECK(bars.find("all pores frozen") == std::string::npos);
+  CHECK(test::html_balance_problem(bars) == "");
+  // Broken bonds and largest damage, every row of damage.csv a point.
+  REQUIRE(view["frost_charts"].size() == 2);
+  for (const auto& c : view["frost_charts"]) CHECK(polyline_points(c["svg"].get<std::string>()) == rows);
+
+  const std::string html = report::render_report(out);
+  CHECK(test::html_balance_problem(html) == "");
+  CHECK(test::external_references(html).empty());
+  CHECK(html.find("<h2>Frost damage</h2>") != std::string::npos);
+  CHECK(test::count(html, "<img src=\"data:image/png;base64,") == 3 * snapshots);
+  CHECK(test::count(html, "alt=\"material map") == snapshots);
+  CHECK(html.find("href=\"damage.csv\"") != std::string::npos);
+
+  // Once every pore froze: closed bars only and a marker where the last one did.
+  double last = 0.0;
+  for (auto& p : summary["pores"]) {
+    if (p["freezing_start"].is_null()) p["freezing_start"] = 0.002;
+    if (p["freezing_end"].is_null()) p["freezing_end"] = 0.0098;
+    last = std::max(last, p["freezing_end"].get<double>());
+  }
+  summary["all_pores_frozen"] = last;
+  std::ofstream(out / "summary.json") << summary.dump(1);
+  view = report::report_view(out);
+  const std::string closed = view["pore_bars_svg"];
+  CHECK(test::count(closed, "<g class=\"bar\"") == pores.size());
+  CHECK(closed.find(">all pores frozen<") != std::string::npos);
+  for (const auto& c : view["frost_charts"]) CHECK(c["svg"].get<std::string>().find(">all pores frozen<") != std::string::npos);
+
+  // The same plate without pores: no such section.
+  const fs::path plain = dir.path / "plain";
+  write_frost_output(plain, false);
+  view = report::report_view(plain);
+  CHECK(view["has_frost"] == false);
+  CHECK(view["pore_rows"].empty());
+  const std::string plain_html = report::render_report(plain);
+  CHECK(plain_html.find("Frost damage") == std::string::npos);
+  CHECK(plain_html.find("id=\"frost\"") == std::string::npos);
+  CHECK(test::html_balance_problem(plain_html) == "");
+}
+
+// The material map does not blend categories: every painted pixel has one
+// of the materials' colours (a kernel average would mix them at a rim).
+TEST_CASE("A category map paints each pixel with its nearest particle's colour", "[report][map]") {
+  report::FieldSnapshot lattice;
+  const double s = 0.1;
+  std::vector<std::array<std::uint8_t, 3>> colours;
+  const std::array<std::array<std::uint8_t, 3>, 2> palette{{{200, 0, 0}, {0, 0, 200}}};
+  for (int j = 0; j < 10; ++j)
+    for (int i = 0; i < 10; ++i) {
+      lattice.position.emplace_back((i + 0.5) * s, (j + 0.5) * s);
+      lattice.volume.push_back(s * s);
+      lattice.boundary.push_back(-1);
+      lattice.temperature.push_back(0.0);
+      colours.push_back(palette[std::hypot((i + 0.5) * s - 0.5, (j + 0.5) * s - 0.5) < 0.3 ? 1 : 0]);
+    }
+  report::MapWindow window;
+  window.size = 1.0;
+  window.pixels = 50;
+  const report::FieldMap map(lattice, report::WedgeSymmetry{}, "wendland_c2", 1.3 * s, s, window, 0.0);
+  const auto image = map.nearest_raster(colours);
+  std::size_t painted = 0, inner = 0, blended = 0;
+  for (std::size_t k = 0; k < image.pixels.size(); k += 4) {
+    const std::array<std::uint8_t, 3> c{image.pixels[k], image.pixels[k + 1], image.pixels[k + 2]};
+    if (image.pixels[k + 3] == 0) continue;
+    ++painted;
+    inner += c == palette[1];
+    blended += c != palette[0] && c != palette[1];
+  }
+  CHECK(blended == 0);
+  CHECK(painted == image.pixels.size() / 4);  // the lattice covers the window
+  // The inner disc's particles own their share of the pixels (a quarter each: 10 x 10 particles, 50 x 50 pixels).
+  std::size_t disc = 0;
+  for (const auto& c : colours) disc += c == palette[1];
+  CHECK(inner == 25 * disc);
 }

@@ -53,10 +53,16 @@ std::string material_legend_svg() {
   return o + R"(<text x="170" y="54" text-anchor="middle" fill="#222">material</text></svg>)";
 }
 
-// An area in m2 (per metre of depth) in µm2 or mm2, whichever reads better.
-std::string area_text(double a) {
+// An area in m2 (per metre of depth) in µm2 or mm2, whichever reads
+// better, with its share of the plate when the plate is known.
+std::string area_text(double a, const RunRecord& run) {
   if (!std::isfinite(a)) return "–";
-  return a < 1e-6 ? fmt::format("{:.3g} µm²", 1e12 * a) : fmt::format("{:.3g} mm²", 1e6 * a);
+  const double v = a < 1e-6 ? 1e12 * a : 1e6 * a;
+  std::string o = fmt::format("{} {}", v >= 1000 ? fmt::format("{:.0f}", v) : fmt::format("{:.3g}", v), a < 1e-6 ? "µm²" : "mm²");
+  if (run.project)
+    if (const auto* r = std::get_if<project::Rectangle>(&run.project->geometry); r && r->width * r->height > 0)
+      o += fmt::format(", {:.3g} % of the plate", 100.0 * a / (r->width * r->height));
+  return o;
 }
 
 struct DamageSeries {
@@ -101,7 +107,7 @@ void add_frost_maps(const RunRecord& run, const std::string& unit, json& view) {
     view["frost_maps_note"] = "No snapshots with the pores' material in this directory (output.vtk off?), so no maps.";
     return;
   }
-  const auto& facts = run.summary["run"];
+  const json facts = run.summary.value("run", json::object());
   const auto& first = snapshots.front().second.particles;
   const double spacing = facts.value("spacing", 0.0), h = facts.value("smoothing_length", 1.3 * spacing);
   // A square window over the plate (its particles' extent).
@@ -220,14 +226,16 @@ void add_frost(const RunRecord& run, json& view) {
       "freezing at the end of the run ({} {}).",
       std::isfinite(all_frozen) ? "; dashed: all pores frozen" : "", time_text(end), unit);
 
-  // Damage over time.
+  // Damage over time (none without mechanics).
   const std::string source = d.source == "damage.csv" ? "damage.csv, one point per mechanical equilibrium"
                                                       : "summary.json, one point per snapshot";
-  view["frost_charts"] = json::array(
-      {{{"id", "frost-broken-bonds"}, {"title", "Broken bonds"}, {"svg", render_svg(damage_chart(d, true, all_frozen, unit))},
-        {"caption", "Broken bonds as a share of all bonds of the plate (" + source + ")."}},
-       {{"id", "frost-largest-damage"}, {"title", "Largest damage"}, {"svg", render_svg(damage_chart(d, false, all_frozen, unit))},
-        {"caption", "The largest damage of any particle, its share of broken bonds (" + source + ")."}}});
+  if (!d.time.empty())
+    view["frost_charts"] = json::array(
+        {{{"id", "frost-broken-bonds"}, {"title", "Broken bonds"}, {"svg", render_svg(damage_chart(d, true, all_frozen, unit))},
+          {"caption", "Broken bonds as a share of all bonds of the plate (" + source + ")."}},
+         {{"id", "frost-largest-damage"}, {"title", "Largest damage"},
+          {"svg", render_svg(damage_chart(d, false, all_frozen, unit))},
+          {"caption", "The largest damage of any particle, its share of broken bonds (" + source + ")."}}});
 
   std::string note = fmt::format("{} water-filled pores; ", pores.size());
   if (std::isfinite(all_frozen)) note += fmt::format("all frozen at {} {}", time_text(all_frozen), unit);
@@ -235,9 +243,9 @@ void add_frost(const RunRecord& run, json& view) {
   if (std::isfinite(first_start)) note += fmt::format(" (the first ice at {} {})", time_text(first_start), unit);
   note += ".";
   if (!d.time.empty())
-    note += fmt::format(" At {} {}: {} % of the bonds broken, largest damage {}, damaged area (damage above 0.4) {}.",
-                        time_text(d.time.back()), unit, fmt::format("{:.3g}", 100.0 * d.broken_share.back()), number(d.largest.back(), 2),
-                        area_text(d.area.back()));
+    note += fmt::format(" At {} {}: {:.3g} % of the bonds broken, largest damage {}, damaged area (damage above 0.4) {}.",
+                        time_text(d.time.back()), unit, 100.0 * d.broken_share.back(), number(d.largest.back(), 2),
+                        area_text(d.area.back(), run));
   view["frost_note"] = note;
   add_frost_maps(run, unit, view);
 }
