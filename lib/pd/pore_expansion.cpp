@@ -27,23 +27,17 @@ std::vector<double> PoreExpansion::frozen_fraction(const std::vector<double>& f,
   return ice;
 }
 
-bool PoreExpansion::follow(const PdSolid& solid, const std::vector<double>& dT, std::vector<double>& u,
-                           double significant) {
-  if (!rim_displacement()) return false;
+void PoreExpansion::shape(const PdSolid& solid, const std::vector<double>& dT, std::vector<double>& u) {
+  if (!rim_displacement()) return;
   const auto& x = solid.position();
   const double kT = solid.law().thermal_stretch_per_K;
-  std::vector<Vec2> mean(pores_.size(), Vec2::Zero());
   std::vector<double> dT_mean(pores_.size(), 0.0), count(pores_.size(), 0.0);
-  for (std::size_t p = 0; p < pores_.size(); ++p) {
-    for (std::size_t i : ring_[p]) mean[p] += Vec2(u[2 * i], u[2 * i + 1]);
-    if (!ring_[p].empty()) mean[p] /= double(ring_[p].size());
-  }
   for (std::size_t i = 0; i < pore_of_.size(); ++i)
     if (pore_of_[i] >= 0) {
       dT_mean[pore_of_[i]] += dT[i];
       count[pore_of_[i]] += 1.0;
     }
-  double moved = 0.0;
+  shape_.resize(u.size(), 0.0);
   for (std::size_t i = 0; i < pore_of_.size(); ++i) {
     const int p = pore_of_[i];
     if (p < 0) continue;
@@ -54,28 +48,26 @@ bool PoreExpansion::follow(const PdSolid& solid, const std::vector<double>& dT, 
     // u_a R / r, radial; u_a R / (R/2) towards the centre (no bond from
     // the matrix reaches that deep unless the pore is tiny).
     const Vec2 radial = r > 0.0 ? Vec2(d * (ua * R / std::max(r, 0.5 * R) / r)) : Vec2(Vec2::Zero());
-    const Vec2 target = mean[p] + kT * (dT_mean[p] / std::max(count[p], 1.0)) * d + radial;
-    moved = std::max(moved, (target - Vec2(u[2 * i], u[2 * i + 1])).norm());
-    u[2 * i] = target[0];
-    u[2 * i + 1] = target[1];
+    const Vec2 w = kT * (dT_mean[p] / std::max(count[p], 1.0)) * d + radial;
+    // The pore keeps its translation (u - the old shape) and takes the new shape.
+    for (int k = 0; k < 2; ++k) {
+      u[2 * i + k] += w[k] - shape_[2 * i + k];
+      shape_[2 * i + k] = w[k];
+    }
   }
-  return moved > significant;
 }
 
 void PoreExpansion::prepare(PdSolid& solid) {
-  ring_.assign(pores_.size(), {});
-  const auto& x = solid.position();
-  for (std::size_t i = 0; i < pore_of_.size(); ++i) {
-    if (pore_of_[i] >= 0) continue;
-    for (std::size_t p = 0; p < pores_.size(); ++p) {
-      const double d = std::hypot(x[i][0] - pores_[p].x, x[i][1] - pores_[p].y) - pores_[p].radius;
-      if (d >= 0.0 && d <= solid.law().horizon) ring_[p].push_back(i);
-    }
-  }
   if (rim_displacement()) {
     std::vector<std::uint8_t> held(pore_of_.size(), 0);
-    for (std::size_t i = 0; i < held.size(); ++i) held[i] = pore_of_[i] >= 0;
+    std::vector<std::vector<std::size_t>> groups(pores_.size());
+    for (std::size_t i = 0; i < held.size(); ++i)
+      if (pore_of_[i] >= 0) {
+        held[i] = 1;
+        groups[pore_of_[i]].push_back(i);
+      }
     solid.set_held(std::move(held));
+    solid.set_groups(std::move(groups));
   }
 }
 
@@ -85,6 +77,11 @@ void PoreExpansion::apply(PdSolid& solid, const std::vector<double>& f, const st
     const std::vector<double> F = frozen_fraction(f, volume);
     rim_u_.resize(pores_.size());
     for (std::size_t p = 0; p < pores_.size(); ++p) rim_u_[p] = pores_[p].radius * free_strain(F[p]);
+    // A pore is a hole until it starts to freeze, then the loading device.
+    std::vector<double> ratio(pore_of_.size(), 1.0);
+    for (std::size_t i = 0; i < pore_of_.size(); ++i)
+      if (pore_of_[i] >= 0 && F[pore_of_[i]] <= 0.0) ratio[i] = 0.0;
+    solid.set_stiffness_ratio(ratio);
     return;
   }
   std::vector<double> ratio(pore_of_.size(), 1.0), eigen(pore_of_.size(), 0.0);

@@ -7,9 +7,10 @@
 //    elastic field's continuation u_a R / r (the displacement an
 //    infinite plate around a pushed hole has), so the matrix's bonds into
 //    the pore see what a continuum's rim would. The pore is no anchor:
-//    the held field rides on the mean displacement of the matrix ring
-//    around it (a horizon deep) plus the matrix's free thermal strain at
-//    the pore's mean temperature, updated as the relaxation goes (follow).
+//    the held field is that push plus the matrix's free thermal strain at
+//    the pore's mean temperature, on top of the pore's rigid translation,
+//    which the relaxation finds (the pore's particles are one rigid group).
+//    Until it starts to freeze a pore is a hole (no bonds into it).
 //  - ice_eigenstrain: each pore particle is ice to its frozen fraction
 //    phi = 1 - f: stiffness E_ice phi (water carries no bonds) and a free
 //    areal strain sqrt(1 + dV phi) - 1 (a 2-D model takes the volume
@@ -41,9 +42,13 @@ class PoreExpansion {
   // the ice's stiffness and eigenstrain into the solid.
   void apply(PdSolid& solid, const std::vector<double>& liquid_fraction, const std::vector<double>& volume,
              std::vector<double>& u);
-  // rim_displacement: moves each pore's held field with its ring; true
-  // when some held displacement moved by more than `significant` (m).
-  bool follow(const PdSolid& solid, const std::vector<double>& dT, std::vector<double>& u, double significant);
+  // rim_displacement: sets each pore's held field (the radial push and
+  // the matrix's free thermal strain at the pore's mean temperature
+  // change dT) on top of the translation the pore has.
+  void shape(const PdSolid& solid, const std::vector<double>& dT, std::vector<double>& u);
+  // The held field last set (2 per particle), to go back between loads.
+  const std::vector<double>& shape_field() const { return shape_; }
+  void set_shape_field(std::vector<double> field) { shape_ = std::move(field); }
   // The largest rim push u_a now, m (rim_displacement).
   double largest_push() const {
     double largest = 0.0;
@@ -57,7 +62,7 @@ class PoreExpansion {
   double ice_ratio_;  // E_ice / E_matrix
   std::vector<project::Pore> pores_;
   std::vector<int> pore_of_;
-  std::vector<std::vector<std::size_t>> ring_;  // matrix particles within a horizon outside each rim
+  std::vector<double> shape_;                   // the held field last set, 2 per particle
   std::vector<double> rim_u_;                   // u_a of each pore at the last apply
 };
 

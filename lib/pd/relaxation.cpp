@@ -56,6 +56,13 @@ RelaxationResult relax_adjusting(PdSolid& solid, std::vector<double>& u, const s
     result.converged = true;
     return result;
   }
+  // Rigid groups (held particles that move together: a pore riding on
+  // the plate) are one degree of freedom per axis each: the sum of their
+  // members' forces over the sum of their lambdas.
+  const auto& groups = solid.groups();
+  std::vector<double> group_lambda(groups.size(), 0.0), vg(2 * groups.size(), 0.0);
+  for (std::size_t g = 0; g < groups.size(); ++g)
+    for (std::size_t i : groups[g]) group_lambda[g] += lambda[2 * i];
   double c = 0.0;
   for (int it = 0; it < max_iterations; ++it) {
     // First step: v(1/2) = F / (2 lambda).
@@ -64,6 +71,16 @@ RelaxationResult relax_adjusting(PdSolid& solid, std::vector<double>& u, const s
       v[k] = it == 0 ? 0.5 * F[k] * inv_lambda[k] : ((2.0 - c_now) * v[k] + 2.0 * F[k] * inv_lambda[k]) / (2.0 + c_now);
       u[k] += v[k];
     });
+    for (std::size_t g = 0; g < groups.size(); ++g) {
+      if (group_lambda[g] == 0.0) continue;
+      for (int d = 0; d < 2; ++d) {
+        double Fg = 0.0;
+        for (std::size_t i : groups[g]) Fg += F[2 * i + d];
+        double& w = vg[2 * g + d];
+        w = it == 0 ? 0.5 * Fg / group_lambda[g] : ((2.0 - c_now) * w + 2.0 * Fg / group_lambda[g]) / (2.0 + c_now);
+        for (std::size_t i : groups[g]) u[2 * i + d] += w;
+      }
+    }
     F_old.swap(F);
     forces(F);
     // One pass: the damping's u.K u and u.u from the local stiffness of

@@ -304,6 +304,16 @@ std::size_t PdSolid::cut(const Vec2& a, const Vec2& b) {
   return broken;
 }
 
+std::vector<double> PdSolid::breakable_stretches(const std::vector<double>& u, const std::vector<double>& dT) const {
+  std::vector<double> s(column_.size(), -std::numeric_limits<double>::infinity());
+  particles::for_each_particle(n_, [&](std::size_t i) {
+    if (held(i)) return;
+    for (std::size_t e = start_[i]; e < start_[i + 1]; ++e)
+      if (intact_[e] && weight_[e] != 0.0 && !held(source(column_[e]))) s[e] = mechanical_stretch(i, e, u, dT);
+  });
+  return s;
+}
+
 double PdSolid::largest_stretch(const std::vector<double>& u, const std::vector<double>& dT) const {
   double largest = -std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < n_; ++i)

@@ -77,6 +77,9 @@ class PdSolid {
   // A pre-crack: breaks every bond whose reference segment crosses the
   // segment a-b; returns how many.
   std::size_t cut(const Vec2& a, const Vec2& b);
+  // s - s_T of every bond that can break (intact, bonded, not held), -inf
+  // for the others: where a load step will first break one (MechanicsRun).
+  std::vector<double> breakable_stretches(const std::vector<double>& u, const std::vector<double>& dT) const;
   // The largest mechanical stretch s - s_T over the intact bonds.
   double largest_stretch(const std::vector<double>& u, const std::vector<double>& dT) const;
   // Share of broken bonds of each free particle, weighted by volume (bonds
@@ -104,6 +107,10 @@ class PdSolid {
   // leaves them): a loading device, so their bonds never break.
   void set_held(std::vector<std::uint8_t> held) { held_ = std::move(held); }
   bool held(std::size_t i) const { return !held_.empty() && held_[i]; }
+  // Held particles that move together, rigidly, under the sum of their
+  // forces (the relaxation gives each group one degree of freedom per axis).
+  void set_groups(std::vector<std::vector<std::size_t>> groups) { groups_ = std::move(groups); }
+  const std::vector<std::vector<std::size_t>>& groups() const { return groups_; }
   // Whether the relaxation moves free particle i: not held and bonded.
   bool moves(std::size_t i) const { return (held_.empty() || !held_[i]) && stiffness_[i] > 0.0; }
   // Intact bonds of each free particle (its own row), and in all.
@@ -150,6 +157,7 @@ class PdSolid {
   std::vector<double> matrix_weight_;   // weight_ of the matrix material (set_stiffness_ratio scales it)
   std::vector<double> eigen_;           // per free particle; empty: none
   std::vector<std::uint8_t> held_;      // per free particle; empty: none
+  std::vector<std::vector<std::size_t>> groups_;
   std::vector<double> xi_;              // reference bond vector x_j - x_i, 2 per bond
   std::vector<double> stiffness3_;      // w / |xi|^3 (linear kinematics; 0 once broken)
   bool linear_ = true;

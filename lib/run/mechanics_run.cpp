@@ -49,32 +49,75 @@ void MechanicsRun::update(const thermal::ThermalModel& model, double t, bool for
   const bool freezing = froze >= mechanics_.frozen_fraction_change;
   if (!force && moved < threshold && !freezing) return;
   if (moved == 0.0 && froze == 0.0 && relaxations_ > 0) return;
-  if (pores_) {
-    f_equilibrium_.assign(f.begin(), f.begin() + dT_.size());
-    pores_->apply(*solid_, f_equilibrium_, model.volume(), u_);
-  }
   t_equilibrium_ = t;
+  // The load at the last equilibrium (0) and now (1); in between it is
+  // linear, and so, with linear kinematics and no bond breaking, is the
+  // response.
+  const std::vector<double> dT0 = dT_, f0 = f_equilibrium_, u0 = u_;
+  std::vector<double> dT1(dT_.size()), f_load = f0;
   for (std::size_t i = 0; i < dT_.size(); ++i) {
-    dT_[i] = T[i] - mechanics_.material.reference_temperature;
+    dT1[i] = T[i] - mechanics_.material.reference_temperature;
     T_equilibrium_[i] = T[i];
   }
+  if (pores_) f_equilibrium_.assign(f.begin(), f.begin() + dT_.size());
+  auto set_load = [&](double lambda) {
+    for (std::size_t i = 0; i < dT_.size(); ++i) dT_[i] = dT0[i] + lambda * (dT1[i] - dT0[i]);
+    if (!pores_) return;
+    for (std::size_t i = 0; i < f_load.size(); ++i) f_load[i] = f0[i] + lambda * (f_equilibrium_[i] - f0[i]);
+    pores_->apply(*solid_, f_load, model.volume(), u_);
+    pores_->shape(*solid_, dT_, u_);
+  };
   std::vector<std::pair<std::uint32_t, std::uint32_t>> ends;
-  // Pores ride on their rings to within 1e-4 of the largest rim push.
-  const double significant = 1e-4 * std::max(pores_ ? pores_->largest_push() : 0.0, 1e-12);
   auto adjust = [&] {
     ends.clear();
-    const std::size_t broke = solid_->break_bonds(u_, dT_, thermal_ ? &ends : nullptr);
+    const std::size_t broke = solid_->break_bonds(u_, dT_, &ends);
     if (thermal_) insulated_ += thermal_->cut_pairs(ends);
+    if (first_damage_.empty() && !ends.empty()) {  // where damage starts
+      first_damage_time_ = t;
+      for (const auto& [i, j] : ends) first_damage_.push_back(0.5 * (solid_->position()[i] + solid_->position()[j]));
+    }
     broken_ += broke;
-    const bool moved = pores_ && pores_->follow(*solid_, dT_, u_, significant);
-    return broke > 0 || moved;
+    return broke > 0;
   };
-  if (pores_) pores_->follow(*solid_, dT_, u_, significant);
-  const auto r = pd::relax_adjusting(*solid_, u_, dT_, mechanics_.tolerance, mechanics_.max_iterations, adjust);
-  ++relaxations_;
-  iterations_ += r.iterations;
-  largest_ = std::max(largest_, r.iterations);
-  if (!r.converged) ++unconverged_;
+  auto relax = [&](bool breaking) {
+    const auto r = pd::relax_adjusting(*solid_, u_, dT_, mechanics_.tolerance, mechanics_.max_iterations,
+                                       breaking ? std::function<bool()>(adjust) : std::function<bool()>());
+    ++relaxations_;
+    iterations_ += r.iterations;
+    largest_ = std::max(largest_, r.iterations);
+    if (!r.converged) ++unconverged_;
+  };
+  const double critical = solid_->law().critical_stretch;
+  if (!std::isfinite(critical) || relaxations_ == 0) {
+    set_load(1.0);
+    relax(true);
+  } else {
+    // Where the step first breaks a bond: the equilibrium at the full
+    // load without breaking, then back along the line to the first bond's
+    // critical stretch, so damage starts where it would under a slowly
+    // growing load, not wherever one coarse step overshoots.
+    const std::vector<double> s0 = solid_->breakable_stretches(u_, dT_);
+    const std::vector<double> shape0 = pores_ ? pores_->shape_field() : std::vector<double>();
+    set_load(1.0);
+    relax(false);
+    const std::vector<double> s1 = solid_->breakable_stretches(u_, dT_);
+    double first = 1.0;
+    for (std::size_t e = 0; e < s1.size(); ++e)
+      if (s1[e] > critical && std::isfinite(s0[e])) first = std::min(first, s0[e] >= critical ? 0.0 : (critical - s0[e]) / (s1[e] - s0[e]));
+    if (first < 1.0) {
+      const double lambda = std::min(1.0, first * (1.0 + 1e-6) + 1e-9);
+      for (std::size_t k = 0; k < u_.size(); ++k) u_[k] = u0[k] + lambda * (u_[k] - u0[k]);
+      if (pores_) {
+        std::vector<double> shape = pores_->shape_field();
+        for (std::size_t k = 0; k < shape.size() && k < shape0.size(); ++k) shape[k] = shape0[k] + lambda * (shape[k] - shape0[k]);
+        pores_->set_shape_field(std::move(shape));
+      }
+      set_load(lambda);
+      relax(true);
+      set_load(1.0);
+    }
+    relax(true);
+  }
   if (after_equilibrium) after_equilibrium(t);
 }
 
@@ -82,6 +125,8 @@ nlohmann::json MechanicsRun::facts() const {
   double largest_u = 0.0;
   for (std::size_t i = 0; 2 * i < u_.size(); ++i) largest_u = std::max(largest_u, std::hypot(u_[2 * i], u_[2 * i + 1]));
   const auto& law = solid_->law();
+  pd::Vec2 onset = pd::Vec2::Zero();
+  for (const auto& x : first_damage_) onset += x / double(first_damage_.size());
   return {{"bonds", solid_->bonds()},
           {"horizon", law.horizon},
           {"micromodulus", law.micromodulus},
@@ -91,6 +136,7 @@ nlohmann::json MechanicsRun::facts() const {
           {"longest_relaxation", largest_},
           {"unconverged_relaxations", unconverged_},
           {"broken_bonds", broken_},
+          {"first_damage", first_damage_.empty() ? nlohmann::json(nullptr) : nlohmann::json{{"time", first_damage_time_}, {"x", onset[0]}, {"y", onset[1]}, {"bonds", first_damage_.size()}}},
           {"thermal_pairs_cut", insulated_},
           {"largest_displacement", largest_u}};
 }

@@ -39,6 +39,10 @@ class MechanicsRun {
   nlohmann::json facts() const;
   // Called after every equilibrium (time, s): the damage record follows.
   std::function<void(double)> after_equilibrium;
+  // The midpoints of the first bonds to break (between free particles),
+  // and when (s): where damage started.
+  const std::vector<pd::Vec2>& first_damage() const { return first_damage_; }
+  double first_damage_time() const { return first_damage_time_; }
   // Time of the last equilibrium, s.
   double equilibrium_time() const { return t_equilibrium_; }
 
@@ -48,6 +52,8 @@ class MechanicsRun {
   std::optional<pd::PoreExpansion> pores_;
   std::vector<double> f_equilibrium_;
   double t_equilibrium_ = 0.0;
+  std::vector<pd::Vec2> first_damage_;
+  double first_damage_time_ = 0.0;
   thermal::ThermalModel* thermal_ = nullptr;
   std::vector<double> u_, dT_, T_equilibrium_;
   std::size_t relaxations_ = 0, iterations_ = 0, unconverged_ = 0, broken_ = 0, insulated_ = 0;
