@@ -114,14 +114,16 @@ TEST_CASE("the shipped mortar plate's pores start to freeze in the order of thei
 }
 
 TEST_CASE("the shipped mortar plate, coarse: every pore freezes in depth order and damage gathers at the pores", "[frost][long]") {
-  const auto p = test::shipped_project("mortar_frost.json", {{"numerics", {{"spacing", 3e-6}}},
+  // 5 um: about two minutes on two cores. (Fails today: 45 % of the broken
+  // bonds lie within a pore radius of a rim at this spacing; README.)
+  const auto p = test::shipped_project("mortar_frost.json", {{"numerics", {{"spacing", 5e-6}}},
                                                              {"time", {{"end", 0.07}, {"snapshots", {0.07}}}}});
   const auto r = run_frost(p);
   const auto& rect = std::get<project::Rectangle>(p.geometry);
   for (std::size_t a = 0; a < rect.pores.size(); ++a) {
     REQUIRE(r.frost->freezing_end()[a]);
     for (std::size_t b = 0; b < rect.pores.size(); ++b)
-      if (depth(rect.pores[a], rect.width, rect.height) + 3e-6 < depth(rect.pores[b], rect.width, rect.height))
+      if (depth(rect.pores[a], rect.width, rect.height) + 5e-6 < depth(rect.pores[b], rect.width, rect.height))
         CHECK(*r.frost->freezing_start()[a] < *r.frost->freezing_start()[b]);
   }
   const auto near = r.frost->broken_near_rims();

@@ -265,24 +265,36 @@ void PdSolid::forces_linear(const std::vector<double>& u_all, const std::vector<
 std::size_t PdSolid::break_bonds(const std::vector<double>& u, const std::vector<double>& dT,
                                  std::vector<std::pair<std::uint32_t, std::uint32_t>>* newly_broken) {
   if (!std::isfinite(law_.critical_stretch)) return 0;
-  std::size_t broken = 0;
-  for (std::size_t i = 0; i < n_; ++i) {
-    const std::size_t before = broken;
+  // Rows in parallel (each touches only its own bonds), then the ends in
+  // row order, so the list does not depend on the threads.
+  std::vector<std::uint32_t> row_broken(n_, 0);
+  particles::for_each_particle(n_, [&](std::size_t i) {
+    if (held(i)) return;
+    std::uint32_t count = 0;
     for (std::size_t e = start_[i]; e < start_[i + 1]; ++e)
       // The mechanical stretch: free thermal expansion breaks nothing. A
       // bond without stiffness (to liquid water) or to a held particle
       // carries nothing to break.
-      if (intact_[e] && weight_[e] != 0.0 && !held(i) && !held(source(column_[e])) &&
+      if (intact_[e] && weight_[e] != 0.0 && !held(source(column_[e])) &&
           mechanical_stretch(i, e, u, dT) > law_.critical_stretch) {
-        intact_[e] = 0;
+        intact_[e] = 2;  // broken now
         weight_[e] = stiffness3_[e] = 0.0;  // the force loops need no test
-        ++broken;
+        ++count;
+      }
+    if (count == 0) return;
+    row_broken[i] = count;
+    stiffness_[i] = 0.0;  // what the particle still feels
+    for (std::size_t e = start_[i]; e < start_[i + 1]; ++e) stiffness_[i] += weight_[e] / length_[e];
+  });
+  std::size_t broken = 0;
+  for (std::size_t i = 0; i < n_; ++i) {
+    if (row_broken[i] == 0) continue;
+    broken += row_broken[i];
+    for (std::size_t e = start_[i]; e < start_[i + 1]; ++e)
+      if (intact_[e] == 2) {
+        intact_[e] = 0;
         if (newly_broken && column_[e] < n_) newly_broken->emplace_back(static_cast<std::uint32_t>(i), column_[e]);
       }
-    if (broken != before) {  // what the particle still feels
-      stiffness_[i] = 0.0;
-      for (std::size_t e = start_[i]; e < start_[i + 1]; ++e) stiffness_[i] += weight_[e] / length_[e];
-    }
   }
   return broken;
 }
