@@ -17,6 +17,18 @@ std::vector<int> pore_membership(const std::vector<particles::Vec<2>>& position,
   return pore;
 }
 
+std::vector<double> pore_frozen_fraction(const std::vector<int>& pore_of, std::size_t pores,
+                                         const std::vector<double>& f, const std::vector<double>& volume) {
+  std::vector<double> ice(pores, 0.0), all(pores, 0.0);
+  for (std::size_t i = 0; i < pore_of.size(); ++i)
+    if (const int p = pore_of[i]; p >= 0) {
+      ice[p] += volume[i] * (1.0 - f[i]);
+      all[p] += volume[i];
+    }
+  for (std::size_t p = 0; p < pores; ++p) ice[p] = all[p] > 0.0 ? ice[p] / all[p] : 0.0;
+  return ice;
+}
+
 NearestRim nearest_rim(const particles::Vec<2>& x, const std::vector<project::Pore>& pores) {
   NearestRim nearest{std::numeric_limits<double>::infinity(), -1};
   for (std::size_t p = 0; p < pores.size(); ++p) {

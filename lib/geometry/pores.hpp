@@ -14,6 +14,11 @@ namespace frostwall::geometry {
 std::vector<int> pore_membership(const std::vector<particles::Vec<2>>& position, std::size_t n,
                                  const std::vector<project::Pore>& pores);
 
+// Each pore's frozen fraction: the volume-weighted mean of 1 - f over its
+// particles (pore_of from pore_membership; f and volume per particle).
+std::vector<double> pore_frozen_fraction(const std::vector<int>& pore_of, std::size_t pores,
+                                         const std::vector<double>& liquid_fraction, const std::vector<double>& volume);
+
 // Distance from x to the nearest pore rim (negative inside a pore), and
 // which pore; {inf, -1} without pores.
 struct NearestRim {

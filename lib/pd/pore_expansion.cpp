@@ -1,5 +1,7 @@
 #include "pd/pore_expansion.hpp"
 
+#include "geometry/pores.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -17,14 +19,7 @@ double PoreExpansion::free_strain(double phi) const {
 }
 
 std::vector<double> PoreExpansion::frozen_fraction(const std::vector<double>& f, const std::vector<double>& volume) const {
-  std::vector<double> ice(pores_.size(), 0.0), all(pores_.size(), 0.0);
-  for (std::size_t i = 0; i < pore_of_.size(); ++i)
-    if (pore_of_[i] >= 0) {
-      ice[pore_of_[i]] += volume[i] * (1.0 - f[i]);
-      all[pore_of_[i]] += volume[i];
-    }
-  for (std::size_t p = 0; p < ice.size(); ++p) ice[p] = all[p] > 0.0 ? ice[p] / all[p] : 0.0;
-  return ice;
+  return geometry::pore_frozen_fraction(pore_of_, pores_.size(), f, volume);
 }
 
 void PoreExpansion::shape(const PdSolid& solid, const std::vector<double>& dT, std::vector<double>& u) {

@@ -10,10 +10,10 @@ namespace frostwall::pd {
 
 RelaxationResult relax(const PdSolid& solid, std::vector<double>& u, const std::vector<double>& dT, double tolerance,
                        int max_iterations) {
-  return relax_adjusting(const_cast<PdSolid&>(solid), u, dT, tolerance, max_iterations, {}, 0);
+  return relax_adjusting(solid, u, dT, tolerance, max_iterations, {}, 0);
 }
 
-RelaxationResult relax_adjusting(PdSolid& solid, std::vector<double>& u, const std::vector<double>& dT,
+RelaxationResult relax_adjusting(const PdSolid& solid, std::vector<double>& u, const std::vector<double>& dT,
                                  double tolerance, int max_iterations, const std::function<bool()>& adjust,
                                  int check_every) {
   const std::size_t n = solid.size(), m = 2 * n;
@@ -37,7 +37,7 @@ RelaxationResult relax_adjusting(PdSolid& solid, std::vector<double>& u, const s
   RelaxationResult result;
   // The solid's changes; true when there were some (the thermal force,
   // which broken bonds no longer carry, is rebuilt).
-  auto broke = [&] {
+  auto changed = [&] {
     if (!adjust || !adjust()) return false;
     if (solid.linear()) solid.thermal_force(dT_all, thermal);
     for (std::size_t i = 0; i < n; ++i)
@@ -52,7 +52,7 @@ RelaxationResult relax_adjusting(PdSolid& solid, std::vector<double>& u, const s
   auto rms = [&](auto&& value) {
     return std::sqrt(particles::sum_over_particles(m, [&](std::size_t k) { return value(k) * value(k); }) / m);
   };
-  if (rms([&](std::size_t k) { return inv_lambda[k] > 0.0 ? F[k] : 0.0; }) <= 1e-14 * scale * horizon && !broke()) {
+  if (rms([&](std::size_t k) { return inv_lambda[k] > 0.0 ? F[k] : 0.0; }) <= 1e-14 * scale * horizon && !changed()) {
     result.converged = true;
     return result;
   }
@@ -98,7 +98,7 @@ RelaxationResult relax_adjusting(PdSolid& solid, std::vector<double>& u, const s
     const double du = std::sqrt(sums[2] / m), uu = std::sqrt(sums[1] / m), ff = std::sqrt(sums[3] / m);
     result.increment = uu > 0.0 ? du / uu : 0.0;
     const bool still = du <= tolerance * uu || ff <= 1e-14 * scale * horizon;
-    if ((still || (check_every > 0 && (it + 1) % check_every == 0)) && broke()) {
+    if ((still || (check_every > 0 && (it + 1) % check_every == 0)) && changed()) {
       forces(F);  // the same u, fewer bonds
       continue;
     }

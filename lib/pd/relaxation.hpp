@@ -35,7 +35,7 @@ RelaxationResult relax(const PdSolid& solid, std::vector<double>& u, const std::
 // riding on their ring). adjust() makes those changes at u and returns
 // true when it changed anything; the relaxation stops only at an
 // equilibrium where it changes nothing.
-RelaxationResult relax_adjusting(PdSolid& solid, std::vector<double>& u, const std::vector<double>& dT,
+RelaxationResult relax_adjusting(const PdSolid& solid, std::vector<double>& u, const std::vector<double>& dT,
                                  double tolerance, int max_iterations, const std::function<bool()>& adjust,
                                  int check_every = 50);
 

@@ -125,7 +125,10 @@ PdSolid::PdSolid(const SolidGeometry& g, const project::Mechanics& m, const Bond
   matrix_weight_ = weight_;
 }
 
-void PdSolid::set_eigenstrain(const std::vector<double>& eigenstrain) { eigen_ = eigenstrain; }
+void PdSolid::set_eigenstrain(const std::vector<double>& eigenstrain) {
+  eigen_.resize(position_.size());
+  for (std::size_t k = 0; k < position_.size(); ++k) eigen_[k] = eigenstrain[source(static_cast<std::uint32_t>(k))];
+}
 
 void PdSolid::set_stiffness_ratio(const std::vector<double>& ratio) {
   particles::for_each_particle(n_, [&](std::size_t i) {
@@ -164,13 +167,6 @@ void PdSolid::extend(const std::vector<double>& u, std::vector<double>& u_all) c
   });
 }
 
-std::vector<double> PdSolid::eigen_all() const {
-  if (eigen_.empty()) return {};
-  std::vector<double> all(position_.size());
-  for (std::size_t k = 0; k < position_.size(); ++k) all[k] = eigen_[source(static_cast<std::uint32_t>(k))];
-  return all;
-}
-
 void PdSolid::extend_temperature(const std::vector<double>& dT, std::vector<double>& dT_all) const {
   dT_all.resize(position_.size());
   for (std::size_t k = 0; k < position_.size(); ++k) dT_all[k] = dT[source(static_cast<std::uint32_t>(k))];
@@ -193,7 +189,7 @@ void PdSolid::forces_extended(const std::vector<double>& u_all, const std::vecto
   const double* Len = length_.data();
   const std::uint32_t* C = column_.data();
   const double half_kT = 0.5 * law_.thermal_stretch_per_K;
-  const std::vector<double> E = eigen_all();
+  const std::vector<double>& E = eigen_;
   auto half = [&](const std::vector<double>& v, std::uint32_t k) { return v.empty() ? 0.0 : 0.5 * v[k]; };
   particles::for_each_particle(n_, [&](std::size_t i) {
     const double uxi = U[2 * i], uyi = U[2 * i + 1], Di = D[i], Ei = half(E, static_cast<std::uint32_t>(i));
@@ -215,7 +211,7 @@ void PdSolid::forces_extended(const std::vector<double>& u_all, const std::vecto
 void PdSolid::thermal_force(const std::vector<double>& dT_all, std::vector<double>& force) const {
   force.resize(2 * n_);
   const double half_kT = 0.5 * law_.thermal_stretch_per_K;
-  const std::vector<double> E = eigen_all();
+  const std::vector<double>& E = eigen_;
   particles::for_each_particle(n_, [&](std::size_t i) {
     double fx = 0.0, fy = 0.0;
     for (std::size_t e = start_[i]; e < start_[i + 1]; ++e) {

@@ -140,10 +140,9 @@ class PdSolid {
   std::uint32_t source(std::uint32_t k) const { return k < n_ ? k : ghosts_[k - n_].source; }
   double thermal_stretch(std::size_t i, std::uint32_t k, const std::vector<double>& dT) const {
     const std::uint32_t j = source(k);
-    const double eigen = eigen_.empty() ? 0.0 : 0.5 * (eigen_[i] + eigen_[j]);
+    const double eigen = eigen_.empty() ? 0.0 : 0.5 * (eigen_[i] + eigen_[k]);
     return law_.thermal_stretch_per_K * 0.5 * (dT[i] + dT[j]) + eigen;
   }
-  std::vector<double> eigen_all() const;  // eigen_ at every point (ghosts: their source's)
 
 
   BondLaw law_;
@@ -155,7 +154,7 @@ class PdSolid {
   std::vector<double> length_;          // |xi|
   std::vector<double> weight_;          // c G V_j share (force per unit volume per unit stretch); 0 once broken
   std::vector<double> matrix_weight_;   // weight_ of the matrix material (set_stiffness_ratio scales it)
-  std::vector<double> eigen_;           // per free particle; empty: none
+  std::vector<double> eigen_;           // per point (ghosts: their source's); empty: none
   std::vector<std::uint8_t> held_;      // per free particle; empty: none
   std::vector<std::vector<std::size_t>> groups_;
   std::vector<double> xi_;              // reference bond vector x_j - x_i, 2 per bond

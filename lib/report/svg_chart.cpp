@@ -45,6 +45,37 @@ std::vector<std::string> pieces(const Series& s, ToPx&& to_px) {
   return out;
 }
 
+// The horizontal axis both chart kinds draw on a plot area (left, top,
+// pw x ph): its grid lines, tick marks, tick labels, and the frame's
+// corner (left side and bottom).
+struct XAxis {
+  const NiceScale& scale;
+  double left, top, pw, ph;
+  double px(double x) const { return left + (x - scale.lo) / (scale.hi - scale.lo) * pw; }
+  std::string grid() const {
+    std::string o;
+    for (double v : scale.ticks) o += fmt::format(R"(<line x1="{0}" y1="{1}" x2="{0}" y2="{2}"/>)", num(px(v)), num(top), num(top + ph));
+    return o;
+  }
+  std::string ticks() const {
+    std::string o;
+    for (double v : scale.ticks)
+      o += fmt::format(R"(<line x1="{0}" y1="{1}" x2="{0}" y2="{2}"/>)", num(px(v)), num(top + ph), num(top + ph + tick_length));
+    return o;
+  }
+  std::string frame() const {
+    return fmt::format(R"(<polyline fill="none" points="{0},{1} {0},{2} {3},{2}"/>)", num(left), num(top), num(top + ph),
+                       num(left + pw));
+  }
+  std::string labels() const {
+    std::string o;
+    for (double v : scale.ticks)
+      o += fmt::format(R"(<text x="{}" y="{}" text-anchor="middle">{}</text>)", num(px(v)), num(top + ph + tick_length + 13),
+                       tick_label(v, scale.decimals));
+    return o;
+  }
+};
+
 }  // namespace
 
 const std::vector<std::string>& categorical_colours() {
@@ -94,7 +125,8 @@ std::string render_svg(const Chart& chart) {
   const double left = y_tick_width + tick_length + 30, bottom = 44, top = 12;
   const double right = legend.empty() ? 16 : legend_width + legend_swatch + 30;
   const double W = chart.width, H = chart.height, pw = W - left - right, ph = H - top - bottom;
-  auto px = [&](double x) { return left + (x - xs.lo) / (xs.hi - xs.lo) * pw; };
+  const XAxis x_axis{xs, left, top, pw, ph};
+  auto px = [&](double x) { return x_axis.px(x); };
   auto py = [&](double y) { return top + (ys.hi - y) / (ys.hi - ys.lo) * ph; };
   const std::string clip = svg::unique_id("plot");
 
@@ -105,20 +137,12 @@ std::string render_svg(const Chart& chart) {
   o += fmt::format(R"(<defs><clipPath id="{}"><rect x="{}" y="{}" width="{}" height="{}"/></clipPath></defs>)" "\n", clip,
                    num(left), num(top), num(pw), num(ph));
   // Grid and ticks.
-  o += R"(<g stroke="#e4e4e4" stroke-width="1">)";
-  for (double v : xs.ticks) o += fmt::format(R"(<line x1="{0}" y1="{1}" x2="{0}" y2="{2}"/>)", num(px(v)), num(top), num(top + ph));
+  o += R"(<g stroke="#e4e4e4" stroke-width="1">)" + x_axis.grid();
   for (double v : ys.ticks) o += fmt::format(R"(<line x1="{1}" y1="{0}" x2="{2}" y2="{0}"/>)", num(py(v)), num(left), num(left + pw));
-  o += "</g>\n<g stroke=\"#222\" stroke-width=\"1\">";
-  for (double v : xs.ticks)
-    o += fmt::format(R"(<line x1="{0}" y1="{1}" x2="{0}" y2="{2}"/>)", num(px(v)), num(top + ph), num(top + ph + tick_length));
+  o += "</g>\n<g stroke=\"#222\" stroke-width=\"1\">" + x_axis.ticks();
   for (double v : ys.ticks)
     o += fmt::format(R"(<line x1="{1}" y1="{0}" x2="{2}" y2="{0}"/>)", num(py(v)), num(left - tick_length), num(left));
-  o += fmt::format(R"(<polyline fill="none" points="{0},{1} {0},{2} {3},{2}"/>)", num(left), num(top), num(top + ph),
-                   num(left + pw));
-  o += "</g>\n<g fill=\"#222\">";
-  for (double v : xs.ticks)
-    o += fmt::format(R"(<text x="{}" y="{}" text-anchor="middle">{}</text>)", num(px(v)), num(top + ph + tick_length + 13),
-                     tick_label(v, xs.decimals));
+  o += x_axis.frame() + "</g>\n<g fill=\"#222\">" + x_axis.labels();
   for (double v : ys.ticks)
     o += fmt::format(R"(<text x="{}" y="{}" text-anchor="end">{}</text>)", num(left - tick_length - 3), num(py(v) + 4),
                      tick_label(v, ys.decimals));
@@ -207,7 +231,8 @@ std::string render_svg(const BarChart& chart) {
   const double rows = static_cast<double>(std::max<std::size_t>(chart.bars.size(), 1));
   const double left = label_width + tick_length + 12, right = 16, top = 20, bottom = 44;
   const double W = chart.width, pw = W - left - right, ph = rows * chart.row_height, H = top + ph + bottom;
-  auto px = [&](double x) { return left + (x - xs.lo) / (xs.hi - xs.lo) * pw; };
+  const XAxis x_axis{xs, left, top, pw, ph};
+  auto px = [&](double x) { return x_axis.px(x); };
   auto row_y = [&](std::size_t k) { return top + (static_cast<double>(k) + 0.5) * chart.row_height; };
   const std::string clip = svg::unique_id("plot"), fade = svg::unique_id("fade");
 
@@ -221,17 +246,9 @@ std::string render_svg(const BarChart& chart) {
                    R"(<stop offset="1" stop-color="{1}" stop-opacity="0.1"/></linearGradient></defs>)" "\n",
                    fade, chart.colour);
   // Grid, axes, ticks and labels.
-  o += R"(<g stroke="#e4e4e4" stroke-width="1">)";
-  for (double v : xs.ticks) o += fmt::format(R"(<line x1="{0}" y1="{1}" x2="{0}" y2="{2}"/>)", num(px(v)), num(top), num(top + ph));
-  o += "</g>\n<g stroke=\"#222\" stroke-width=\"1\">";
-  for (double v : xs.ticks)
-    o += fmt::format(R"(<line x1="{0}" y1="{1}" x2="{0}" y2="{2}"/>)", num(px(v)), num(top + ph), num(top + ph + tick_length));
-  o += fmt::format(R"(<polyline fill="none" points="{0},{1} {0},{2} {3},{2}"/>)", num(left), num(top), num(top + ph),
-                   num(left + pw));
-  o += "</g>\n<g fill=\"#222\">";
-  for (double v : xs.ticks)
-    o += fmt::format(R"(<text x="{}" y="{}" text-anchor="middle">{}</text>)", num(px(v)), num(top + ph + tick_length + 13),
-                     tick_label(v, xs.decimals));
+  o += R"(<g stroke="#e4e4e4" stroke-width="1">)" + x_axis.grid();
+  o += "</g>\n<g stroke=\"#222\" stroke-width=\"1\">" + x_axis.ticks() + x_axis.frame();
+  o += "</g>\n<g fill=\"#222\">" + x_axis.labels();
   for (std::size_t k = 0; k < chart.bars.size(); ++k)
     o += fmt::format(R"(<text x="{}" y="{}" text-anchor="end">{}</text>)", num(left - tick_length - 2), num(row_y(k) + 4),
                      escape(chart.bars[k].label));

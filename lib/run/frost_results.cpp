@@ -36,16 +36,8 @@ FrostResults::FrostResults(const project::Project& p, const Model& m, const Mech
 FrostResults::~FrostResults() = default;
 
 void FrostResults::after_step(const thermal::ThermalModel& model, double t) {
-  const auto& f = model.liquid_fraction();
-  const auto& V = model.volume();
-  std::vector<double> ice(frozen_.size(), 0.0), all(frozen_.size(), 0.0);
-  for (std::size_t i = 0; i < model_.pore_of.size(); ++i)
-    if (const int p = model_.pore_of[i]; p >= 0) {
-      ice[p] += V[i] * (1.0 - f[i]);
-      all[p] += V[i];
-    }
+  frozen_ = geometry::pore_frozen_fraction(model_.pore_of, frozen_.size(), model.liquid_fraction(), model.volume());
   for (std::size_t p = 0; p < frozen_.size(); ++p) {
-    frozen_[p] = all[p] > 0.0 ? ice[p] / all[p] : 0.0;
     if (!start_[p] && frozen_[p] > 0.0) start_[p] = t;
     if (!end_[p] && frozen_[p] >= 1.0) end_[p] = t;
   }

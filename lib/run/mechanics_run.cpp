@@ -27,6 +27,7 @@ MechanicsRun::MechanicsRun(const project::Project& p, Model& m)
     const auto& model = *m.model;
     f_equilibrium_.assign(model.liquid_fraction().begin(), model.liquid_fraction().begin() + P.n_free);
     pores_->apply(*solid_, f_equilibrium_, model.volume(), u_);
+    frozen_equilibrium_ = pores_->frozen_fraction(f_equilibrium_, model.volume());
   }
 }
 
@@ -43,8 +44,8 @@ void MechanicsRun::update(const thermal::ThermalModel& model, double t, bool for
   const double threshold = mechanics_.temperature_change.value_or(std::max(0.1 * largest, 1e-6));
   double froze = 0.0;  // how far any pore's frozen fraction moved
   if (pores_) {
-    const auto now = pores_->frozen_fraction(f, model.volume()), then = pores_->frozen_fraction(f_equilibrium_, model.volume());
-    for (std::size_t p = 0; p < now.size(); ++p) froze = std::max(froze, std::abs(now[p] - then[p]));
+    const auto now = pores_->frozen_fraction(f, model.volume());
+    for (std::size_t p = 0; p < now.size(); ++p) froze = std::max(froze, std::abs(now[p] - frozen_equilibrium_[p]));
   }
   const bool freezing = froze >= mechanics_.frozen_fraction_change;
   if (!force && moved < threshold && !freezing) return;
@@ -59,7 +60,10 @@ void MechanicsRun::update(const thermal::ThermalModel& model, double t, bool for
     dT1[i] = T[i] - mechanics_.material.reference_temperature;
     T_equilibrium_[i] = T[i];
   }
-  if (pores_) f_equilibrium_.assign(f.begin(), f.begin() + dT_.size());
+  if (pores_) {
+    f_equilibrium_.assign(f.begin(), f.begin() + dT_.size());
+    frozen_equilibrium_ = pores_->frozen_fraction(f_equilibrium_, model.volume());
+  }
   auto set_load = [&](double lambda) {
     for (std::size_t i = 0; i < dT_.size(); ++i) dT_[i] = dT0[i] + lambda * (dT1[i] - dT0[i]);
     if (!pores_) return;

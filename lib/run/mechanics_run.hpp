@@ -50,7 +50,8 @@ class MechanicsRun {
   const project::Mechanics& mechanics_;
   std::unique_ptr<pd::PdSolid> solid_;
   std::optional<pd::PoreExpansion> pores_;
-  std::vector<double> f_equilibrium_;
+  std::vector<double> f_equilibrium_;       // liquid fractions at the last equilibrium
+  std::vector<double> frozen_equilibrium_;  // each pore's frozen fraction then
   double t_equilibrium_ = 0.0;
   std::vector<pd::Vec2> first_damage_;
   double first_damage_time_ = 0.0;
