@@ -42,9 +42,11 @@ def main():
         with open(os.path.join(out, "summary.json")) as f:
             s = json.load(f)
         run, mech = s["run"], s["run"]["mechanics"]
+        kind = "CG" if mech.get("equilibrium") == "direct" else "ADR"
         print(f"spacing {dx:g} m, {args.threads} threads: {wall:.1f} s wall; {run['particles']} particles, "
               f"{mech['bonds']} bonds, {run['steps']} heat steps, {mech['relaxations']} relaxations, "
-              f"{mech['relaxation_iterations']} ADR iterations (longest {mech['longest_relaxation']}), "
+              f"{mech['relaxation_iterations']} {kind} iterations (longest {mech['longest_relaxation']}), "
+              f"{mech.get('factorizations', 0)} factorizations, "
               f"{mech['broken_bonds']} bonds broken", flush=True)
         for p in s["pores"]:
             print(f"  pore {p['id']}: freezes {p['freezing_start']} .. {p['freezing_end']} s, "

@@ -20,26 +20,15 @@
 
 #include "pd/relaxation.hpp"
 #include "pd/solid.hpp"
+#include "pd_lattice.hpp"
 
 using namespace frostwall;
 using pd::Vec2;
+using test::square_lattice;
 
 namespace {
 
 constexpr double E = 25.7e9, alpha = 1.8e-5;
-
-pd::SolidGeometry square_lattice(double L, double dx) {
-  pd::SolidGeometry g;
-  const int n = static_cast<int>(std::lround(L / dx));
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) {
-      g.position.emplace_back((i + 0.5) * dx, (j + 0.5) * dx);
-      g.volume.push_back(dx * dx);
-    }
-  g.spacing = dx;
-  g.width = g.height = L;
-  return g;
-}
 
 project::Mechanics plate_mechanics(project::Plane plane = project::Plane::strain) {
   project::Mechanics m;

@@ -20,7 +20,7 @@ struct Side {
 }  // namespace
 
 PdSolid::PdSolid(const SolidGeometry& g, const project::Mechanics& m, const BondLaw& law)
-    : law_(law), n_(g.position.size()), linear_(m.linear_kinematics) {
+    : law_(law), n_(g.position.size()), linear_(m.linear_kinematics), volume_(g.volume) {
   const double delta = law.horizon, dx = g.spacing, reach = delta + 0.5 * dx;
   const std::array<Side, 4> sides{{{&m.left, Vec2(0, 0), Vec2(-1, 0)},
                                    {&m.right, Vec2(g.width, 0), Vec2(1, 0)},
@@ -167,6 +167,12 @@ void PdSolid::extend(const std::vector<double>& u, std::vector<double>& u_all) c
   });
 }
 
+void PdSolid::extend_homogeneous(const std::vector<double>& u, std::vector<double>& u_all) const {
+  extend(u, u_all);
+  for (std::size_t g = 0; g < ghosts_.size(); ++g)
+    if (ghosts_[g].held) u_all[2 * (n_ + g)] = u_all[2 * (n_ + g) + 1] = 0.0;
+}
+
 void PdSolid::extend_temperature(const std::vector<double>& dT, std::vector<double>& dT_all) const {
   dT_all.resize(position_.size());
   for (std::size_t k = 0; k < position_.size(); ++k) dT_all[k] = dT[source(static_cast<std::uint32_t>(k))];
@@ -283,9 +289,11 @@ std::size_t PdSolid::break_bonds(const std::vector<double>& u, const std::vector
     for (std::size_t e = start_[i]; e < start_[i + 1]; ++e) stiffness_[i] += weight_[e] / length_[e];
   });
   std::size_t broken = 0;
+  last_broken_rows_.clear();
   for (std::size_t i = 0; i < n_; ++i) {
     if (row_broken[i] == 0) continue;
     broken += row_broken[i];
+    last_broken_rows_.push_back(static_cast<std::uint32_t>(i));
     for (std::size_t e = start_[i]; e < start_[i + 1]; ++e)
       if (intact_[e] == 2) {
         intact_[e] = 0;

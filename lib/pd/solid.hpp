@@ -61,9 +61,26 @@ class PdSolid {
   // evaluation is force = thermal + sum_j (w / |xi|^3) (xi . (u_j - u_i)) xi.
   void thermal_force(const std::vector<double>& dT_all, std::vector<double>& force) const;
   void forces_linear(const std::vector<double>& u_all, const std::vector<double>& thermal, std::vector<double>& force) const;
+  // The same force on free particle i alone (linear kinematics, u and dT
+  // at every point): a patch of the solid needs only its own rows.
+  Vec2 force_linear_on(std::size_t i, const std::vector<double>& u_all, const std::vector<double>& dT_all) const {
+    const double half_kT = 0.5 * law_.thermal_stretch_per_K;
+    Vec2 f = Vec2::Zero();
+    for (std::size_t e = start_[i]; e < start_[i + 1]; ++e) {
+      const std::uint32_t k = column_[e];
+      const double eigen = eigen_.empty() ? 0.0 : 0.5 * (eigen_[i] + eigen_[k]);
+      const double thermal = -weight_[e] * (half_kT * (dT_all[i] + dT_all[k]) + eigen) / length_[e];
+      const double elastic = stiffness3_[e] * (xi_[2 * e] * (u_all[2 * k] - u_all[2 * i]) + xi_[2 * e + 1] * (u_all[2 * k + 1] - u_all[2 * i + 1]));
+      f += (thermal + elastic) * Vec2(xi_[2 * e], xi_[2 * e + 1]);
+    }
+    return f;
+  }
   std::size_t points() const { return position_.size(); }
   // u_all (2 per point) and dT_all (1 per point) from the free particles'.
   void extend(const std::vector<double>& u, std::vector<double>& u_all) const;
+  // The same with held ghosts at 0: the displacement field's linear part
+  // (what a stiffness times a direction needs).
+  void extend_homogeneous(const std::vector<double>& u, std::vector<double>& u_all) const;
   void extend_temperature(const std::vector<double>& dT, std::vector<double>& dT_all) const;
   // Sum over i's bonds of c G V_j / |xi|: bounds the stiffness a particle
   // sees (the relaxation's fictitious density).
@@ -115,6 +132,31 @@ class PdSolid {
   bool moves(std::size_t i) const { return (held_.empty() || !held_[i]) && stiffness_[i] > 0.0; }
   // Intact bonds of each free particle (its own row), and in all.
   std::size_t intact_bonds() const;
+  // Volume of each free particle (m^2 per metre of depth).
+  const std::vector<double>& volume() const { return volume_; }
+  // Calls f(i, j, A, k3, xi) for every bond of free particle i (k3 = 0
+  // once broken or without stiffness), in the linear kinematics' terms: the force density on i is
+  // k3 (xi . (u_k - u_i)) xi, with the far end's displacement u_k = A u_j
+  // (j its free particle; A the identity for a free particle, a
+  // reflection for a roller image) or, for a held ghost, j = -1 and u_k
+  // held. What the direct equilibrium (pd/equilibrium) assembles.
+  template <class F>
+  void for_each_spring_of(std::size_t i, F&& f) const {
+    static const Eigen::Matrix2d identity = Eigen::Matrix2d::Identity();
+    for (std::size_t e = start_[i]; e < start_[i + 1]; ++e) {
+      const std::uint32_t k = column_[e];
+      const Vec2 xi(xi_[2 * e], xi_[2 * e + 1]);
+      if (k < n_) f(i, static_cast<long>(k), identity, stiffness3_[e], xi);
+      else if (ghosts_[k - n_].held) f(i, -1L, identity, stiffness3_[e], xi);
+      else f(i, static_cast<long>(ghosts_[k - n_].source), ghosts_[k - n_].map, stiffness3_[e], xi);
+    }
+  }
+  template <class F>
+  void for_each_spring(F&& f) const {
+    for (std::size_t i = 0; i < n_; ++i) for_each_spring_of(i, f);
+  }
+  // The free particles whose bonds broke in the last break_bonds call.
+  const std::vector<std::uint32_t>& last_broken_rows() const { return last_broken_rows_; }
   // Calls f(i, k, intact) for every bond of the free particles (k a point).
   template <class F>
   void for_each_bond(F&& f) const {
@@ -161,6 +203,8 @@ class PdSolid {
   std::vector<double> stiffness3_;      // w / |xi|^3 (linear kinematics; 0 once broken)
   bool linear_ = true;
   std::vector<double> volume_share_;    // V_j share (damage)
+  std::vector<double> volume_;          // free particles'
+  std::vector<std::uint32_t> last_broken_rows_;
   mutable std::vector<std::uint8_t> intact_;
   std::vector<double> stiffness_;
 };

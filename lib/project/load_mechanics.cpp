@@ -36,10 +36,16 @@ Support read_support(const detail::Node& n) {
 
 Mechanics read_mechanics(const detail::Node& n, std::vector<std::string>& warnings) {
   Mechanics m;
-  if (!n.object({"material", "plane", "supports", "relaxation", "kinematics", "cracks_insulate", "freezing_expansion"}))
+  if (!n.object({"material", "plane", "supports", "relaxation", "kinematics", "equilibrium", "cracks_insulate", "freezing_expansion"}))
     return m;
   m.cracks_insulate = n["cracks_insulate"].boolean().value_or(false);
   m.linear_kinematics = n["kinematics"].choice<bool>("kinematics", {{"linear", true}, {"nonlinear", false}}).value_or(true);
+  using Equilibrium = Mechanics::Equilibrium;
+  const auto equilibrium = n["equilibrium"].choice<Equilibrium>(
+      "equilibrium method", {{"direct", Equilibrium::direct}, {"dynamic_relaxation", Equilibrium::dynamic_relaxation}});
+  m.equilibrium = equilibrium.value_or(m.linear_kinematics ? Equilibrium::direct : Equilibrium::dynamic_relaxation);
+  if (equilibrium == Equilibrium::direct && !m.linear_kinematics)
+    n["equilibrium"].problem("\"direct\" needs \"kinematics\": \"linear\" (nonlinear kinematics relax dynamically)");
   const detail::Node mat = n["material"].required();
   m.plane = n["plane"].choice<Plane>("plane", {{"strain", Plane::strain}, {"stress", Plane::stress}}).value_or(m.plane);
   if (mat.object({"elastic_modulus", "poisson_ratio", "thermal_expansion", "fracture_energy", "reference_temperature"})) {

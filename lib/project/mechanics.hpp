@@ -62,6 +62,12 @@ struct Mechanics {
   // the exact stretch and deformed direction. Bonds break on the exact
   // stretch either way.
   bool linear_kinematics = true;
+  // How each equilibrium is found: "direct" (default with linear
+  // kinematics: a sparse Cholesky factor kept as the preconditioner of
+  // conjugate gradients, pd/equilibrium.hpp) or "dynamic_relaxation" (the
+  // only one for nonlinear kinematics).
+  enum class Equilibrium { direct, dynamic_relaxation };
+  Equilibrium equilibrium = Equilibrium::direct;
   // A broken bond stops carrying heat too (the crack insulates): the
   // thermal pairs between the same two particles are cut.
   bool cracks_insulate = false;

@@ -132,7 +132,7 @@ void add_frost_maps(const RunRecord& run, const std::string& unit, json& view) {
                     {"caption", fmt::format("temperature (°C) at {:g} {}", t, unit)}});
     maps.push_back({{"html", map.html(map.nearest_raster(colours), "material", {}, true, MapOverlay{}, title)},
                     {"caption", fmt::format("matrix, pore water and pore ice at {:g} {}", t, unit)}});
-    maps.push_back({{"html", map.html(s.damage, damage, {}, true, MapOverlay{}, title)},
+    maps.push_back({{"html", map.html(map.raster(s.damage, damage), "damage", {}, true, MapOverlay{}, title)},
                     {"caption", fmt::format("damage (share of broken bonds) at {:g} {}", t, unit)}});
     rows.push_back({{"maps", maps}});
   }

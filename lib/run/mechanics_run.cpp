@@ -18,6 +18,7 @@ MechanicsRun::MechanicsRun(const project::Project& p, Model& m)
   g.width = rect.width;
   g.height = rect.height;
   solid_ = std::make_unique<pd::PdSolid>(g, mechanics_, pd::make_bond_law(mechanics_, p.numerics.horizon * P.spacing));
+  if (mechanics_.equilibrium == project::Mechanics::Equilibrium::direct) direct_.emplace();
   u_.assign(2 * P.n_free, 0.0);
   dT_.assign(P.n_free, 0.0);
   T_equilibrium_.assign(P.n_free, mechanics_.material.reference_temperature);
@@ -84,8 +85,9 @@ void MechanicsRun::update(const thermal::ThermalModel& model, double t, bool for
     return broke > 0;
   };
   auto relax = [&](bool breaking) {
-    const auto r = pd::relax_adjusting(*solid_, u_, dT_, mechanics_.tolerance, mechanics_.max_iterations,
-                                       breaking ? std::function<bool()>(adjust) : std::function<bool()>());
+    const std::function<bool()> changes = breaking ? std::function<bool()>(adjust) : std::function<bool()>();
+    const auto r = direct_ ? direct_->solve_adjusting(*solid_, u_, dT_, changes)
+                           : pd::relax_adjusting(*solid_, u_, dT_, mechanics_.tolerance, mechanics_.max_iterations, changes);
     ++relaxations_;
     iterations_ += r.iterations;
     largest_ = std::max(largest_, r.iterations);
@@ -135,6 +137,10 @@ nlohmann::json MechanicsRun::facts() const {
           {"horizon", law.horizon},
           {"micromodulus", law.micromodulus},
           {"critical_stretch", std::isfinite(law.critical_stretch) ? nlohmann::json(law.critical_stretch) : nlohmann::json(nullptr)},
+          {"equilibrium", direct_ ? "direct" : "dynamic_relaxation"},
+          {"factorizations", direct_ ? direct_->factorizations() : 0},
+          {"direct_solves", direct_ ? direct_->solves() : 0},
+          {"patch_solves", direct_ ? direct_->patch_solves() : 0},
           {"relaxations", relaxations_},
           {"relaxation_iterations", iterations_},
           {"longest_relaxation", largest_},

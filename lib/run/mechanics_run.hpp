@@ -17,6 +17,7 @@
 #include <optional>
 #include <vector>
 
+#include "pd/equilibrium.hpp"
 #include "pd/pore_expansion.hpp"
 #include "pd/solid.hpp"
 #include "project/project.hpp"
@@ -49,6 +50,7 @@ class MechanicsRun {
  private:
   const project::Mechanics& mechanics_;
   std::unique_ptr<pd::PdSolid> solid_;
+  std::optional<pd::DirectEquilibrium> direct_;  // mechanics.equilibrium "direct"
   std::optional<pd::PoreExpansion> pores_;
   std::vector<double> f_equilibrium_;       // liquid fractions at the last equilibrium
   std::vector<double> frozen_equilibrium_;  // each pore's frozen fraction then

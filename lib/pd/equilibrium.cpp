@@ -1,0 +1,278 @@
+#include "pd/equilibrium.hpp"
+
+#include <Eigen/CholmodSupport>
+#include <Eigen/SparseCholesky>
+#include <algorithm>
+#include <cmath>
+
+#include "particles/cell_list.hpp"
+#include "particles/parallel.hpp"
+
+namespace frostwall::pd {
+
+struct DirectEquilibrium::Factor {
+  // The unknown of each free particle's axis (2 per particle), -1 for held
+  // particles outside groups: the map P from unknowns to displacements.
+  std::vector<long> dof;
+  std::size_t unknowns = 0, held = 0, groups = 0;
+  Eigen::VectorXd anchor;  // the spring each unknown has to where it was
+  bool analysed = false;   // the pattern's ordering and symbolic factor done
+  Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>, Eigen::Lower> cholesky;
+
+  void map(const PdSolid& solid) {
+    const std::size_t n = solid.size();
+    dof.assign(2 * n, -1);
+    long m = 0;
+    held = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      if (solid.held(i)) {
+        ++held;
+        continue;
+      }
+      dof[2 * i] = m++;
+      dof[2 * i + 1] = m++;
+    }
+    groups = solid.groups().size();
+    for (const auto& group : solid.groups()) {
+      for (std::size_t i : group) {
+        dof[2 * i] = m;
+        dof[2 * i + 1] = m + 1;
+      }
+      m += 2;
+    }
+    unknowns = static_cast<std::size_t>(m);
+  }
+  bool matches(const PdSolid& solid) const {
+    if (dof.size() != 2 * solid.size() || groups != solid.groups().size()) return false;
+    std::size_t h = 0;
+    for (std::size_t i = 0; i < solid.size(); ++i) h += solid.held(i);
+    return h == held;
+  }
+  // P^T (V f): the force on each unknown.
+  void gather(const PdSolid& solid, const std::vector<double>& f, Eigen::VectorXd& out) const {
+    out.setZero(static_cast<Eigen::Index>(unknowns));
+    const auto& V = solid.volume();
+    for (std::size_t k = 0; k < dof.size(); ++k)
+      if (dof[k] >= 0) out[dof[k]] += V[k / 2] * f[k];
+  }
+  // u (2 per particle) = P z.
+  void scatter(const Eigen::VectorXd& z, std::vector<double>& u) const {
+    u.resize(dof.size());
+    particles::for_each_particle(dof.size(), [&](std::size_t k) { u[k] = dof[k] >= 0 ? z[dof[k]] : 0.0; });
+  }
+};
+
+struct DirectEquilibrium::Patch {
+  const PdSolid* solid = nullptr;
+  std::unique_ptr<particles::CellList<2>> cells;
+  std::vector<long> local;  // each free particle's place in the patch, -1 outside
+  std::vector<std::size_t> members;
+};
+
+DirectEquilibrium::DirectEquilibrium(double tolerance, int refactor_after, int max_iterations, double patch_reach)
+    : tolerance_(tolerance), refactor_after_(refactor_after), max_iterations_(max_iterations), patch_reach_(patch_reach) {}
+DirectEquilibrium::~DirectEquilibrium() = default;
+DirectEquilibrium::DirectEquilibrium(DirectEquilibrium&&) noexcept = default;
+DirectEquilibrium& DirectEquilibrium::operator=(DirectEquilibrium&&) noexcept = default;
+
+void DirectEquilibrium::factor(const PdSolid& solid) {
+  if (!factor_) factor_ = std::make_unique<Factor>();
+  Factor& F = *factor_;
+  if (!F.matches(solid)) {
+    F.map(solid);
+    F.analysed = false;
+  }
+  // Each bond's row block V_i k3 xi xi^T against i's own unknowns and,
+  // through the far end's map A, against j's: the lower triangle only.
+  std::vector<Eigen::Triplet<double>> entries;
+  entries.reserve(4 * solid.bonds());
+  const auto& V = solid.volume();
+  std::vector<double> diagonal(F.unknowns, 0.0);
+  solid.for_each_spring([&](std::size_t i, long j, const Eigen::Matrix2d& A, double k3, const Vec2& xi) {
+    const Eigen::Matrix2d B = V[i] * k3 * xi * xi.transpose();
+    const Eigen::Matrix2d BA = B * A;
+    for (int a = 0; a < 2; ++a) {
+      const long r = F.dof[2 * i + a];
+      if (r < 0) continue;
+      for (int b = 0; b < 2; ++b) {
+        const long c = F.dof[2 * i + b];
+        if (c >= 0 && c <= r) entries.emplace_back(r, c, B(a, b));
+        const long cj = j >= 0 ? F.dof[2 * j + b] : -1;
+        if (cj >= 0 && cj <= r) entries.emplace_back(r, cj, -BA(a, b));
+      }
+      diagonal[r] += B(a, a);
+    }
+  });
+  // Floating fragments (material cut loose by cracks) and unknowns
+  // without stiffness (liquid water, a pore not yet frozen) make K
+  // singular. Every unknown gets a spring of `anchor` times its diagonal
+  // to where it was (the same in the operator CG solves): a fragment stays
+  // put instead of drifting with rounding, and a connected body's
+  // equilibrium moves by ~anchor x (L / dx)^2 relative, 1e-7 at
+  // 300 spacings across. Unknowns without stiffness get a unit diagonal.
+  F.anchor.resize(F.unknowns);
+  for (std::size_t r = 0; r < F.unknowns; ++r) {
+    F.anchor[r] = diagonal[r] > 0.0 ? anchor_ * diagonal[r] : 1.0;
+    entries.emplace_back(r, r, F.anchor[r]);
+  }
+  const auto m = static_cast<Eigen::Index>(F.unknowns);
+  Eigen::SparseMatrix<double> K(m, m);
+  K.setFromTriplets(entries.begin(), entries.end());
+  entries = {};
+  // Every bond is in the pattern, broken or not, so the ordering and the
+  // symbolic factor (half the work) are done once per map of unknowns.
+  if (!F.analysed) {
+    F.cholesky.analyzePattern(K);
+    F.analysed = true;
+  }
+  F.cholesky.factorize(K);
+  ++factorizations_;
+  stale_ = false;
+}
+
+RelaxationResult DirectEquilibrium::solve(const PdSolid& solid, std::vector<double>& u, const std::vector<double>& dT) {
+  RelaxationResult result;
+  ++solves_;
+  if (stale_ || !factor_ || !factor_->matches(solid)) factor(solid);
+  const Factor& F = *factor_;
+  std::vector<double> dT_all, thermal, zero(2 * solid.size(), 0.0), u_all, force, up;
+  solid.extend_temperature(dT, dT_all);
+  solid.thermal_force(dT_all, thermal);
+  // The residual force on the unknowns at u, and K p.
+  Eigen::VectorXd r, z, p, Kp;
+  solid.extend(u, u_all);
+  solid.forces_linear(u_all, thermal, force);
+  F.gather(solid, force, r);
+  auto apply = [&](const Eigen::VectorXd& x, Eigen::VectorXd& out) {
+    F.scatter(x, up);
+    solid.extend_homogeneous(up, u_all);
+    solid.forces_linear(u_all, zero, force);
+    F.gather(solid, force, out);
+    out = F.anchor.cwiseProduct(x) - out;
+  };
+  if (F.unknowns == 0 || r.norm() == 0.0) {
+    result.converged = true;
+    return result;
+  }
+  z = F.cholesky.solve(r);
+  p = z;
+  double rz = r.dot(z);
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(r.size());
+  for (int it = 0; it < max_iterations_; ++it) {
+    apply(p, Kp);
+    const double pKp = p.dot(Kp);
+    if (!(pKp > 0.0)) break;
+    const double alpha = rz / pKp;
+    x += alpha * p;
+    r -= alpha * Kp;
+    result.iterations = it + 1;
+    // The step's size against the displacement (as the relaxation's test).
+    F.scatter(x, up);
+    const double du = std::abs(alpha) * p.norm() / std::sqrt(double(p.size()));
+    double uu = 0.0;
+    {
+      double s = 0.0;
+      std::size_t count = 0;
+      for (std::size_t k = 0; k < F.dof.size(); ++k)
+        if (F.dof[k] >= 0) s += (u[k] + up[k]) * (u[k] + up[k]), ++count;
+      uu = count ? std::sqrt(s / count) : 0.0;
+    }
+    result.increment = uu > 0.0 ? du / uu : 0.0;
+    if (du <= tolerance_ * uu || r.norm() == 0.0) {
+      result.converged = true;
+      break;
+    }
+    z = F.cholesky.solve(r);
+    const double rz_new = r.dot(z);
+    p = z + (rz_new / rz) * p;
+    rz = rz_new;
+  }
+  F.scatter(x, up);
+  for (std::size_t k = 0; k < u.size(); ++k) u[k] += up[k];
+  if (result.iterations > refactor_after_) stale_ = true;
+  return result;
+}
+
+bool DirectEquilibrium::solve_near(const PdSolid& solid, std::vector<double>& u, const std::vector<double>& dT,
+                                   const std::vector<std::uint32_t>& seeds) {
+  const std::size_t n = solid.size();
+  if (!patch_ || patch_->solid != &solid) {
+    patch_ = std::make_unique<Patch>();
+    patch_->solid = &solid;
+    patch_->cells = std::make_unique<particles::CellList<2>>(solid.position(), solid.law().horizon);
+    patch_->local.assign(n, -1);
+  }
+  Patch& P = *patch_;
+  const double reach = patch_reach_ * solid.law().horizon;
+  for (std::size_t i : P.members) P.local[i] = -1;
+  P.members.clear();
+  const std::size_t limit = n / 4;
+  for (std::uint32_t seed : seeds) {
+    P.cells->for_each_within(solid.position()[seed], reach, [&](std::uint32_t k, double) {
+      if (k >= n || solid.held(k) || P.local[k] >= 0) return;
+      P.local[k] = static_cast<long>(P.members.size());
+      P.members.push_back(k);
+    });
+    if (P.members.size() > limit) return false;
+  }
+  if (P.members.empty()) return true;
+  // The residual force on the patch at u, and the patch's stiffness with
+  // everything outside it held (lower triangle; the same anchor springs).
+  std::vector<double> dT_all, u_all;
+  solid.extend_temperature(dT, dT_all);
+  solid.extend(u, u_all);
+  const auto& V = solid.volume();
+  const auto m = static_cast<Eigen::Index>(2 * P.members.size());
+  Eigen::VectorXd r(m);
+  std::vector<Eigen::Triplet<double>> entries;
+  std::vector<double> diagonal(m, 0.0);
+  for (std::size_t p = 0; p < P.members.size(); ++p) {
+    const std::size_t i = P.members[p];
+    const Vec2 f = solid.force_linear_on(i, u_all, dT_all);
+    r[2 * p] = V[i] * f[0];
+    r[2 * p + 1] = V[i] * f[1];
+    solid.for_each_spring_of(i, [&](std::size_t, long j, const Eigen::Matrix2d& A, double k3, const Vec2& xi) {
+      if (k3 == 0.0) return;
+      const Eigen::Matrix2d B = V[i] * k3 * xi * xi.transpose();
+      const Eigen::Matrix2d BA = B * A;
+      const long q = j >= 0 ? P.local[j] : -1;
+      for (int a = 0; a < 2; ++a) {
+        const long row = 2 * static_cast<long>(p) + a;
+        for (int b = 0; b < 2; ++b) {
+          if (2 * static_cast<long>(p) + b <= row) entries.emplace_back(row, 2 * p + b, B(a, b));
+          if (q >= 0 && 2 * q + b <= row) entries.emplace_back(row, 2 * q + b, -BA(a, b));
+        }
+        diagonal[row] += B(a, a);
+      }
+    });
+  }
+  for (Eigen::Index k = 0; k < m; ++k) entries.emplace_back(k, k, diagonal[k] > 0.0 ? anchor_ * diagonal[k] : 1.0);
+  Eigen::SparseMatrix<double> K(m, m);
+  K.setFromTriplets(entries.begin(), entries.end());
+  // A patch is small: a simplicial factor, no BLAS set-up.
+  const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower> cholesky(K);
+  const Eigen::VectorXd dz = cholesky.solve(r);
+  for (std::size_t p = 0; p < P.members.size(); ++p) {
+    u[2 * P.members[p]] += dz[2 * p];
+    u[2 * P.members[p] + 1] += dz[2 * p + 1];
+  }
+  ++patch_solves_;
+  return true;
+}
+
+RelaxationResult DirectEquilibrium::solve_adjusting(const PdSolid& solid, std::vector<double>& u,
+                                                    const std::vector<double>& dT, const std::function<bool()>& adjust) {
+  RelaxationResult total;
+  for (;;) {
+    const RelaxationResult r = solve(solid, u, dT);
+    total.iterations += r.iterations;
+    total.converged = r.converged;
+    total.increment = r.increment;
+    if (!adjust || !adjust()) return total;
+    // The cascade near the broken bonds, while it stays local.
+    while (solve_near(solid, u, dT, solid.last_broken_rows()) && adjust()) {
+    }
+  }
+}
+
+}  // namespace frostwall::pd
