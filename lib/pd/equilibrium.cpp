@@ -1,11 +1,9 @@
 #include "pd/equilibrium.hpp"
 
 #include <Eigen/CholmodSupport>
-#include <Eigen/SparseCholesky>
 #include <algorithm>
 #include <cmath>
 
-#include "particles/cell_list.hpp"
 #include "particles/parallel.hpp"
 
 namespace frostwall::pd {
@@ -62,15 +60,8 @@ struct DirectEquilibrium::Factor {
   }
 };
 
-struct DirectEquilibrium::Patch {
-  const PdSolid* solid = nullptr;
-  std::unique_ptr<particles::CellList<2>> cells;
-  std::vector<long> local;  // each free particle's place in the patch, -1 outside
-  std::vector<std::size_t> members;
-};
-
-DirectEquilibrium::DirectEquilibrium(double tolerance, int refactor_after, int max_iterations, double patch_reach)
-    : tolerance_(tolerance), refactor_after_(refactor_after), max_iterations_(max_iterations), patch_reach_(patch_reach) {}
+DirectEquilibrium::DirectEquilibrium(double tolerance, int refactor_after, int max_iterations)
+    : tolerance_(tolerance), refactor_after_(refactor_after), max_iterations_(max_iterations) {}
 DirectEquilibrium::~DirectEquilibrium() = default;
 DirectEquilibrium::DirectEquilibrium(DirectEquilibrium&&) noexcept = default;
 DirectEquilibrium& DirectEquilibrium::operator=(DirectEquilibrium&&) noexcept = default;
@@ -193,73 +184,6 @@ RelaxationResult DirectEquilibrium::solve(const PdSolid& solid, std::vector<doub
   return result;
 }
 
-bool DirectEquilibrium::solve_near(const PdSolid& solid, std::vector<double>& u, const std::vector<double>& dT,
-                                   const std::vector<std::uint32_t>& seeds) {
-  const std::size_t n = solid.size();
-  if (!patch_ || patch_->solid != &solid) {
-    patch_ = std::make_unique<Patch>();
-    patch_->solid = &solid;
-    patch_->cells = std::make_unique<particles::CellList<2>>(solid.position(), solid.law().horizon);
-    patch_->local.assign(n, -1);
-  }
-  Patch& P = *patch_;
-  const double reach = patch_reach_ * solid.law().horizon;
-  for (std::size_t i : P.members) P.local[i] = -1;
-  P.members.clear();
-  const std::size_t limit = n / 4;
-  for (std::uint32_t seed : seeds) {
-    P.cells->for_each_within(solid.position()[seed], reach, [&](std::uint32_t k, double) {
-      if (k >= n || solid.held(k) || P.local[k] >= 0) return;
-      P.local[k] = static_cast<long>(P.members.size());
-      P.members.push_back(k);
-    });
-    if (P.members.size() > limit) return false;
-  }
-  if (P.members.empty()) return true;
-  // The residual force on the patch at u, and the patch's stiffness with
-  // everything outside it held (lower triangle; the same anchor springs).
-  std::vector<double> dT_all, u_all;
-  solid.extend_temperature(dT, dT_all);
-  solid.extend(u, u_all);
-  const auto& V = solid.volume();
-  const auto m = static_cast<Eigen::Index>(2 * P.members.size());
-  Eigen::VectorXd r(m);
-  std::vector<Eigen::Triplet<double>> entries;
-  std::vector<double> diagonal(m, 0.0);
-  for (std::size_t p = 0; p < P.members.size(); ++p) {
-    const std::size_t i = P.members[p];
-    const Vec2 f = solid.force_linear_on(i, u_all, dT_all);
-    r[2 * p] = V[i] * f[0];
-    r[2 * p + 1] = V[i] * f[1];
-    solid.for_each_spring_of(i, [&](std::size_t, long j, const Eigen::Matrix2d& A, double k3, const Vec2& xi) {
-      if (k3 == 0.0) return;
-      const Eigen::Matrix2d B = V[i] * k3 * xi * xi.transpose();
-      const Eigen::Matrix2d BA = B * A;
-      const long q = j >= 0 ? P.local[j] : -1;
-      for (int a = 0; a < 2; ++a) {
-        const long row = 2 * static_cast<long>(p) + a;
-        for (int b = 0; b < 2; ++b) {
-          if (2 * static_cast<long>(p) + b <= row) entries.emplace_back(row, 2 * p + b, B(a, b));
-          if (q >= 0 && 2 * q + b <= row) entries.emplace_back(row, 2 * q + b, -BA(a, b));
-        }
-        diagonal[row] += B(a, a);
-      }
-    });
-  }
-  for (Eigen::Index k = 0; k < m; ++k) entries.emplace_back(k, k, diagonal[k] > 0.0 ? anchor_ * diagonal[k] : 1.0);
-  Eigen::SparseMatrix<double> K(m, m);
-  K.setFromTriplets(entries.begin(), entries.end());
-  // A patch is small: a simplicial factor, no BLAS set-up.
-  const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower> cholesky(K);
-  const Eigen::VectorXd dz = cholesky.solve(r);
-  for (std::size_t p = 0; p < P.members.size(); ++p) {
-    u[2 * P.members[p]] += dz[2 * p];
-    u[2 * P.members[p] + 1] += dz[2 * p + 1];
-  }
-  ++patch_solves_;
-  return true;
-}
-
 RelaxationResult DirectEquilibrium::solve_adjusting(const PdSolid& solid, std::vector<double>& u,
                                                     const std::vector<double>& dT, const std::function<bool()>& adjust) {
   RelaxationResult total;
@@ -269,9 +193,6 @@ RelaxationResult DirectEquilibrium::solve_adjusting(const PdSolid& solid, std::v
     total.converged = r.converged;
     total.increment = r.increment;
     if (!adjust || !adjust()) return total;
-    // The cascade near the broken bonds, while it stays local.
-    while (solve_near(solid, u, dT, solid.last_broken_rows()) && adjust()) {
-    }
   }
 }
 

@@ -289,11 +289,9 @@ std::size_t PdSolid::break_bonds(const std::vector<double>& u, const std::vector
     for (std::size_t e = start_[i]; e < start_[i + 1]; ++e) stiffness_[i] += weight_[e] / length_[e];
   });
   std::size_t broken = 0;
-  last_broken_rows_.clear();
   for (std::size_t i = 0; i < n_; ++i) {
     if (row_broken[i] == 0) continue;
     broken += row_broken[i];
-    last_broken_rows_.push_back(static_cast<std::uint32_t>(i));
     for (std::size_t e = start_[i]; e < start_[i + 1]; ++e)
       if (intact_[e] == 2) {
         intact_[e] = 0;

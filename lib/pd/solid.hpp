@@ -61,20 +61,6 @@ class PdSolid {
   // evaluation is force = thermal + sum_j (w / |xi|^3) (xi . (u_j - u_i)) xi.
   void thermal_force(const std::vector<double>& dT_all, std::vector<double>& force) const;
   void forces_linear(const std::vector<double>& u_all, const std::vector<double>& thermal, std::vector<double>& force) const;
-  // The same force on free particle i alone (linear kinematics, u and dT
-  // at every point): a patch of the solid needs only its own rows.
-  Vec2 force_linear_on(std::size_t i, const std::vector<double>& u_all, const std::vector<double>& dT_all) const {
-    const double half_kT = 0.5 * law_.thermal_stretch_per_K;
-    Vec2 f = Vec2::Zero();
-    for (std::size_t e = start_[i]; e < start_[i + 1]; ++e) {
-      const std::uint32_t k = column_[e];
-      const double eigen = eigen_.empty() ? 0.0 : 0.5 * (eigen_[i] + eigen_[k]);
-      const double thermal = -weight_[e] * (half_kT * (dT_all[i] + dT_all[k]) + eigen) / length_[e];
-      const double elastic = stiffness3_[e] * (xi_[2 * e] * (u_all[2 * k] - u_all[2 * i]) + xi_[2 * e + 1] * (u_all[2 * k + 1] - u_all[2 * i + 1]));
-      f += (thermal + elastic) * Vec2(xi_[2 * e], xi_[2 * e + 1]);
-    }
-    return f;
-  }
   std::size_t points() const { return position_.size(); }
   // u_all (2 per point) and dT_all (1 per point) from the free particles'.
   void extend(const std::vector<double>& u, std::vector<double>& u_all) const;
@@ -155,8 +141,6 @@ class PdSolid {
   void for_each_spring(F&& f) const {
     for (std::size_t i = 0; i < n_; ++i) for_each_spring_of(i, f);
   }
-  // The free particles whose bonds broke in the last break_bonds call.
-  const std::vector<std::uint32_t>& last_broken_rows() const { return last_broken_rows_; }
   // Calls f(i, k, intact) for every bond of the free particles (k a point).
   template <class F>
   void for_each_bond(F&& f) const {
@@ -204,7 +188,6 @@ class PdSolid {
   bool linear_ = true;
   std::vector<double> volume_share_;    // V_j share (damage)
   std::vector<double> volume_;          // free particles'
-  std::vector<std::uint32_t> last_broken_rows_;
   mutable std::vector<std::uint8_t> intact_;
   std::vector<double> stiffness_;
 };

@@ -140,7 +140,6 @@ nlohmann::json MechanicsRun::facts() const {
           {"equilibrium", direct_ ? "direct" : "dynamic_relaxation"},
           {"factorizations", direct_ ? direct_->factorizations() : 0},
           {"direct_solves", direct_ ? direct_->solves() : 0},
-          {"patch_solves", direct_ ? direct_->patch_solves() : 0},
           {"relaxations", relaxations_},
           {"relaxation_iterations", iterations_},
           {"longest_relaxation", largest_},
