@@ -46,7 +46,7 @@ def main():
         print(f"spacing {dx:g} m, {args.threads} threads: {wall:.1f} s wall; {run['particles']} particles, "
               f"{mech['bonds']} bonds, {run['steps']} heat steps, {mech['relaxations']} relaxations, "
               f"{mech['relaxation_iterations']} {kind} iterations (longest {mech['longest_relaxation']}), "
-              f"{mech.get('factorizations', 0)} factorizations, "
+              f"{mech.get('factorizations', 0)} factorizations, {mech.get('direct_solves', 0)} equilibria, "
               f"{mech['broken_bonds']} bonds broken", flush=True)
         for p in s["pores"]:
             print(f"  pore {p['id']}: freezes {p['freezing_start']} .. {p['freezing_end']} s, "
