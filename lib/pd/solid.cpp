@@ -338,7 +338,8 @@ double PdSolid::largest_stretch(const std::vector<double>& u, const std::vector<
 
 std::vector<double> PdSolid::damage() const {
   std::vector<double> phi(n_, 0.0);
-  for (std::size_t i = 0; i < n_; ++i) {
+  // After every equilibrium (the damage record): rows in parallel.
+  particles::for_each_particle(n_, [&](std::size_t i) {
     double all = 0.0, lost = 0.0;
     for (std::size_t e = start_[i]; e < start_[i + 1]; ++e) {
       if (held(source(column_[e]))) continue;  // a loading device, not material
@@ -346,7 +347,7 @@ std::vector<double> PdSolid::damage() const {
       if (!intact_[e]) lost += volume_share_[e];
     }
     phi[i] = all > 0.0 ? lost / all : 0.0;
-  }
+  });
   return phi;
 }
 
