@@ -1,7 +1,6 @@
 #include "pd/equilibrium.hpp"
 
 #include <Eigen/CholmodSupport>
-#include <algorithm>
 #include <cmath>
 
 #include "particles/parallel.hpp"
@@ -141,6 +140,15 @@ RelaxationResult DirectEquilibrium::solve(const PdSolid& solid, std::vector<doub
     F.gather(solid, force, out);
     out = F.anchor.cwiseProduct(x) - out;
   };
+  // RMS of u + P x over the displacements the unknowns move.
+  std::size_t moved = 0;
+  for (long d : F.dof) moved += d >= 0;
+  auto rms_displacement = [&](const Eigen::VectorXd& x) {
+    double s = 0.0;
+    for (std::size_t k = 0; k < F.dof.size(); ++k)
+      if (F.dof[k] >= 0) s += (u[k] + x[F.dof[k]]) * (u[k] + x[F.dof[k]]);
+    return moved ? std::sqrt(s / moved) : 0.0;
+  };
   if (F.unknowns == 0 || r.norm() == 0.0) {
     result.converged = true;
     return result;
@@ -158,16 +166,7 @@ RelaxationResult DirectEquilibrium::solve(const PdSolid& solid, std::vector<doub
     r -= alpha * Kp;
     result.iterations = it + 1;
     // The step's size against the displacement (as the relaxation's test).
-    F.scatter(x, up);
-    const double du = std::abs(alpha) * p.norm() / std::sqrt(double(p.size()));
-    double uu = 0.0;
-    {
-      double s = 0.0;
-      std::size_t count = 0;
-      for (std::size_t k = 0; k < F.dof.size(); ++k)
-        if (F.dof[k] >= 0) s += (u[k] + up[k]) * (u[k] + up[k]), ++count;
-      uu = count ? std::sqrt(s / count) : 0.0;
-    }
+    const double du = std::abs(alpha) * p.norm() / std::sqrt(double(p.size())), uu = rms_displacement(x);
     result.increment = uu > 0.0 ? du / uu : 0.0;
     if (du <= tolerance_ * uu || r.norm() == 0.0) {
       result.converged = true;

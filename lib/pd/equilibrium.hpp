@@ -18,7 +18,6 @@
 // substitution per CG iteration, and usually one to a few.
 #pragma once
 
-#include <cstdint>
 #include <functional>
 #include <memory>
 #include <vector>
@@ -30,8 +29,8 @@ namespace frostwall::pd {
 
 class DirectEquilibrium {
  public:
-  // tolerance: CG stops when the residual force is below this times the
-  // load's (the force the held and thermal loads put on unmoved particles).
+  // tolerance: CG stops when the RMS of its step is below this times the
+  // RMS displacement of the unknowns (the relaxation's test).
   explicit DirectEquilibrium(double tolerance = 1e-8, int refactor_after = 60, int max_iterations = 400);
   ~DirectEquilibrium();
   DirectEquilibrium(DirectEquilibrium&&) noexcept;

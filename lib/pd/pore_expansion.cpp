@@ -66,8 +66,7 @@ void PoreExpansion::prepare(PdSolid& solid) {
   }
 }
 
-void PoreExpansion::apply(PdSolid& solid, const std::vector<double>& f, const std::vector<double>& volume,
-                          std::vector<double>& u) {
+void PoreExpansion::apply(PdSolid& solid, const std::vector<double>& f, const std::vector<double>& volume) {
   if (rim_displacement()) {
     const std::vector<double> F = frozen_fraction(f, volume);
     rim_u_.resize(pores_.size());

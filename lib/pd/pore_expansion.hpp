@@ -35,13 +35,13 @@ class PoreExpansion {
   double free_strain(double phi) const;
   // Each pore's frozen fraction: the volume-weighted mean of 1 - f.
   std::vector<double> frozen_fraction(const std::vector<double>& liquid_fraction, const std::vector<double>& volume) const;
-  // Installs the model on the solid (held pore particles, or the starting
-  // stiffness of liquid pores) and sets u on them for the liquid fractions.
+  // Installs the model on the solid (rim_displacement: the pore particles
+  // held, one rigid group per pore).
   void prepare(PdSolid& solid);
-  // The load at the liquid fractions now: held displacements into u, or
-  // the ice's stiffness and eigenstrain into the solid.
-  void apply(PdSolid& solid, const std::vector<double>& liquid_fraction, const std::vector<double>& volume,
-             std::vector<double>& u);
+  // The load at the liquid fractions now: each pore's rim push (the held
+  // field itself is set by shape) and which pores carry bonds, or the
+  // ice's stiffness and eigenstrain.
+  void apply(PdSolid& solid, const std::vector<double>& liquid_fraction, const std::vector<double>& volume);
   // rim_displacement: sets each pore's held field (the radial push and
   // the matrix's free thermal strain at the pore's mean temperature
   // change dT) on top of the translation the pore has.

@@ -121,25 +121,22 @@ class PdSolid {
   // Volume of each free particle (m^2 per metre of depth).
   const std::vector<double>& volume() const { return volume_; }
   // Calls f(i, j, A, k3, xi) for every bond of free particle i (k3 = 0
-  // once broken or without stiffness), in the linear kinematics' terms: the force density on i is
-  // k3 (xi . (u_k - u_i)) xi, with the far end's displacement u_k = A u_j
+  // once broken or without stiffness), in the linear kinematics' terms:
+  // the force density on i is k3 (xi . (u_k - u_i)) xi, with the far end's displacement u_k = A u_j
   // (j its free particle; A the identity for a free particle, a
   // reflection for a roller image) or, for a held ghost, j = -1 and u_k
   // held. What the direct equilibrium (pd/equilibrium) assembles.
   template <class F>
-  void for_each_spring_of(std::size_t i, F&& f) const {
-    static const Eigen::Matrix2d identity = Eigen::Matrix2d::Identity();
-    for (std::size_t e = start_[i]; e < start_[i + 1]; ++e) {
-      const std::uint32_t k = column_[e];
-      const Vec2 xi(xi_[2 * e], xi_[2 * e + 1]);
-      if (k < n_) f(i, static_cast<long>(k), identity, stiffness3_[e], xi);
-      else if (ghosts_[k - n_].held) f(i, -1L, identity, stiffness3_[e], xi);
-      else f(i, static_cast<long>(ghosts_[k - n_].source), ghosts_[k - n_].map, stiffness3_[e], xi);
-    }
-  }
-  template <class F>
   void for_each_spring(F&& f) const {
-    for (std::size_t i = 0; i < n_; ++i) for_each_spring_of(i, f);
+    static const Eigen::Matrix2d identity = Eigen::Matrix2d::Identity();
+    for (std::size_t i = 0; i < n_; ++i)
+      for (std::size_t e = start_[i]; e < start_[i + 1]; ++e) {
+        const std::uint32_t k = column_[e];
+        const Vec2 xi(xi_[2 * e], xi_[2 * e + 1]);
+        if (k < n_) f(i, static_cast<long>(k), identity, stiffness3_[e], xi);
+        else if (ghosts_[k - n_].held) f(i, -1L, identity, stiffness3_[e], xi);
+        else f(i, static_cast<long>(ghosts_[k - n_].source), ghosts_[k - n_].map, stiffness3_[e], xi);
+      }
   }
   // Calls f(i, k, intact) for every bond of the free particles (k a point).
   template <class F>

@@ -27,7 +27,7 @@ MechanicsRun::MechanicsRun(const project::Project& p, Model& m)
     pores_->prepare(*solid_);
     const auto& model = *m.model;
     f_equilibrium_.assign(model.liquid_fraction().begin(), model.liquid_fraction().begin() + P.n_free);
-    pores_->apply(*solid_, f_equilibrium_, model.volume(), u_);
+    pores_->apply(*solid_, f_equilibrium_, model.volume());
     frozen_equilibrium_ = pores_->frozen_fraction(f_equilibrium_, model.volume());
   }
 }
@@ -69,7 +69,7 @@ void MechanicsRun::update(const thermal::ThermalModel& model, double t, bool for
     for (std::size_t i = 0; i < dT_.size(); ++i) dT_[i] = dT0[i] + lambda * (dT1[i] - dT0[i]);
     if (!pores_) return;
     for (std::size_t i = 0; i < f_load.size(); ++i) f_load[i] = f0[i] + lambda * (f_equilibrium_[i] - f0[i]);
-    pores_->apply(*solid_, f_load, model.volume(), u_);
+    pores_->apply(*solid_, f_load, model.volume());
     pores_->shape(*solid_, dT_, u_);
   };
   std::vector<std::pair<std::uint32_t, std::uint32_t>> ends;
