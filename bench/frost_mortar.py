@@ -8,6 +8,7 @@ iterations, when each pore froze and how much broke, at each spacing asked
   python3 bench/frost_mortar.py              # the full 1 um run
   python3 bench/frost_mortar.py 6e-6 4e-6    # coarser spacings, in order
   python3 bench/frost_mortar.py --end 0.03   # a shorter run
+  python3 bench/frost_mortar.py 2e-6 --fracture-energy 30 --model ice_eigenstrain
 """
 import argparse, json, os, subprocess, tempfile, time
 
@@ -20,6 +21,8 @@ def main():
     ap.add_argument("spacings", nargs="*", type=float, default=[1e-6])
     ap.add_argument("--end", type=float, default=None, help="stop the run here (s)")
     ap.add_argument("--threads", type=int, default=2)
+    ap.add_argument("--fracture-energy", type=float, default=None, help="G0 in J/m2 instead of the project's")
+    ap.add_argument("--model", default=None, help="freezing_expansion model instead of the project's")
     args = ap.parse_args()
     work = tempfile.mkdtemp(prefix="frostwall-frost-bench-")
     with open(os.path.join(ROOT, "projects", "mortar_frost.json")) as f:
@@ -27,6 +30,10 @@ def main():
     for dx in args.spacings:
         project = json.loads(json.dumps(base))
         project["numerics"]["spacing"] = dx
+        if args.fracture_energy:
+            project["mechanics"]["material"]["fracture_energy"] = args.fracture_energy
+        if args.model:
+            project["mechanics"]["freezing_expansion"]["model"] = args.model
         if args.end:
             project["time"] = {"end": args.end, "unit": "s",
                                "snapshots": [t for t in base["time"]["snapshots"] if t < args.end] + [args.end]}

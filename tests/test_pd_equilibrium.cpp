@@ -171,3 +171,45 @@ TEST_CASE("PD direct equilibrium: a crack runs at a fixed load and stops where n
     else CHECK(count > 10);
   }
 }
+
+TEST_CASE("PD direct equilibrium: a crack cascade solved by preconditioned CG breaks what K's own factor every round breaks", "[pd][mechanics][fracture]") {
+  // A disc of held particles pushed out radially in small steps (a pore
+  // as it freezes) in a plate on rollers; radial cracks run from it, in
+  // rounds at each step. The reference factors K after every round, so
+  // each equilibrium is a direct solve; the default reuses an old factor
+  // as CG's preconditioner.
+  const double L = 0.01, dx = L / 36, G0 = 30.0, R = 0.15 * L;
+  const Vec2 centre(0.41 * L, 0.43 * L);
+  const std::vector<double> dT(36 * 36, 0.0);
+  auto run = [&](pd::DirectEquilibrium direct) {
+    auto m = rollers();
+    m.material.fracture_energy = G0;
+    pd::PdSolid solid(test::square_lattice(L, dx), m, pd::make_bond_law(m, 3.015 * dx));
+    std::vector<std::uint8_t> held(solid.size(), 0);
+    for (std::size_t i = 0; i < solid.size(); ++i) held[i] = (solid.position()[i] - centre).norm() <= R;
+    solid.set_held(held);
+    std::vector<double> u(2 * solid.size(), 0.0);
+    std::size_t count = 0;
+    auto adjust = [&] {
+      const std::size_t now = solid.break_bonds(u, dT);
+      count += now;
+      return now > 0;
+    };
+    for (int step = 1; step <= 20; ++step) {
+      const double strain = 0.2 * step * solid.law().critical_stretch;  // to 4 x critical
+      for (std::size_t i = 0; i < solid.size(); ++i)
+        if (held[i]) {
+          const Vec2 r = solid.position()[i] - centre;
+          u[2 * i] = strain * r[0];
+          u[2 * i + 1] = strain * r[1];
+        }
+      REQUIRE(direct.solve_adjusting(solid, u, dT, adjust).converged);
+    }
+    fmt::print("PD disc pushed to 4 x critical hoop strain in 20 steps: {} bonds broken, {} equilibria, {} factorizations\n",
+               count, direct.solves(), direct.factorizations());
+    return count;
+  };
+  const std::size_t reference = run(pd::DirectEquilibrium(1e-8, 0)), preconditioned = run(pd::DirectEquilibrium());
+  REQUIRE(reference > 100);
+  CHECK(std::abs(double(preconditioned) - double(reference)) <= 0.01 * double(reference));
+}

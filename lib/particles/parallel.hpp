@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cstddef>
+#include <omp.h>
 #include <xmmintrin.h>
 
 namespace frostwall::particles {
@@ -20,6 +21,20 @@ void for_each_particle(std::size_t n, Body&& body) {
   const long long count = static_cast<long long>(n);
 #pragma omp parallel for schedule(static) if (n >= parallel_threshold)
   for (long long i = 0; i < count; ++i) body(static_cast<std::size_t>(i));
+}
+
+// Runs body() with OpenMP (and so OpenBLAS, which follows OpenMP's thread
+// count) on one thread: for library calls made of many small BLAS-2
+// operations (a sparse triangular solve), where forking a team for each
+// costs more than it saves.
+template <class Body>
+decltype(auto) serially(Body&& body) {
+  struct Restore {
+    int threads = omp_get_max_threads();
+    ~Restore() { omp_set_num_threads(threads); }
+  } restore;
+  omp_set_num_threads(1);
+  return body();
 }
 
 // A few items of much work each (the rays of a fan): shared among the

@@ -29,8 +29,10 @@ namespace frostwall::pd {
 
 class DirectEquilibrium {
  public:
-  // tolerance: CG stops when the RMS of its step is below this times the
-  // RMS displacement of the unknowns (the relaxation's test).
+  // tolerance: CG stops when the RMS of the error estimate M^-1 r (M the
+  // factored K) is below this times the RMS displacement of the unknowns.
+  // refactor_after: CG iterations after which the next solve factors K
+  // again; 0: factor K whenever it changed, so every solve is direct.
   explicit DirectEquilibrium(double tolerance = 1e-8, int refactor_after = 60, int max_iterations = 400);
   ~DirectEquilibrium();
   DirectEquilibrium(DirectEquilibrium&&) noexcept;

@@ -131,17 +131,21 @@ void PdSolid::set_eigenstrain(const std::vector<double>& eigenstrain) {
 }
 
 void PdSolid::set_stiffness_ratio(const std::vector<double>& ratio) {
+  std::vector<std::uint8_t> changed(n_, 0);
   particles::for_each_particle(n_, [&](std::size_t i) {
     double sum = 0.0;
     for (std::size_t e = start_[i]; e < start_[i + 1]; ++e) {
       const double ri = ratio[i], rj = ratio[source(column_[e])];
       const double series = ri + rj > 0.0 ? 2.0 * ri * rj / (ri + rj) : 0.0;
-      weight_[e] = intact_[e] ? matrix_weight_[e] * series : 0.0;
+      const double w = intact_[e] ? matrix_weight_[e] * series : 0.0;
+      changed[i] |= w != weight_[e];
+      weight_[e] = w;
       stiffness3_[e] = weight_[e] / (length_[e] * length_[e] * length_[e]);
       sum += weight_[e] / length_[e];
     }
     stiffness_[i] = sum;
   });
+  if (std::find(changed.begin(), changed.end(), 1) != changed.end()) ++stiffness_version_;
 }
 
 std::size_t PdSolid::intact_bonds() const {
@@ -291,6 +295,7 @@ std::size_t PdSolid::break_bonds(const std::vector<double>& u, const std::vector
   std::size_t broken = 0;
   for (std::size_t i = 0; i < n_; ++i) {
     if (row_broken[i] == 0) continue;
+    ++stiffness_version_;
     broken += row_broken[i];
     for (std::size_t e = start_[i]; e < start_[i + 1]; ++e)
       if (intact_[e] == 2) {
@@ -313,6 +318,7 @@ std::size_t PdSolid::cut(const Vec2& a, const Vec2& b) {
         intact_[e] = 0;
         weight_[e] = stiffness3_[e] = 0.0;
         ++broken;
+        ++stiffness_version_;
       }
     }
   return broken;

@@ -108,11 +108,21 @@ class PdSolid {
   void set_stiffness_ratio(const std::vector<double>& ratio);
   // Held particles take the displacement they are given (the relaxation
   // leaves them): a loading device, so their bonds never break.
-  void set_held(std::vector<std::uint8_t> held) { held_ = std::move(held); }
+  void set_held(std::vector<std::uint8_t> held) {
+    held_ = std::move(held);
+    ++stiffness_version_;
+  }
   bool held(std::size_t i) const { return !held_.empty() && held_[i]; }
   // Held particles that move together, rigidly, under the sum of their
   // forces (the relaxation gives each group one degree of freedom per axis).
-  void set_groups(std::vector<std::vector<std::size_t>> groups) { groups_ = std::move(groups); }
+  void set_groups(std::vector<std::vector<std::size_t>> groups) {
+    groups_ = std::move(groups);
+    ++stiffness_version_;
+  }
+  // Changes whenever the stiffness does (a bond broke, a material's
+  // stiffness changed, held particles or groups changed): a factor of K
+  // made at the same version is K's exact factor.
+  std::uint64_t stiffness_version() const { return stiffness_version_; }
   const std::vector<std::vector<std::size_t>>& groups() const { return groups_; }
   // Whether the relaxation moves free particle i: not held and bonded.
   bool moves(std::size_t i) const { return (held_.empty() || !held_[i]) && stiffness_[i] > 0.0; }
@@ -187,6 +197,7 @@ class PdSolid {
   std::vector<double> volume_;          // free particles'
   mutable std::vector<std::uint8_t> intact_;
   std::vector<double> stiffness_;
+  std::uint64_t stiffness_version_ = 0;
 };
 
 }  // namespace frostwall::pd

@@ -108,8 +108,12 @@ void MechanicsRun::update(const thermal::ThermalModel& model, double t, bool for
     relax(false);
     const std::vector<double> s1 = solid_->breakable_stretches(u_, dT_);
     double first = 1.0;
-    for (std::size_t e = 0; e < s1.size(); ++e)
-      if (s1[e] > critical && std::isfinite(s0[e])) first = std::min(first, s0[e] >= critical ? 0.0 : (critical - s0[e]) / (s1[e] - s0[e]));
+    bool breaks = false;
+    for (std::size_t e = 0; e < s1.size(); ++e) {
+      if (s1[e] <= critical) continue;
+      breaks = true;
+      if (std::isfinite(s0[e])) first = std::min(first, s0[e] >= critical ? 0.0 : (critical - s0[e]) / (s1[e] - s0[e]));
+    }
     if (first < 1.0) {
       const double lambda = std::min(1.0, first * (1.0 + 1e-6) + 1e-9);
       for (std::size_t k = 0; k < u_.size(); ++k) u_[k] = u0[k] + lambda * (u_[k] - u0[k]);
@@ -122,7 +126,8 @@ void MechanicsRun::update(const thermal::ThermalModel& model, double t, bool for
       relax(true);
       set_load(1.0);
     }
-    relax(true);
+    // Nothing beyond critical at the full load: that equilibrium stands.
+    if (breaks) relax(true);
   }
   if (after_equilibrium) after_equilibrium(t);
 }
