@@ -1,0 +1,54 @@
+// One embedded LAMMPS instance (Debian liblammps, GRANULAR package) on an
+// MPI communicator, driven through its documented C library API. Every
+// command goes through command(), which keeps it, so the exact input a
+// run sent can be written to the output folder (dem_commands.txt) and
+// replayed with LAMMPS's own executable. This build of LAMMPS aborts the
+// process on an input error: callers send only commands made from
+// validated project structs.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace frostwall::dem {
+
+class LammpsSession {
+ public:
+  // On MPI_COMM_WORLD; initialises MPI if nobody has (one rank without
+  // mpirun). LAMMPS writes no log file and nothing to the screen.
+  LammpsSession();
+  ~LammpsSession();
+  LammpsSession(const LammpsSession&) = delete;
+  LammpsSession& operator=(const LammpsSession&) = delete;
+
+  void command(const std::string& line);
+  const std::vector<std::string>& commands() const { return commands_; }
+  // Runs n steps (no set-up output; the forces are rebuilt at the start).
+  void run(long steps);
+
+  // This rank's grains (LAMMPS's per-atom arrays; valid until the next
+  // command or run).
+  int local_count() const;
+  double** position() const;
+  double** velocity() const;
+  double* radius() const;
+  double* mass() const;
+  double time() const;  // simulated time since the box was made (s)
+
+  // A force added to every local grain each step through `fix external`
+  // (the fix must have been made with command(), pf/callback): f(n, x, F)
+  // fills F[i][0..2] in newtons for the n local grains at positions x.
+  using ForceFunction = std::function<void(int n, double** x, double** force)>;
+  void set_external_force(const std::string& fix_id, ForceFunction f);
+
+ private:
+  static void callback(void* self, std::int64_t step, int n, int* ids, double** x, double** force);
+  void* lammps_ = nullptr;
+  std::vector<std::string> commands_;
+  ForceFunction force_;
+};
+
+}  // namespace frostwall::dem
