@@ -1,0 +1,25 @@
+#include "porous_flow/bed_resistance.hpp"
+
+#include <cmath>
+#include <numbers>
+
+namespace frostwall::porous_flow {
+
+double ergun_gradient(const Fluid& fluid, double e, double d, double U) {
+  const double s = 1.0 - e, e3 = e * e * e;
+  return 150.0 * fluid.viscosity * s * s * U / (e3 * d * d) + 1.75 * fluid.density * s * std::abs(U) * U / (e3 * d);
+}
+
+double wen_yu_gradient(const Fluid& fluid, double e, double d, double U) {
+  if (U == 0.0) return 0.0;
+  const double Re = fluid.density * std::abs(U) * d / fluid.viscosity;
+  const double Cd = Re < 1000.0 ? 24.0 / Re * (1.0 + 0.15 * std::pow(Re, 0.687)) : 0.44;
+  return 0.75 * Cd * fluid.density * (1.0 - e) * std::abs(U) * U * std::pow(e, -2.65) / (e * e * d);
+}
+
+double bed_gradient(const Fluid& fluid, double e, double d, double U) {
+  const double phi = 0.5 + std::atan(262.5 * ((1.0 - e) - 0.2)) / std::numbers::pi;
+  return phi * ergun_gradient(fluid, e, d, U) + (1.0 - phi) * wen_yu_gradient(fluid, e, d, U);
+}
+
+}  // namespace frostwall::porous_flow
