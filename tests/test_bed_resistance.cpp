@@ -4,7 +4,8 @@
 //    rho_f 10, nu 1.5e-4): dP = 23.0, 115.1, 230.5 Pa at U = 0.002, 0.01,
 //    0.02 m/s (issue 15, check 2's reference values);
 //  - Wen-Yu's dilute limit: the Schiller-Naumann drag of the grains in a
-//    unit volume (porous_flow/drag_law.hpp, a separate code path);
+//    unit volume, summed grain by grain (porous_flow/drag_law.hpp; the
+//    drag coefficient is shared, the voidage, grain count and area not);
 //  - the blend is Ergun in dense beds, Wen-Yu in dilute ones, and has no
 //    jump at porosity 0.8.
 #include <catch2/catch.hpp>

@@ -14,7 +14,7 @@ std::vector<std::string> box_commands(const Box& box, const Contact& contact, do
           fmt::format("region domain block {:.17g} {:.17g} {:.17g} {:.17g} {:.17g} {:.17g} units box", box.low[0],
                       box.high[0], box.low[1], box.high[1], box.low[2], box.high[2]),
           "create_box 1 domain",
-          fmt::format("pair_style granular"),
+          "pair_style granular",
           fmt::format("pair_coeff * * hertz/material {:.17g} {:.17g} {:.17g} tangential linear_nohistory 1.0 {:.17g}",
                       contact.youngs_modulus, contact.normal_damping, contact.poisson_ratio, contact.friction),
           fmt::format("neighbor {:.17g} bin", skin)};

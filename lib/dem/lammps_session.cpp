@@ -41,12 +41,7 @@ void LammpsSession::run(long steps) {
   command("run " + std::to_string(steps) + " pre no post no");
 }
 
-int LammpsSession::local_count() const { return static_cast<int>(lammps_extract_setting(lammps_, "nlocal")); }
-double** LammpsSession::position() const { return static_cast<double**>(lammps_extract_atom(lammps_, "x")); }
 double** LammpsSession::velocity() const { return static_cast<double**>(lammps_extract_atom(lammps_, "v")); }
-double* LammpsSession::radius() const { return static_cast<double*>(lammps_extract_atom(lammps_, "radius")); }
-double* LammpsSession::mass() const { return static_cast<double*>(lammps_extract_atom(lammps_, "rmass")); }
-double LammpsSession::time() const { return lammps_get_thermo(lammps_, "time"); }
 
 void LammpsSession::set_external_force(const std::string& fix_id, ForceFunction f) {
   force_ = std::move(f);

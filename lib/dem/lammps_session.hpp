@@ -29,14 +29,9 @@ class LammpsSession {
   // Runs n steps (no set-up output; the forces are rebuilt at the start).
   void run(long steps);
 
-  // This rank's grains (LAMMPS's per-atom arrays; valid until the next
-  // command or run).
-  int local_count() const;
-  double** position() const;
+  // This rank's grains' velocities (LAMMPS's per-atom array; valid until
+  // the next command or run).
   double** velocity() const;
-  double* radius() const;
-  double* mass() const;
-  double time() const;  // simulated time since the box was made (s)
 
   // A force added to every local grain each step through `fix external`
   // (the fix must have been made with command(), pf/callback): f(n, x, F)

@@ -162,50 +162,56 @@ RelaxationResult DirectEquilibrium::solve(const PdSolid& solid, std::vector<doub
     result.converged = true;
     return result;
   }
-  z = particles::serially([&] { return Eigen::VectorXd(F.cholesky.solve(r)); });
-  if (F.version == solid.stiffness_version()) {
-    // The factor is K's own (nothing changed since): z is the answer, to
-    // rounding; a CG step would only confirm it at the cost of a second
-    // back substitution.
-    F.scatter(z, up);
-    for (std::size_t k = 0; k < u.size(); ++k) u[k] += up[k];
+  // One back substitution with the kept factor (on one thread: many
+  // small BLAS-2 calls).
+  auto precondition = [&](const Eigen::VectorXd& v) {
+    return particles::serially([&] { return Eigen::VectorXd(F.cholesky.solve(v)); });
+  };
+  z = precondition(r);
+  Eigen::VectorXd x;
+  // The factor is K's own (nothing changed since): z is the answer, to
+  // rounding; a CG step would only confirm it at the cost of a second
+  // back substitution.
+  const bool exact = F.version == solid.stiffness_version();
+  if (exact) {
+    x = z;
     result.iterations = 1;
     result.converged = true;
-    return result;
-  }
-  p = z;
-  double rz = r.dot(z);
-  Eigen::VectorXd x = Eigen::VectorXd::Zero(r.size());
-  for (int it = 0; it < max_iterations_; ++it) {
-    apply(p, Kp);
-    const double pKp = p.dot(Kp);
-    if (!(pKp > 0.0)) break;
-    const double alpha = rz / pKp;
-    x += alpha * p;
-    r -= alpha * Kp;
-    result.iterations = it + 1;
-    // The test is on z = M^-1 r, the error left as the factor sees it,
-    // not on the step just taken: after bonds break, a step of CG
-    // preconditioned by the factor of the unbroken K can be small while
-    // the crack tip is still far from equilibrium, and a cascade judged on
-    // it stops early (a 120 x 80 um plate with two pores at 2 um: 5 768
-    // bonds broken against 6 632 with K's own factor every round; this
-    // test: 6 630).
-    z = particles::serially([&] { return Eigen::VectorXd(F.cholesky.solve(r)); });
-    const double du = z.norm() / std::sqrt(double(z.size())), uu = rms_displacement(x);
-    result.increment = uu > 0.0 ? du / uu : 0.0;
-    if (du <= tolerance_ * uu || r.norm() == 0.0) {
-      x += z;  // the next correction, as good as the estimate
-      result.converged = true;
-      break;
+  } else {
+    p = z;
+    double rz = r.dot(z);
+    x = Eigen::VectorXd::Zero(r.size());
+    for (int it = 0; it < max_iterations_; ++it) {
+      apply(p, Kp);
+      const double pKp = p.dot(Kp);
+      if (!(pKp > 0.0)) break;
+      const double alpha = rz / pKp;
+      x += alpha * p;
+      r -= alpha * Kp;
+      result.iterations = it + 1;
+      // The test is on z = M^-1 r, the error left as the factor sees it,
+      // not on the step just taken: after bonds break, a step of CG
+      // preconditioned by the factor of the unbroken K can be small while
+      // the crack tip is still far from equilibrium, and a cascade judged
+      // on it stops early (a 120 x 80 um plate with two pores at 2 um:
+      // 5 768 bonds broken against 6 632 with K's own factor every round;
+      // this test: 6 630).
+      z = precondition(r);
+      const double du = z.norm() / std::sqrt(double(z.size())), uu = rms_displacement(x);
+      result.increment = uu > 0.0 ? du / uu : 0.0;
+      if (du <= tolerance_ * uu || r.norm() == 0.0) {
+        x += z;  // the next correction, as good as the estimate
+        result.converged = true;
+        break;
+      }
+      const double rz_new = r.dot(z);
+      p = z + (rz_new / rz) * p;
+      rz = rz_new;
     }
-    const double rz_new = r.dot(z);
-    p = z + (rz_new / rz) * p;
-    rz = rz_new;
   }
   F.scatter(x, up);
   for (std::size_t k = 0; k < u.size(); ++k) u[k] += up[k];
-  if (result.iterations > refactor_after_) stale_ = true;
+  if (!exact && result.iterations > refactor_after_) stale_ = true;
   return result;
 }
 

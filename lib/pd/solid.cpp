@@ -295,7 +295,6 @@ std::size_t PdSolid::break_bonds(const std::vector<double>& u, const std::vector
   std::size_t broken = 0;
   for (std::size_t i = 0; i < n_; ++i) {
     if (row_broken[i] == 0) continue;
-    ++stiffness_version_;
     broken += row_broken[i];
     for (std::size_t e = start_[i]; e < start_[i + 1]; ++e)
       if (intact_[e] == 2) {
@@ -303,6 +302,7 @@ std::size_t PdSolid::break_bonds(const std::vector<double>& u, const std::vector
         if (newly_broken && column_[e] < n_) newly_broken->emplace_back(static_cast<std::uint32_t>(i), column_[e]);
       }
   }
+  if (broken) ++stiffness_version_;
   return broken;
 }
 
@@ -318,9 +318,9 @@ std::size_t PdSolid::cut(const Vec2& a, const Vec2& b) {
         intact_[e] = 0;
         weight_[e] = stiffness3_[e] = 0.0;
         ++broken;
-        ++stiffness_version_;
       }
     }
+  if (broken) ++stiffness_version_;
   return broken;
 }
 

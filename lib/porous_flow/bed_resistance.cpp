@@ -13,7 +13,7 @@ double ergun_gradient(const Fluid& fluid, double e, double d, double U) {
 double wen_yu_gradient(const Fluid& fluid, double e, double d, double U) {
   if (U == 0.0) return 0.0;
   const double Re = fluid.density * std::abs(U) * d / fluid.viscosity;
-  const double Cd = Re < 1000.0 ? 24.0 / Re * (1.0 + 0.15 * std::pow(Re, 0.687)) : 0.44;
+  const double Cd = schiller_naumann_cd(Re);
   return 0.75 * Cd * fluid.density * (1.0 - e) * std::abs(U) * U * std::pow(e, -2.65) / (e * e * d);
 }
 

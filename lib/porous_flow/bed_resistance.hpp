@@ -6,7 +6,7 @@
 //  - Ergun (1952): -dp/dx = 150 mu (1 - e)^2 U / (e^3 d^2)
 //                          + 1.75 rho (1 - e) U^2 / (e^3 d), dense beds;
 //  - Wen & Yu (1966): -dp/dx = 3/4 Cd rho (1 - e) U^2 e^-2.65 / (e^2 d),
-//    Cd = 24 / Re (1 + 0.15 Re^0.687) (0.44 above Re 1000), Re = rho U d / mu,
+//    Cd Schiller-Naumann's on Re = rho U d / mu,
 //    dilute beds: at porosity 1 the grains' Schiller-Naumann drag;
 //  - blended (Huilin & Gidaspow 2003): phi Ergun + (1 - phi) Wen-Yu with
 //    phi = 1/2 + arctan(262.5 ((1 - e) - 0.2)) / pi, so the switch at

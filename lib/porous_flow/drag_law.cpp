@@ -6,11 +6,13 @@
 namespace frostwall::porous_flow {
 
 namespace {
-// Re on the superficial slip, and |slip|.
+// Re on the superficial slip (porosity x the interstitial speed).
 double reynolds(const Fluid& fluid, double d, double porosity, double speed) {
   return fluid.density * porosity * speed * d / fluid.viscosity;
 }
 }  // namespace
+
+double schiller_naumann_cd(double Re) { return Re < 1000.0 ? 24.0 / Re * (1.0 + 0.15 * std::pow(Re, 0.687)) : 0.44; }
 
 Vec3 DiFeliceDrag::force(const Fluid& fluid, double d, double porosity, const Vec3& slip) const {
   const double speed = slip.norm();
@@ -26,15 +28,9 @@ Vec3 SchillerNaumannDrag::force(const Fluid& fluid, double d, double porosity, c
   const double speed = slip.norm();
   if (speed == 0.0) return Vec3::Zero();
   const double Re = reynolds(fluid, d, porosity, speed);
-  const double Cd = Re < 1000.0 ? 24.0 / Re * (1.0 + 0.15 * std::pow(Re, 0.687)) : 0.44;
+  const double Cd = schiller_naumann_cd(Re);
   const double area = 0.25 * std::numbers::pi * d * d;
   return 0.5 * Cd * fluid.density * area * speed * slip;
-}
-
-std::unique_ptr<DragLaw> make_drag_law(const std::string& name) {
-  if (name == "difelice_drag") return std::make_unique<DiFeliceDrag>();
-  if (name == "schiller_naumann_drag") return std::make_unique<SchillerNaumannDrag>();
-  return nullptr;
 }
 
 }  // namespace frostwall::porous_flow

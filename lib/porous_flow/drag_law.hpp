@@ -1,13 +1,10 @@
-// Fluid drag on one grain: one small type per law, chosen by name
-// (CFDEMcoupling's subModels style). Velocities are explicit about their
+// Fluid drag on one grain: one small type per law (CFDEMcoupling's
+// subModels style; the project will choose one by name). Velocities are explicit about their
 // kind: `slip` is the interstitial slip u_f - u_p (the fluid's velocity in
 // the pores minus the grain's); the superficial (Darcy) slip is
 // porosity x slip. The Reynolds number is the grain's on the superficial
 // slip, Re = rho_f eps |u_f - u_p| d / mu (Di Felice 1994).
 #pragma once
-
-#include <memory>
-#include <string>
 
 #include "particles/vec.hpp"
 
@@ -20,13 +17,16 @@ struct Fluid {
   double viscosity = 1e-3;   // dynamic, Pa s
 };
 
+// Schiller & Naumann's drag coefficient of a sphere: 24 / Re (1 + 0.15
+// Re^0.687) below Re 1000, 0.44 above.
+double schiller_naumann_cd(double reynolds);
+
 class DragLaw {
  public:
   virtual ~DragLaw() = default;
   // The drag force (N) on a grain of diameter d at the given porosity
   // round it and interstitial slip velocity.
   virtual Vec3 force(const Fluid& fluid, double diameter, double porosity, const Vec3& slip) const = 0;
-  virtual std::string name() const = 0;
 };
 
 // Di Felice (1994): F = 1/2 Cd rho_f (pi d^2 / 4) eps^2 |v| v eps^(-chi),
@@ -35,19 +35,12 @@ class DragLaw {
 class DiFeliceDrag final : public DragLaw {
  public:
   Vec3 force(const Fluid& fluid, double diameter, double porosity, const Vec3& slip) const override;
-  std::string name() const override { return "difelice_drag"; }
 };
 
-// Schiller & Naumann (1933), a single sphere: Cd = 24 / Re (1 + 0.15
-// Re^0.687) below Re 1000, 0.44 above; no voidage function.
+// Schiller & Naumann (1933), a single sphere; no voidage function.
 class SchillerNaumannDrag final : public DragLaw {
  public:
   Vec3 force(const Fluid& fluid, double diameter, double porosity, const Vec3& slip) const override;
-  std::string name() const override { return "schiller_naumann_drag"; }
 };
-
-// The law of that name; nullptr for an unknown name (the loader names the
-// allowed ones).
-std::unique_ptr<DragLaw> make_drag_law(const std::string& name);
 
 }  // namespace frostwall::porous_flow
