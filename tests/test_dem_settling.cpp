@@ -37,7 +37,7 @@ std::vector<double> settle(const porous_flow::DragLaw& law, const porous_flow::F
   for (const auto& c : dem::grain_commands({{0.0, 0.0, height - 5 * d}, d, rho_p}, 1)) lammps.command(c);
   for (const auto& c : dem::motion_commands(g, timestep)) lammps.command(c);
   const double volume = std::numbers::pi * d * d * d / 6.0;
-  lammps.set_external_force(dem::fluid_fix, [&](int n, double**, double** force) {
+  lammps.set_external_force(dem::fluid_fix, [&](int n, const int*, double**, double** force) {
     double** v = lammps.velocity();
     for (int i = 0; i < n; ++i) {
       // Still fluid: the slip is minus the grain's velocity.

@@ -1,23 +1,49 @@
 #include "dem/commands.hpp"
 
+#include <cmath>
 #include <fmt/core.h>
 
 namespace frostwall::dem {
 
-std::vector<std::string> box_commands(const Box& box, const Contact& contact, double skin) {
+namespace {
+// The contact model's words, shared by pair_coeff and the walls.
+std::string contact_model(const Contact& c) {
+  std::string model = fmt::format("hertz/material {:.17g} {:.17g} {:.17g} damping tsuji tangential mindlin NULL 1.0 {:.17g}",
+                                  c.youngs_modulus, c.restitution, c.poisson_ratio, c.friction);
+  if (c.rolling_friction > 0.0)
+    model += fmt::format(" rolling sds {:.17g} 0.0 {:.17g}", c.rolling_stiffness, c.rolling_friction);
+  return model;
+}
+}  // namespace
+
+std::vector<std::string> setup_commands(const Box& box) {
   auto bc = [&](int k) { return box.periodic[k] ? "p" : "f"; };
-  return {"units si",
-          "atom_style sphere",
-          fmt::format("boundary {} {} {}", bc(0), bc(1), bc(2)),
-          "newton off",
-          "comm_modify vel yes",
-          fmt::format("region domain block {:.17g} {:.17g} {:.17g} {:.17g} {:.17g} {:.17g} units box", box.low[0],
+  return {"units si", "atom_style sphere", "atom_modify map array",
+          fmt::format("boundary {} {} {}", bc(0), bc(1), bc(2)), "newton off", "comm_modify vel yes"};
+}
+
+std::vector<std::string> create_box_commands(const Box& box) {
+  return {fmt::format("region domain block {:.17g} {:.17g} {:.17g} {:.17g} {:.17g} {:.17g} units box", box.low[0],
                       box.high[0], box.low[1], box.high[1], box.low[2], box.high[2]),
-          "create_box 1 domain",
-          "pair_style granular",
-          fmt::format("pair_coeff * * hertz/material {:.17g} {:.17g} {:.17g} tangential linear_nohistory 1.0 {:.17g}",
-                      contact.youngs_modulus, contact.normal_damping, contact.poisson_ratio, contact.friction),
-          fmt::format("neighbor {:.17g} bin", skin)};
+          "create_box 1 domain"};
+}
+
+std::vector<std::string> contact_commands(const Box& box, const Contact& contact, double skin) {
+  std::vector<std::string> c = {"pair_style granular", "pair_coeff * * " + contact_model(contact)};
+  for (int k = 0; k < 3; ++k)
+    if (!box.periodic[k])
+      c.push_back(fmt::format("fix wall_{0} all wall/gran granular {1} {0}plane {2:.17g} {3:.17g}", "xyz"[k],
+                              contact_model(contact), box.low[k], box.high[k]));
+  c.push_back(fmt::format("neighbor {:.17g} bin", skin));
+  c.push_back(fmt::format("compute {} all contact/atom", contact_compute));
+  return c;
+}
+
+std::vector<std::string> box_commands(const Box& box, const Contact& contact, double skin) {
+  auto c = setup_commands(box);
+  for (auto&& s : create_box_commands(box)) c.push_back(std::move(s));
+  for (auto&& s : contact_commands(box, contact, skin)) c.push_back(std::move(s));
+  return c;
 }
 
 std::vector<std::string> grain_commands(const Grain& g, long id) {
@@ -25,11 +51,36 @@ std::vector<std::string> grain_commands(const Grain& g, long id) {
           fmt::format("set atom {} diameter {:.17g} density {:.17g}", id, g.diameter, g.density)};
 }
 
+std::string data_file(const Box& box, const std::vector<Grain>& grains) {
+  std::string text = fmt::format("frostwall grains (LAMMPS data file, atom_style sphere)\n\n{} atoms\n1 atom types\n\n", grains.size());
+  for (int k = 0; k < 3; ++k)
+    text += fmt::format("{:.17g} {:.17g} {}lo {}hi\n", box.low[k], box.high[k], "xyz"[k], "xyz"[k]);
+  text += "\nAtoms # sphere\n\n";
+  for (std::size_t i = 0; i < grains.size(); ++i) {
+    const auto& g = grains[i];
+    text += fmt::format("{} 1 {:.17g} {:.17g} {:.17g} {:.17g} {:.17g}\n", i + 1, g.diameter, g.density, g.position[0],
+                        g.position[1], g.position[2]);
+  }
+  return text;
+}
+
+std::string read_data_command(const std::string& file) { return "read_data " + file; }
+std::string write_data_command(const std::string& file) { return "write_data " + file + " nocoeff"; }
+
+std::vector<std::string> motion_commands(const std::array<double, 3>& g, double timestep, bool held) {
+  const double magnitude = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
+  std::vector<std::string> c;
+  if (magnitude > 0.0)
+    c.push_back(fmt::format("fix gravity all gravity {:.17g} vector {:.17g} {:.17g} {:.17g}", magnitude,
+                            g[0] / magnitude, g[1] / magnitude, g[2] / magnitude));
+  c.push_back(fmt::format("fix {} all external pf/callback 1 1", fluid_fix));
+  if (!held) c.push_back("fix move all nve/sphere");
+  c.push_back(fmt::format("timestep {:.17g}", timestep));
+  return c;
+}
+
 std::vector<std::string> motion_commands(double gravity, double timestep) {
-  return {fmt::format("fix gravity all gravity {:.17g} vector 0 0 -1", gravity),
-          fmt::format("fix {} all external pf/callback 1 1", fluid_fix),
-          "fix move all nve/sphere",
-          fmt::format("timestep {:.17g}", timestep)};
+  return motion_commands({0.0, 0.0, -gravity}, timestep);
 }
 
 }  // namespace frostwall::dem

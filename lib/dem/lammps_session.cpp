@@ -1,5 +1,6 @@
 #include "dem/lammps_session.hpp"
 
+#include <cmath>
 #include <cstdint>
 #include <cstdlib>
 #include <mpi.h>
@@ -11,21 +12,36 @@
 
 namespace frostwall::dem {
 
-LammpsSession::LammpsSession() {
+void ensure_mpi() {
   int initialised = 0;
   MPI_Initialized(&initialised);
-  if (!initialised) {
-    MPI_Init(nullptr, nullptr);
-    // Finalised once, at exit, however many sessions a process made.
-    std::atexit([] {
-      int finalised = 0;
-      MPI_Finalized(&finalised);
-      if (!finalised) MPI_Finalize();
-    });
-  }
-  const char* args[] = {"frostwall", "-log", "none", "-screen", "none", "-nocite"};
+  if (initialised) return;
+  MPI_Init(nullptr, nullptr);
+  // Finalised once, at exit, however many sessions a process made.
+  std::atexit([] {
+    int finalised = 0;
+    MPI_Finalized(&finalised);
+    if (!finalised) MPI_Finalize();
+  });
+}
+
+int world_rank() {
+  ensure_mpi();
+  int rank = 0;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  return rank;
+}
+
+void world_barrier() { MPI_Barrier(MPI_COMM_WORLD); }
+
+LammpsSession::LammpsSession(const std::string& log_file) {
+  ensure_mpi();
+  const std::string log = log_file.empty() ? "none" : log_file;
+  const char* args[] = {"frostwall", "-log", log.c_str(), "-screen", "none", "-nocite"};
   lammps_ = lammps_open(6, const_cast<char**>(args), MPI_COMM_WORLD, nullptr);
   if (!lammps_) throw std::runtime_error("LAMMPS could not be started");
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
+  MPI_Comm_size(MPI_COMM_WORLD, &ranks_);
 }
 
 LammpsSession::~LammpsSession() {
@@ -41,16 +57,24 @@ void LammpsSession::run(long steps) {
   command("run " + std::to_string(steps) + " pre no post no");
 }
 
+int LammpsSession::local_count() const { return lammps_extract_setting(lammps_, "nlocal"); }
+int* LammpsSession::ids() const { return static_cast<int*>(lammps_extract_atom(lammps_, "id")); }
+double** LammpsSession::position() const { return static_cast<double**>(lammps_extract_atom(lammps_, "x")); }
 double** LammpsSession::velocity() const { return static_cast<double**>(lammps_extract_atom(lammps_, "v")); }
+double* LammpsSession::radius() const { return static_cast<double*>(lammps_extract_atom(lammps_, "radius")); }
+double* LammpsSession::contacts() const {
+  return static_cast<double*>(lammps_extract_compute(lammps_, "contacts", LMP_STYLE_ATOM, LMP_TYPE_VECTOR));
+}
+long LammpsSession::grain_count() const { return std::lround(lammps_get_natoms(lammps_)); }
 
 void LammpsSession::set_external_force(const std::string& fix_id, ForceFunction f) {
   force_ = std::move(f);
   lammps_set_fix_external_callback(lammps_, fix_id.c_str(), &LammpsSession::callback, this);
 }
 
-void LammpsSession::callback(void* self, std::int64_t, int n, int*, double** x, double** force) {
+void LammpsSession::callback(void* self, std::int64_t, int n, int* ids, double** x, double** force) {
   auto* session = static_cast<LammpsSession*>(self);
-  if (session->force_) session->force_(n, x, force);
+  if (session->force_) session->force_(n, ids, x, force);
 }
 
 }  // namespace frostwall::dem

@@ -13,6 +13,7 @@
 #include <fmt/format.h>
 
 #include "project/json_reader.hpp"
+#include "project/load_cfd_dem.hpp"
 #include "project/load_pores.hpp"
 #include "project/load_reports.hpp"
 #include "project/project.hpp"
@@ -25,6 +26,39 @@ using detail::check_sensors_inside;
 using detail::read_design;
 using detail::read_monitoring;
 using detail::read_output;
+using detail::read_time;
+
+TimeSettings detail::read_time(const Node& n) {
+  TimeSettings time;
+  if (!n.object({"end", "unit", "snapshots"})) return time;
+  const auto end = n["end"].required().positive();
+  time.unit = n["unit"].required().choice<TimeUnit>("time unit", {{"s", TimeUnit::s}, {"h", TimeUnit::h}, {"d", TimeUnit::d}})
+                  .value_or(TimeUnit::d);
+  const double unit = time.unit_seconds();
+  time.end = end.value_or(0.0) * unit;
+  const Node snapshots = n["snapshots"];
+  if (!snapshots.present()) {
+    time.snapshots = {time.end};  // at least the final state
+    return time;
+  }
+  std::optional<double> previous;  // the last accepted snapshot
+  const std::size_t size = snapshots.array().value_or(0);
+  for (std::size_t i = 0; i < size; ++i) {
+    const Node s = snapshots[i];
+    const auto t = s.number();
+    if (!t) continue;
+    if (*t <= 0 || (end && *t > *end)) {
+      s.problem(fmt::format("must be after 0 and no later than time.end ({}), got {}", end.value_or(0.0), *t));
+    } else if (previous && *t <= *previous) {
+      s.problem(fmt::format("must be ascending, got {} after {}", *t, *previous));
+    } else {
+      time.snapshots.push_back(*t * unit);
+      previous = *t;
+    }
+  }
+  return time;
+}
+
 
 namespace {
 
@@ -254,36 +288,6 @@ Rectangle read_rectangle(const Node& n) {
   return rectangle;
 }
 
-TimeSettings read_time(const Node& n) {
-  TimeSettings time;
-  if (!n.object({"end", "unit", "snapshots"})) return time;
-  const auto end = n["end"].required().positive();
-  time.unit = n["unit"].required().choice<TimeUnit>("time unit", {{"s", TimeUnit::s}, {"h", TimeUnit::h}, {"d", TimeUnit::d}})
-                  .value_or(TimeUnit::d);
-  const double unit = time.unit_seconds();
-  time.end = end.value_or(0.0) * unit;
-  const Node snapshots = n["snapshots"];
-  if (!snapshots.present()) {
-    time.snapshots = {time.end};  // at least the final state
-    return time;
-  }
-  std::optional<double> previous;  // the last accepted snapshot
-  const std::size_t size = snapshots.array().value_or(0);
-  for (std::size_t i = 0; i < size; ++i) {
-    const Node s = snapshots[i];
-    const auto t = s.number();
-    if (!t) continue;
-    if (*t <= 0 || (end && *t > *end)) {
-      s.problem(fmt::format("must be after 0 and no later than time.end ({}), got {}", end.value_or(0.0), *t));
-    } else if (previous && *t <= *previous) {
-      s.problem(fmt::format("must be ascending, got {} after {}", *t, *previous));
-    } else {
-      time.snapshots.push_back(*t * unit);
-      previous = *t;
-    }
-  }
-  return time;
-}
 
 // Defaults that depend on the problem: a shaft section is graded (fine at
 // the pipes and through the wall, coarse far out: the same accuracy from a
@@ -365,7 +369,11 @@ Numerics read_numerics(const Node& n, bool shaft) {
 
 Project read_project(const Node& root) {
   Project project;
-  root.object({"name", "description", "layout", "shaft", "geometry", "pipe", "soil", "domain", "time",
+  if (root["physics"].choice<bool>("physics", {{"thermal", false}, {"cfd-dem", true}}).value_or(false)) {
+    detail::read_cfd_dem(root, project);
+    return project;
+  }
+  root.object({"name", "description", "physics", "layout", "shaft", "geometry", "pipe", "soil", "domain", "time",
                "numerics", "design", "monitoring", "output", "mechanics", "pore_fluid"});
   project.name = root["name"].required().string().value_or("");
   project.description = root["description"].string(true).value_or("");

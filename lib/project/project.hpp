@@ -11,6 +11,7 @@
 #include <variant>
 #include <vector>
 
+#include "project/cfd_dem.hpp"
 #include "project/mechanics.hpp"
 
 namespace frostwall::project {
@@ -231,6 +232,9 @@ struct Project {
   Output output;
   std::optional<Mechanics> mechanics;  // plain geometries: PD thermo-mechanics
   PoreFluid pore_fluid;                // what fills Rectangle::pores (default water/ice)
+  // "physics": "cfd-dem": grains and pore water; then only name,
+  // description, time and output above are read.
+  std::optional<CfdDem> cfd_dem;
   // Physically implausible but computable input (latent heat above that of
   // pure water, pipe warmer than the freezing point): printed and reported.
   std::vector<std::string> warnings;

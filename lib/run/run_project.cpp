@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 #include <omp.h>
 
+#include "run/cfd_dem_run.hpp"
 #include "run/closure_tracker.hpp"
 #include "run/model.hpp"
 #include "thermal/backward_euler.hpp"
@@ -138,6 +139,7 @@ void check_output_directory(const std::string& directory) {
 }
 
 void run_project(const Project& p, const RunOptions& options) {
+  if (p.cfd_dem) return run_cfd_dem(p, options);
   const auto wall_start = std::chrono::steady_clock::now();
   auto note = [&](const std::string& s) {
     if (options.note) options.note(s);

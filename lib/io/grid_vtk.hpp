@@ -1,0 +1,23 @@
+// VTK output of a regular grid of cells (the CFD-DEM fluid): an XML
+// ImageData file (.vti) with named cell fields, written to a temporary
+// name and renamed when complete.
+#pragma once
+
+#include <array>
+#include <filesystem>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace frostwall::io {
+
+struct GridFrame {
+  std::array<double, 3> origin{}, spacing{};  // m
+  std::array<int, 3> cells{};
+  // (name, one value per cell, x fastest), and vectors (three per cell)
+  std::vector<std::pair<std::string, std::vector<double>>> fields, vectors;
+};
+
+void write_vti(const std::filesystem::path& file, const GridFrame& frame);
+
+}  // namespace frostwall::io

@@ -1,0 +1,91 @@
+// A CFD-DEM project ("physics": "cfd-dem"): soil grains (LAMMPS, lib/dem)
+// in pore water on a coarse grid (lib/porous_flow). Plain validated
+// structs, SI units; the engine never sees JSON. The z axis is vertical in
+// every shipped project; gravity is a vector, so any axis may be.
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace frostwall::project {
+
+using Point3 = std::array<double, 3>;
+
+// The box's faces in the order x_min, x_max, y_min, y_max, z_min, z_max
+// (the fluid grid's face index): axis = face / 2, upper side = face % 2.
+enum class BoxFace { x_min, x_max, y_min, y_max, z_min, z_max };
+const char* face_name(BoxFace f);
+
+struct GrainSettings {
+  double diameter_min = 0.0, diameter_max = 0.0;  // m; uniform in between, equal for one size
+  double density = 2650.0;                        // kg/m3
+  double youngs_modulus = 5e7;                    // Pa (Hertz contact)
+  double poisson_ratio = 0.3;
+  double restitution = 0.5;       // normal coefficient of restitution (Tsuji damping)
+  double friction = 0.5;          // sliding, Coulomb
+  double rolling_friction = 0.0;  // rolling resistance coefficient (0: none)
+  // Packing: a grain count, or the porosity of the fill region (minus the
+  // cavity) that sets the count.
+  std::optional<long> count;
+  std::optional<double> porosity;
+  Point3 fill_low{}, fill_high{};  // where grains are placed (default: the box)
+  unsigned long long seed = 1;
+  double settle_time = 0.0;  // s under gravity, still water, before the flow opens
+  bool held = false;         // a fixed bed: grains never move
+  double mean_diameter() const { return 0.5 * (diameter_min + diameter_max); }
+};
+
+struct CfdDemBox {
+  Point3 low{}, high{};  // m
+  std::array<bool, 3> periodic{false, false, false};  // for the grains; the fluid sees walls
+};
+
+struct Cavity {
+  Point3 centre{};
+  double radius = 0.0;
+};
+
+struct FluidSettings {
+  double density = 1000.0;    // kg/m3
+  double viscosity = 1e-3;    // dynamic, Pa s
+  std::array<int, 3> cells{};  // grid cells per axis (from cell_size when given so)
+  double min_porosity = 0.3;   // voidage clamp of the coarse cells
+};
+
+// The flow: the Darcy (superficial) velocity into the inflow face, a
+// schedule [[s, m/s], ...] linear in between; or a fixed excess pressure
+// there. The outflow face is at a fixed excess pressure. Other faces are
+// impermeable walls.
+struct FlowSettings {
+  BoxFace inflow = BoxFace::z_min;
+  std::vector<std::pair<double, double>> darcy_velocity;  // (s, m/s); empty with inflow_pressure
+  std::optional<double> inflow_pressure;                  // Pa
+  BoxFace outflow = BoxFace::z_max;
+  double outflow_pressure = 0.0;                          // Pa
+  double velocity_at(double t) const;
+};
+
+// The fluid forces on a grain, by name (lib/porous_flow/grain_forces.hpp).
+inline const std::vector<std::string> default_fluid_forces{"difelice_drag", "pressure_gradient", "buoyancy"};
+
+struct CouplingSettings {
+  std::optional<int> interval;         // DEM steps per fluid update (nullopt: chosen)
+  std::optional<double> dem_timestep;  // s (nullopt: 0.2 of the Rayleigh time)
+};
+
+struct CfdDem {
+  GrainSettings grains;
+  CfdDemBox box;
+  std::optional<Cavity> cavity;
+  FluidSettings fluid;
+  std::optional<FlowSettings> flow;  // none: still water
+  Point3 gravity{0.0, 0.0, -9.81};   // m/s2
+  std::vector<std::string> forces = default_fluid_forces;
+  CouplingSettings coupling;
+  std::optional<double> max_grains;  // refuse above (nullopt: from the machine's memory)
+};
+
+}  // namespace frostwall::project

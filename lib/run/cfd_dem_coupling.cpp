@@ -1,0 +1,129 @@
+#include "run/cfd_dem_coupling.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <mpi.h>
+#include <numbers>
+
+namespace frostwall::run {
+
+namespace {
+
+using porous_flow::Vec3;
+
+porous_flow::GridShape grid_shape(const project::CfdDem& c) {
+  porous_flow::GridShape s;
+  s.low = Vec3(c.box.low[0], c.box.low[1], c.box.low[2]);
+  s.high = Vec3(c.box.high[0], c.box.high[1], c.box.high[2]);
+  s.cells = c.fluid.cells;
+  return s;
+}
+
+int kind_index(porous_flow::ForceKind k) { return static_cast<int>(k); }
+
+}  // namespace
+
+std::array<porous_flow::FaceCondition, 6> fluid_faces(const project::CfdDem& c, double inflow_velocity) {
+  using porous_flow::FaceKind;
+  std::array<porous_flow::FaceCondition, 6> faces{};
+  if (c.flow) {
+    const auto& f = *c.flow;
+    faces[static_cast<int>(f.inflow)] = f.inflow_pressure ? porous_flow::FaceCondition{FaceKind::pressure, *f.inflow_pressure}
+                                                          : porous_flow::FaceCondition{FaceKind::inflow_velocity, inflow_velocity};
+    faces[static_cast<int>(f.outflow)] = {FaceKind::pressure, f.outflow_pressure};
+    return faces;
+  }
+  // Still water: the surface is open where gravity points away from.
+  int axis = 0;
+  for (int k = 1; k < 3; ++k)
+    if (std::abs(c.gravity[k]) > std::abs(c.gravity[axis])) axis = k;
+  faces[2 * axis + (c.gravity[axis] <= 0.0 ? 1 : 0)] = {FaceKind::pressure, 0.0};
+  return faces;
+}
+
+CfdDemCoupling::CfdDemCoupling(const project::CfdDem& c, dem::LammpsSession& lammps)
+    : c_(c),
+      lammps_(lammps),
+      grid_(grid_shape(c), fluid_faces(c, 0.0), {c.fluid.density, c.fluid.viscosity}, c.grains.mean_diameter(),
+            c.fluid.min_porosity),
+      forces_(porous_flow::make_fluid_forces(c.forces)) {
+  lammps_.set_external_force(dem::fluid_fix, [this](int n, const int* ids, double**, double** force) {
+    for (int i = 0; i < n; ++i) {
+      const auto f = fluid_force(ids[i]);  // none before the first update
+      for (int k = 0; k < 3; ++k) force[i][k] = f[k];
+    }
+  });
+}
+
+porous_flow::SolveReport CfdDemCoupling::update(double inflow_velocity) {
+  const auto start = std::chrono::steady_clock::now();
+  const int n = lammps_.local_count();
+  const int* ids = lammps_.ids();
+  double** x = lammps_.position();
+  double** v = lammps_.velocity();
+  const double* r = lammps_.radius();
+  grid_.clear_grains();
+  for (int i = 0; i < n; ++i) grid_.add_grain(Vec3(x[i][0], x[i][1], x[i][2]), 2.0 * r[i], Vec3(v[i][0], v[i][1], v[i][2]));
+  auto& sums = grid_.deposits();
+  if (lammps_.ranks() > 1)
+    MPI_Allreduce(MPI_IN_PLACE, sums.data(), static_cast<int>(sums.size()), MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
+  grid_.finish_grains();
+  if (c_.flow && !c_.flow->inflow_pressure)
+    grid_.set_face(static_cast<int>(c_.flow->inflow), {porous_flow::FaceKind::inflow_velocity, inflow_velocity});
+  const auto report = grid_.solve();
+  // Grain ids are 1..N and never reused (no grain is created later).
+  const std::size_t largest = static_cast<std::size_t>(lammps_.grain_count()) + 1;
+  if (held_.size() < largest) held_.resize(largest), by_kind_.resize(largest);
+  const porous_flow::Fluid fluid{c_.fluid.density, c_.fluid.viscosity};
+  const Vec3 g(c_.gravity[0], c_.gravity[1], c_.gravity[2]);
+  for (int i = 0; i < n; ++i) {
+    const Vec3 xi(x[i][0], x[i][1], x[i][2]), vi(v[i][0], v[i][1], v[i][2]);
+    const auto sample = grid_.sample(xi);
+    auto& kinds = by_kind_[ids[i]];
+    kinds = {};
+    std::array<double, 3> total{};
+    for (const auto& force : forces_) {
+      const Vec3 f = force->force(fluid, g, 2.0 * r[i], vi, sample);
+      for (int k = 0; k < 3; ++k) kinds[kind_index(force->kind())][k] += f[k], total[k] += f[k];
+    }
+    held_[ids[i]] = total;
+  }
+  coupling_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return report;
+}
+
+void CfdDemCoupling::advance(long steps) { lammps_.run(steps); }
+
+std::array<double, 3> CfdDemCoupling::fluid_force(int id) const {
+  return static_cast<std::size_t>(id) < held_.size() ? held_[id] : std::array<double, 3>{};
+}
+
+GrainTotals CfdDemCoupling::totals() const {
+  GrainTotals t;
+  const int n = lammps_.local_count();
+  const int* ids = lammps_.ids();
+  double** x = lammps_.position();
+  double** v = lammps_.velocity();
+  const double* r = lammps_.radius();
+  const double* contacts = lammps_.contacts();
+  for (int i = 0; i < n; ++i) {
+    const double volume = std::numbers::pi / 6.0 * std::pow(2.0 * r[i], 3);
+    t.count += 1.0;
+    t.volume += volume;
+    t.mass += volume * c_.grains.density;
+    t.contacts += contacts ? contacts[i] : 0.0;
+    for (int k = 0; k < 3; ++k) {
+      t.position_sum[k] += volume * x[i][k];
+      t.velocity_sum[k] += volume * v[i][k];
+    }
+    if (static_cast<std::size_t>(ids[i]) < by_kind_.size())
+      for (int kind = 0; kind < 3; ++kind)
+        for (int k = 0; k < 3; ++k) t.force[kind][k] += by_kind_[ids[i]][kind][k];
+  }
+  if (lammps_.ranks() > 1)
+    MPI_Allreduce(MPI_IN_PLACE, &t, sizeof(GrainTotals) / sizeof(double), MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
+  t.contacts *= 0.5;  // each contact is counted by both its grains
+  return t;
+}
+
+}  // namespace frostwall::run

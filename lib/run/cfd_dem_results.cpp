@@ -1,0 +1,157 @@
+#include "run/cfd_dem_results.hpp"
+
+#include <cmath>
+#include <fmt/format.h>
+
+#include "dem/packing.hpp"
+#include "porous_flow/bed_resistance.hpp"
+
+namespace frostwall::run {
+
+using nlohmann::json;
+
+namespace {
+// Bed expansion that counts as lift-off: 0.5 % of the bed's length, far
+// above the elastic rebound of the contacts as the load comes off them.
+constexpr double lift_expansion = 0.005;
+}  // namespace
+
+CfdDemResults::CfdDemResults(const project::Project& p) : p_(p), c_(*p.cfd_dem) {
+  if (c_.flow) {
+    axis_ = static_cast<int>(c_.flow->inflow) / 2;
+    from_low_ = static_cast<int>(c_.flow->inflow) % 2 == 0;
+  } else {
+    for (int k = 0; k < 3; ++k)
+      if (std::abs(c_.gravity[k]) > std::abs(c_.gravity[axis_])) axis_ = k;
+    from_low_ = c_.gravity[axis_] <= 0.0;
+  }
+  area_ = 1.0;
+  for (int k = 0; k < 3; ++k)
+    if (k != axis_) area_ *= c_.box.high[k] - c_.box.low[k];
+}
+
+CfdDemSample CfdDemResults::sample(double t, double u, const GrainTotals& g, const porous_flow::FluidGrid& grid,
+                                   const porous_flow::SolveReport& report) const {
+  CfdDemSample s;
+  s.time = t;
+  s.inflow_velocity = u;
+  s.grains = g.count;
+  s.contacts = g.contacts;
+  if (g.volume > 0.0) {
+    const double mean = g.position_sum[axis_] / g.volume;
+    s.bed_length = 2.0 * (from_low_ ? mean - c_.box.low[axis_] : c_.box.high[axis_] - mean);
+    s.porosity = 1.0 - g.volume / (area_ * s.bed_length);
+    const double gn = std::hypot(c_.gravity[0], c_.gravity[1], c_.gravity[2]);
+    if (gn > 0.0)
+      for (int k = 0; k < 3; ++k) s.settling_velocity += g.velocity_sum[k] / g.volume * c_.gravity[k] / gn;
+  }
+  for (int kind = 0; kind < 3; ++kind)
+    for (int k = 0; k < 3; ++k) s.mean_force[kind][k] = g.count > 0 ? g.force[kind][k] / g.count : 0.0;
+  if (c_.flow)
+    s.pressure_drop = grid.face_pressure(static_cast<int>(c_.flow->inflow)) - grid.face_pressure(static_cast<int>(c_.flow->outflow));
+  s.inflow = grid.inflow();
+  s.outflow = grid.outflow();
+  s.imbalance = grid.largest_cell_imbalance();
+  s.picard_iterations = report.picard_iterations;
+  return s;
+}
+
+void CfdDemResults::add(const CfdDemSample& s, bool snapshot) {
+  series_.push_back(s);
+  if (snapshot) snapshots_.push_back(series_.size() - 1);
+}
+
+// Lift-off of a free bed under a rising upward flow: the first sample
+// whose bed is longer than at the start by lift_expansion. Beside it, what
+// the formulas say for the bed as it started: the buoyant weight per area,
+// Ergun's minimum fluidisation velocity (where its pressure drop carries
+// that weight), Terzaghi's critical gradient i_c = (G_s - 1)(1 - n).
+json CfdDemResults::fluidisation() const {
+  if (!c_.flow || c_.grains.held || series_.empty() || c_.flow->inflow_pressure) return nullptr;
+  const auto& start = series_.front();
+  const double g = std::abs(c_.gravity[axis_]);
+  const double rho_f = c_.fluid.density, rho_p = c_.grains.density;
+  const double solid = (1.0 - start.porosity) * start.bed_length;  // grain volume per area
+  const double weight = (rho_p - rho_f) * g * solid;               // buoyant, Pa
+  const porous_flow::Fluid fluid{rho_f, c_.fluid.viscosity};
+  const double d = std::cbrt(6.0 / M_PI * dem::mean_grain_volume(c_.grains));
+  double lo = 0.0, hi = 100.0;
+  for (int it = 0; it < 200; ++it) {
+    const double mid = 0.5 * (lo + hi);
+    (porous_flow::ergun_gradient(fluid, start.porosity, d, mid) * start.bed_length < weight ? lo : hi) = mid;
+  }
+  json out = {{"bed_length_m", start.bed_length},
+              {"porosity", start.porosity},
+              {"buoyant_weight_Pa", weight},
+              {"ergun_velocity_m_s", 0.5 * (lo + hi)},
+              {"critical_gradient", (rho_p / rho_f - 1.0) * (1.0 - start.porosity)},
+              {"lift_expansion", lift_expansion}};
+  for (const auto& s : series_)
+    if (s.bed_length > (1.0 + lift_expansion) * start.bed_length) {
+      out["velocity_m_s"] = s.inflow_velocity;
+      out["time_s"] = s.time;
+      out["pressure_drop_Pa"] = s.pressure_drop;
+      out["gradient"] = s.pressure_drop / (rho_f * g * start.bed_length);
+      return out;
+    }
+  out["velocity_m_s"] = nullptr;  // the bed never lifted
+  return out;
+}
+
+json CfdDemResults::summary(const json& facts) const {
+  json j = facts;
+  j["name"] = p_.name;
+  j["physics"] = "cfd-dem";
+  j["bed_axis"] = std::string(1, "xyz"[axis_]);
+  json settling = json::array(), snapshots = json::array(), ergun = json::array();
+  for (const auto& s : series_) settling.push_back({s.time, s.settling_velocity});
+  auto force = [](const std::array<double, 3>& f) { return json::array({f[0], f[1], f[2]}); };
+  for (std::size_t k : snapshots_) {
+    const auto& s = series_[k];
+    std::array<double, 3> total{};
+    for (int kind = 0; kind < 3; ++kind)
+      for (int a = 0; a < 3; ++a) total[a] += s.mean_force[kind][a];
+    snapshots.push_back({{"time", s.time}, {"grains_in_soil", s.grains}, {"porosity", s.porosity},
+                         {"bed_length_m", s.bed_length}, {"contacts", s.contacts},
+                         {"mean_fluid_force_N", force(total)}, {"mean_drag_N", force(s.mean_force[0])},
+                         {"mean_pressure_gradient_force_N", force(s.mean_force[1])},
+                         {"mean_buoyancy_N", force(s.mean_force[2])}, {"pressure_drop_Pa", s.pressure_drop}});
+    if (c_.flow) {
+      // The fluid's total force on the grains along the bed, drag plus
+      // pressure gradient (buoyancy is the hydrostatic part, not the flow's).
+      const double sign = from_low_ ? 1.0 : -1.0;
+      const double on_grains = sign * s.grains * (s.mean_force[0][axis_] + s.mean_force[1][axis_]);
+      ergun.push_back({{"time", s.time}, {"superficial_velocity", s.inflow_velocity}, {"porosity", s.porosity},
+                       {"bed_length", s.bed_length}, {"pressure_drop_Pa", s.pressure_drop},
+                       {"fluid_force_on_grains_N", on_grains}, {"pressure_drop_times_area_N", s.pressure_drop * area_}});
+    }
+  }
+  j["settling"] = settling;
+  if (!series_.empty() && series_.back().grains == 1.0) j["terminal_velocity_m_s"] = series_.back().settling_velocity;
+  j["snapshots"] = snapshots;
+  if (c_.flow) j["ergun"] = ergun;
+  if (const json f = fluidisation(); !f.is_null()) j["minimum_fluidisation"] = f;
+  double imbalance = 0.0, flow = 0.0, mismatch = 0.0;
+  for (const auto& s : series_) {
+    imbalance = std::max(imbalance, s.imbalance);
+    flow = std::max(flow, std::abs(s.inflow));
+    mismatch = std::max(mismatch, std::abs(s.inflow - s.outflow));
+  }
+  j["mass_balance"] = {{"largest_cell_imbalance_m3_s", imbalance}, {"largest_inflow_m3_s", flow},
+                       {"largest_inflow_minus_outflow_m3_s", mismatch}};
+  return j;
+}
+
+std::string CfdDemResults::csv() const {
+  std::string text =
+      "time_s,inflow_velocity_m_s,grains,bed_length_m,porosity,contacts,pressure_drop_Pa,settling_velocity_m_s,"
+      "mean_drag_N,mean_pressure_gradient_force_N,mean_buoyancy_N,inflow_m3_s,outflow_m3_s,picard_iterations\n";
+  for (const auto& s : series_)
+    text += fmt::format("{:.9g},{:.9g},{},{:.9g},{:.9g},{},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{}\n", s.time,
+                        s.inflow_velocity, s.grains, s.bed_length, s.porosity, s.contacts, s.pressure_drop,
+                        s.settling_velocity, s.mean_force[0][axis_], s.mean_force[1][axis_], s.mean_force[2][axis_],
+                        s.inflow, s.outflow, s.picard_iterations);
+  return text;
+}
+
+}  // namespace frostwall::run

@@ -1,0 +1,251 @@
+// The run path of a "physics": "cfd-dem" project: resources checked, the
+// grains placed (or a settled packing read from the cache), LAMMPS set up
+// from the validated structs, settling in still water, then the coupled
+// run with samples, snapshots and the output files (written by rank 0).
+#include "run/cfd_dem_run.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <fmt/format.h>
+#include <mpi.h>
+#include <numbers>
+#include <unistd.h>
+
+#include "dem/commands.hpp"
+#include "dem/lammps_session.hpp"
+#include "dem/packing.hpp"
+#include "io/atomic_file.hpp"
+#include "io/grid_vtk.hpp"
+#include "io/point_cloud_vtk.hpp"
+#include "report/report.hpp"
+#include "run/cfd_dem_coupling.hpp"
+#include "run/cfd_dem_results.hpp"
+
+namespace frostwall::run {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+double dem_timestep(const project::CfdDem& c) {
+  if (c.coupling.dem_timestep) return *c.coupling.dem_timestep;
+  // A fifth of the Rayleigh time of the smallest grain.
+  const auto& g = c.grains;
+  const double shear = g.youngs_modulus / (2.0 * (1.0 + g.poisson_ratio));
+  const double rayleigh = std::numbers::pi * 0.5 * g.diameter_min * std::sqrt(g.density / shear) /
+                          (0.1631 * g.poisson_ratio + 0.8766);
+  return 0.2 * rayleigh;
+}
+
+int coupling_interval(const project::CfdDem& c, double dt) {
+  if (c.coupling.interval) return *c.coupling.interval;
+  // Forces are held between fluid updates: hold them for at most 2 % of
+  // the smallest grain's Stokes relaxation time, and no more than 100 steps.
+  const double d = c.grains.diameter_min;
+  const double relaxation = c.grains.density * d * d / (18.0 * c.fluid.viscosity);
+  return std::clamp(static_cast<int>(0.02 * relaxation / dt), 1, 100);
+}
+
+void check_cfd_dem_resources(const project::CfdDem& c) {
+  // Peak memory per grain in LAMMPS with granular history and our held
+  // forces, rounded up; per fluid cell with the sparse system.
+  constexpr double bytes_per_grain = 4000.0, bytes_per_cell = 2000.0;
+  const double memory = static_cast<double>(sysconf(_SC_PHYS_PAGES)) * static_cast<double>(sysconf(_SC_PAGE_SIZE));
+  const double grains = static_cast<double>(dem::requested_grains(c));
+  const double limit = c.max_grains.value_or(0.5 * memory / bytes_per_grain);
+  if (grains > limit)
+    throw project::ProjectError({fmt::format("{}: {:.0f} grains exceed the limit of {:.0f} ({}); ask for fewer",
+                                             c.grains.count ? "grains.count" : "grains.porosity", grains, limit,
+                                             c.max_grains ? "max_grains" : "half this machine's memory")});
+  const double cells = static_cast<double>(c.fluid.cells[0]) * c.fluid.cells[1] * c.fluid.cells[2];
+  if (cells * bytes_per_cell > 0.25 * memory)
+    throw project::ProjectError({fmt::format("fluid.cell_size: {:.0f} cells exceed a quarter of this machine's memory; use larger cells", cells)});
+}
+
+namespace {
+
+// Every rank's grains gathered on rank 0, by id: the snapshot's grain file.
+void write_grains(const fs::path& file, dem::LammpsSession& lammps, const CfdDemCoupling& coupling) {
+  constexpr int fields = 13;  // id, x3, v3, radius, contacts, force3, ...
+  const int n = lammps.local_count();
+  const int* ids = lammps.ids();
+  double** x = lammps.position();
+  double** v = lammps.velocity();
+  const double* r = lammps.radius();
+  const double* contacts = lammps.contacts();
+  std::vector<double> mine;
+  mine.reserve(static_cast<std::size_t>(n) * fields);
+  for (int i = 0; i < n; ++i) {
+    const auto f = coupling.fluid_force(ids[i]);
+    for (double value : {double(ids[i]), x[i][0], x[i][1], x[i][2], v[i][0], v[i][1], v[i][2], r[i],
+                         contacts ? contacts[i] : 0.0, f[0], f[1], f[2], 0.0})
+      mine.push_back(value);
+  }
+  const int size = static_cast<int>(mine.size());
+  std::vector<int> sizes(lammps.ranks()), offsets(lammps.ranks());
+  MPI_Gather(&size, 1, MPI_INT, sizes.data(), 1, MPI_INT, 0, MPI_COMM_WORLD);
+  std::vector<double> all;
+  if (lammps.rank() == 0) {
+    for (int k = 1; k < lammps.ranks(); ++k) offsets[k] = offsets[k - 1] + sizes[k - 1];
+    all.resize(offsets.back() + sizes.back());
+  }
+  MPI_Gatherv(mine.data(), size, MPI_DOUBLE, all.data(), sizes.data(), offsets.data(), MPI_DOUBLE, 0, MPI_COMM_WORLD);
+  if (lammps.rank() != 0) return;
+  const std::size_t count = all.size() / fields;
+  std::vector<std::size_t> order(count);
+  for (std::size_t i = 0; i < count; ++i) order[i] = i;
+  std::sort(order.begin(), order.end(), [&](auto a, auto b) { return all[a * fields] < all[b * fields]; });
+  io::PointCloudFrame frame;
+  std::vector<double> diameter, contact, lost, velocity, force;
+  for (std::size_t i : order) {
+    const double* g = &all[i * fields];
+    frame.points.push_back({g[1], g[2], g[3]});
+    velocity.insert(velocity.end(), {g[4], g[5], g[6]});
+    diameter.push_back(2.0 * g[7]);
+    contact.push_back(g[8]);
+    force.insert(force.end(), {g[9], g[10], g[11]});
+    lost.push_back(g[12]);
+  }
+  frame.fields = {{"diameter", diameter}, {"contacts", contact}, {"lost", lost}};
+  frame.vectors = {{"velocity", velocity}, {"fluid_force", force}};
+  io::write_vtu(file, frame);
+}
+
+void write_fluid(const fs::path& file, const porous_flow::FluidGrid& grid) {
+  const auto& s = grid.shape();
+  io::GridFrame frame;
+  for (int k = 0; k < 3; ++k) frame.origin[k] = s.low[k], frame.spacing[k] = s.cell_size(k), frame.cells[k] = s.cells[k];
+  std::vector<double> velocity;
+  for (const auto& u : grid.superficial_velocity()) velocity.insert(velocity.end(), {u[0], u[1], u[2]});
+  frame.fields = {{"porosity", grid.porosity()}, {"pressure", grid.pressure()}};
+  frame.vectors = {{"superficial_velocity", velocity}};
+  io::write_vti(file, frame);
+}
+
+}  // namespace
+
+void run_cfd_dem(const project::Project& p, const RunOptions& options) {
+  const auto wall_start = std::chrono::steady_clock::now();
+  const auto& c = *p.cfd_dem;
+  check_cfd_dem_resources(c);
+  const auto grains = dem::initial_grains(c);  // refuses a count that does not fit
+  check_output_directory(p.output.directory);
+  const double dt = dem_timestep(c);
+  const int interval = coupling_interval(c, dt);
+
+  // LAMMPS's own log beside the results: where it explains an abort.
+  if (dem::world_rank() == 0) fs::create_directories(p.output.directory);
+  dem::world_barrier();
+  dem::LammpsSession lammps((fs::path(p.output.directory) / "lammps.log").string());
+  const bool root = lammps.rank() == 0;
+  auto note = [&](const std::string& s) {
+    if (root && options.note) options.note(s);
+  };
+  const fs::path out = p.output.directory;
+  if (root) {
+    if (!options.project_text.empty()) io::write_text_file(out / "project.json", options.project_text);
+  }
+  const fs::path cache = dem::packing_cache_file(c, dt, interval);
+  const bool settle = c.grains.settle_time > 0.0 && !c.grains.held;
+  const bool cached = settle && fs::exists(cache);
+  const auto box = dem::dem_box(c);
+  for (const auto& s : dem::setup_commands(box)) lammps.command(s);
+  if (cached) {
+    note("packing: settled grains read from the cache " + cache.string());
+    lammps.command(dem::read_data_command(cache.string()));
+  } else {
+    if (root) io::write_text_file(out / "dem_initial.data", dem::data_file(box, grains));
+    MPI_Barrier(MPI_COMM_WORLD);
+    lammps.command(dem::read_data_command((out / "dem_initial.data").string()));
+  }
+  for (const auto& s : dem::contact_commands(box, dem::dem_contact(c), 0.25 * c.grains.diameter_max)) lammps.command(s);
+  for (const auto& s : dem::motion_commands(c.gravity, dt, c.grains.held)) lammps.command(s);
+  CfdDemCoupling coupling(c, lammps);
+  lammps.command("run 0 post no");  // forces, neighbour lists and computes set up before anything reads them
+  note(fmt::format("cfd-dem: {} grains on {} rank(s), DEM step {:.3g} s, fluid every {} steps", lammps.grain_count(),
+                   lammps.ranks(), dt, interval));
+
+  if (settle && !cached) {
+    const long chunks = std::max(1L, std::lround(c.grains.settle_time / (dt * interval)));
+    for (long k = 0; k < chunks; ++k) {
+      coupling.update(0.0);
+      coupling.advance(interval);
+      if (options.progress && root) options.progress(-c.grains.settle_time * (1.0 - double(k + 1) / chunks), p.time.end);
+    }
+    // Cached under a temporary name, renamed when complete.
+    const fs::path tmp = cache.string() + fmt::format(".tmp-{}", getpid());
+    if (root) fs::create_directories(cache.parent_path());
+    MPI_Barrier(MPI_COMM_WORLD);
+    lammps.command(dem::write_data_command(tmp.string()));
+    if (root) fs::rename(tmp, cache);
+    note("packing: settled for " + fmt::format("{:g}", c.grains.settle_time) + " s, cached as " + cache.string());
+  }
+
+  CfdDemResults results(p);
+  std::vector<double> samples;
+  for (int k = 0; k <= 200; ++k) samples.push_back(p.time.end * k / 200.0);
+  const auto& snapshots = p.time.snapshots;
+  std::vector<io::PvdEntry> grain_pvd, fluid_pvd;
+  const long total_steps = std::max(1L, std::lround(p.time.end / dt));
+  std::size_t next_sample = 0, next_snapshot = 0;
+  long step = 0;
+  porous_flow::SolveReport report;
+  while (true) {
+    const double t = step * dt;
+    const double u = c.flow ? c.flow->velocity_at(t) : 0.0;
+    report = coupling.update(u);
+    const bool last = step >= total_steps;
+    const bool is_sample = next_sample < samples.size() && t >= samples[next_sample] - 0.5 * dt;
+    const bool is_snapshot = next_snapshot < snapshots.size() && (t >= snapshots[next_snapshot] - 0.5 * dt || last);
+    if (is_sample || is_snapshot || last) {
+      const auto totals = coupling.totals();
+      results.add(results.sample(t, u, totals, coupling.grid(), report), is_snapshot);
+      while (next_sample < samples.size() && samples[next_sample] <= t + 0.5 * dt) ++next_sample;
+    }
+    if (is_snapshot) {
+      const std::string stem = fmt::format("{:04d}", next_snapshot + 1);
+      if (p.output.vtk) {
+        write_grains(out / ("grains_" + stem + ".vtu"), lammps, coupling);
+        if (root) write_fluid(out / ("fluid_" + stem + ".vti"), coupling.grid());
+        grain_pvd.push_back({t, "grains_" + stem + ".vtu"});
+        fluid_pvd.push_back({t, "fluid_" + stem + ".vti"});
+      }
+      ++next_snapshot;
+    }
+    if (options.progress && root) options.progress(std::min(t, p.time.end), p.time.end);
+    if (last) break;
+    const long steps = std::min<long>(interval, total_steps - step);
+    coupling.advance(steps);
+    step += steps;
+  }
+
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+  if (!root) return;
+  if (p.output.vtk) {
+    io::write_pvd(out / "grains.pvd", grain_pvd);
+    io::write_pvd(out / "fluid.pvd", fluid_pvd);
+  }
+  std::string commands;
+  for (const auto& line : lammps.commands())
+    if (!line.starts_with("run ")) commands += line + "\n";
+  commands += fmt::format("# then, every {} steps: the fluid grid is solved and each grain's fluid force set\n"
+                          "# (fix {} external), and `run {}` follows; {} steps in all\n",
+                          interval, dem::fluid_fix, interval, total_steps);
+  io::write_text_file(out / "dem_commands.txt", commands);
+  io::write_text_file(out / "series.csv", results.csv());
+  const json facts = {{"grains", lammps.grain_count()},
+                      {"ranks", lammps.ranks()},
+                      {"dem_timestep_s", dt},
+                      {"coupling_interval", interval},
+                      {"dem_steps", total_steps},
+                      {"fluid_cells", c.fluid.cells},
+                      {"fluid_forces", c.forces},
+                      {"packing", {{"cache", cache.string()}, {"read_from_cache", cached}, {"settle_time_s", c.grains.settle_time}}},
+                      {"wall_time_s", wall},
+                      {"coupling_seconds", coupling.coupling_seconds()},
+                      {"coupling_share", wall > 0 ? coupling.coupling_seconds() / wall : 0.0}};
+  io::write_text_file(out / "summary.json", results.summary(facts).dump(2) + "\n");
+  if (p.output.report) report::write_report(out);
+}
+
+}  // namespace frostwall::run

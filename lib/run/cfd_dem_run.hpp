@@ -1,0 +1,20 @@
+// A "physics": "cfd-dem" run (run_project calls it): grains in LAMMPS,
+// pore water on the coarse grid, coupled both ways; under mpirun the
+// grains are shared among the ranks and rank 0 writes the files.
+#pragma once
+
+#include "project/project.hpp"
+#include "run/run_project.hpp"
+
+namespace frostwall::run {
+
+// The DEM step: project's, else a fifth of the smallest grain's Rayleigh time.
+double dem_timestep(const project::CfdDem& c);
+// DEM steps per fluid update: project's, else from the Stokes relaxation time.
+int coupling_interval(const project::CfdDem& c, double dt);
+// Throws project::ProjectError when the grains or the grid would not fit.
+void check_cfd_dem_resources(const project::CfdDem& c);
+
+void run_cfd_dem(const project::Project& p, const RunOptions& options);
+
+}  // namespace frostwall::run
