@@ -68,7 +68,9 @@ int run_command(const std::string& file) {
     std::cerr << "frostwall: run failed: " << e.what() << "\n";
     return 1;
   }
-  std::cerr << "wrote " << p.output.directory << "\n";
+  // Under mpirun every rank runs this; one says so.
+  if (const char* rank = std::getenv("OMPI_COMM_WORLD_RANK"); !rank || std::string(rank) == "0")
+    std::cerr << "wrote " << p.output.directory << "\n";
   return 0;
 }
 

@@ -66,9 +66,21 @@ std::vector<Grain> initial_grains(const project::CfdDem& c) {
   std::array<int, 3> n{};
   for (int k = 0; k < 3; ++k) {
     const double length = g.fill_high[k] - g.fill_low[k];
+    if (g.held) {
+      n[k] = std::max(1, static_cast<int>(std::lround(length / spacing)));
+      continue;
+    }
     // A periodic axis wraps: its sites fill the whole length.
-    n[k] = std::max(1, static_cast<int>(std::floor((length - (c.box.periodic[k] || g.held ? 0.0 : g.diameter_max)) / spacing)) +
-                           (c.box.periodic[k] || g.held ? 0 : 1));
+    n[k] = c.box.periodic[k] ? std::max(1, static_cast<int>(std::floor(length / spacing)))
+                             : std::max(1, static_cast<int>(std::floor((length - g.diameter_max) / spacing)) + 1);
+  }
+  // A held bed: enough sites for every grain, one more layer where the
+  // sites are sparsest if rounding left too few.
+  while (g.held && static_cast<long>(n[0]) * n[1] * n[2] < wanted) {
+    int sparse = 0;
+    for (int k = 1; k < 3; ++k)
+      if ((g.fill_high[k] - g.fill_low[k]) / n[k] > (g.fill_high[sparse] - g.fill_low[sparse]) / n[sparse]) sparse = k;
+    ++n[sparse];
   }
   std::vector<std::array<double, 3>> sites;
   for (int i = 0; i < n[0]; ++i)
@@ -89,6 +101,12 @@ std::vector<Grain> initial_grains(const project::CfdDem& c) {
         "{}: {} grains do not fit apart in the fill region ({} lattice sites of {:.3g} m); enlarge grains.fill "
         "upward (they settle) or ask for fewer",
         key, wanted, sites.size(), spacing)});
+  }
+  // Held: every (sites / wanted)-th site, spread over the whole region.
+  if (g.held && static_cast<long>(sites.size()) > wanted) {
+    std::vector<std::array<double, 3>> spread;
+    for (long i = 0; i < wanted; ++i) spread.push_back(sites[static_cast<std::size_t>(i * double(sites.size()) / wanted)]);
+    sites = std::move(spread);
   }
   // Bottom first: sites lowest along gravity (then by position, a total order).
   const auto& gv = c.gravity;

@@ -20,5 +20,8 @@ namespace frostwall::porous_flow {
 double ergun_gradient(const Fluid& fluid, double porosity, double diameter, double superficial_velocity);
 double wen_yu_gradient(const Fluid& fluid, double porosity, double diameter, double superficial_velocity);
 double bed_gradient(const Fluid& fluid, double porosity, double diameter, double superficial_velocity);
+// bed_gradient / (1 - porosity), written out so that it stays finite as
+// the porosity reaches 1: the gradient per unit of solid fraction.
+double bed_gradient_per_solid(const Fluid& fluid, double porosity, double diameter, double superficial_velocity);
 
 }  // namespace frostwall::porous_flow

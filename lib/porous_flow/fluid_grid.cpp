@@ -269,7 +269,21 @@ SolveReport FluidGrid::solve(double tolerance, double picard_tolerance, int max_
     if (it == max_picard) break;
     beta_.swap(next);
   }
+  update_drag();
   return report;
+}
+
+// K = eps^2 (-dp/dx per unit solid fraction) / |U_slip|, without the
+// floor: the drag per grain volume is K (u_f - v), and over a cell's
+// grains it sums to eps beta U_slip per cell volume, the momentum the
+// water's pressure loses there less the -grad p the grains take directly.
+void FluidGrid::update_drag() {
+  drag_coefficient_.resize(shape_.count());
+  for (int c = 0; c < shape_.count(); ++c) {
+    const double e = porosity_[c];
+    const double speed = std::max(face_mean(shape_, slip_, c).norm(), tiny_speed);
+    drag_coefficient_[c] = e * e * bed_gradient_per_solid(fluid_, e, diameter_[c], speed) / speed;
+  }
 }
 
 // ---- results -----------------------------------------------------------------
@@ -311,7 +325,12 @@ FluidSample FluidGrid::sample(const Vec3& x) const {
         out.superficial_velocity += weight * U;
         out.fluid_velocity += weight * U / porosity_[c];
         out.pressure_gradient += weight * face_mean(shape_, gradient_, c);
+        if (!drag_coefficient_.empty()) {
+          out.drag_coefficient += weight * drag_coefficient_[c];
+          out.drag_velocity += weight * drag_coefficient_[c] * U / porosity_[c];
+        }
       }
+  if (out.drag_coefficient > 0.0) out.drag_velocity /= out.drag_coefficient;
   return out;
 }
 

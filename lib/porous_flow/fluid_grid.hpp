@@ -52,6 +52,12 @@ struct FluidSample {
   Vec3 fluid_velocity = Vec3::Zero();        // interstitial, u_f = U / eps
   Vec3 superficial_velocity = Vec3::Zero();  // U
   Vec3 pressure_gradient = Vec3::Zero();     // of the excess pressure, Pa/m
+  // The grid's own drag (Gidaspow: its Ergun/Wen-Yu resistance) per grain
+  // volume, K (drag_velocity - v), with K and K u_f interpolated from the
+  // cells by the weights the grains were deposited with: the grains of a
+  // uniform bed then take exactly the momentum its water loses.
+  double drag_coefficient = 0.0;             // K, kg/(m3 s)
+  Vec3 drag_velocity = Vec3::Zero();         // m/s
 };
 
 struct SolveReport {
@@ -114,6 +120,7 @@ class FluidGrid {
   void check_faces() const;
   void update_resistance(std::vector<double>& beta) const;
   void update_faces();
+  void update_drag();
   double cell_outflow(int cell) const;
   Vec3 centre_velocity(int cell) const;
 
@@ -122,6 +129,7 @@ class FluidGrid {
   Fluid fluid_;
   double default_diameter_, min_porosity_, max_porosity_;
   double beta_floor_;
+  std::vector<double> drag_coefficient_;  // K per cell, after a solve
   std::vector<double> deposits_;
   std::vector<double> raw_porosity_, porosity_, diameter_, beta_, pressure_;
   std::vector<Vec3> grain_velocity_;

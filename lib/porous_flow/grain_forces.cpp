@@ -13,6 +13,10 @@ Vec3 DragForce::force(const Fluid& fluid, const Vec3&, double d, const Vec3& v, 
   return law_->force(fluid, d, s.porosity, s.fluid_velocity - v);
 }
 
+Vec3 GridDragForce::force(const Fluid&, const Vec3&, double d, const Vec3& v, const FluidSample& s) const {
+  return sphere_volume(d) * s.drag_coefficient * (s.drag_velocity - v);
+}
+
 Vec3 PressureGradientForce::force(const Fluid&, const Vec3&, double d, const Vec3&, const FluidSample& s) const {
   return -sphere_volume(d) * s.pressure_gradient;
 }
@@ -23,6 +27,7 @@ Vec3 BuoyancyForce::force(const Fluid& fluid, const Vec3& gravity, double d, con
 
 std::unique_ptr<FluidForce> make_fluid_force(const std::string& name) {
   if (name == "difelice_drag") return std::make_unique<DragForce>(std::make_unique<DiFeliceDrag>());
+  if (name == "gidaspow_drag") return std::make_unique<GridDragForce>();
   if (name == "schiller_naumann_drag") return std::make_unique<DragForce>(std::make_unique<SchillerNaumannDrag>());
   if (name == "pressure_gradient") return std::make_unique<PressureGradientForce>();
   if (name == "buoyancy") return std::make_unique<BuoyancyForce>();

@@ -36,6 +36,17 @@ class DragForce final : public FluidForce {
   std::unique_ptr<DragLaw> law_;
 };
 
+// Gidaspow (1994): the drag the fluid grid's own resistance implies
+// (Ergun below porosity 0.8, Wen-Yu above, blended; bed_resistance.hpp),
+// V_p K (u - v) from FluidSample::drag_coefficient and drag_velocity, so
+// that a cell's grains take exactly the momentum its water loses (drag
+// plus -V grad p over a bed = the pressure drop times its area).
+class GridDragForce final : public FluidForce {
+ public:
+  ForceKind kind() const override { return ForceKind::drag; }
+  Vec3 force(const Fluid& fluid, const Vec3& gravity, double d, const Vec3& v, const FluidSample& s) const override;
+};
+
 // -V_p grad p (excess pressure).
 class PressureGradientForce final : public FluidForce {
  public:
@@ -50,7 +61,7 @@ class BuoyancyForce final : public FluidForce {
   Vec3 force(const Fluid& fluid, const Vec3& gravity, double d, const Vec3& v, const FluidSample& s) const override;
 };
 
-// By name: difelice_drag, schiller_naumann_drag, pressure_gradient,
+// By name: difelice_drag, gidaspow_drag, schiller_naumann_drag, pressure_gradient,
 // buoyancy (the names lib/project accepts). Throws std::invalid_argument
 // for any other.
 std::unique_ptr<FluidForce> make_fluid_force(const std::string& name);

@@ -207,7 +207,8 @@ std::vector<std::string> read_forces(const Node& n) {
   int drags = 0;
   for (std::size_t i = 0; i < size.value_or(0); ++i) {
     const auto name = n[i].choice<std::string>(
-        "fluid force", {{"difelice_drag", "difelice_drag"}, {"schiller_naumann_drag", "schiller_naumann_drag"},
+        "fluid force", {{"difelice_drag", "difelice_drag"}, {"gidaspow_drag", "gidaspow_drag"},
+                        {"schiller_naumann_drag", "schiller_naumann_drag"},
                         {"pressure_gradient", "pressure_gradient"}, {"buoyancy", "buoyancy"}});
     if (!name) continue;
     if (!seen.insert(*name).second) n[i].problem("'" + *name + "' is listed twice");

@@ -14,6 +14,7 @@ namespace {
 // Bed expansion that counts as lift-off: 0.5 % of the bed's length, far
 // above the elastic rebound of the contacts as the load comes off them.
 constexpr double lift_expansion = 0.005;
+constexpr std::size_t plateau_samples = 10;
 }  // namespace
 
 CfdDemResults::CfdDemResults(const project::Project& p) : p_(p), c_(*p.cfd_dem) {
@@ -61,8 +62,9 @@ void CfdDemResults::add(const CfdDemSample& s, bool snapshot) {
   if (snapshot) snapshots_.push_back(series_.size() - 1);
 }
 
-// Lift-off of a free bed under a rising upward flow: the first sample
-// whose bed is longer than at the start by lift_expansion. Beside it, what
+// Minimum fluidisation of a free bed under a rising upward flow, and its
+// lift-off (the first sample whose bed is longer than at the start by
+// lift_expansion). Beside them, what
 // the formulas say for the bed as it started: the buoyant weight per area,
 // Ergun's minimum fluidisation velocity (where its pressure drop carries
 // that weight), Terzaghi's critical gradient i_c = (G_s - 1)(1 - n).
@@ -86,15 +88,46 @@ json CfdDemResults::fluidisation() const {
               {"ergun_velocity_m_s", 0.5 * (lo + hi)},
               {"critical_gradient", (rho_p / rho_f - 1.0) * (1.0 - start.porosity)},
               {"lift_expansion", lift_expansion}};
-  for (const auto& s : series_)
-    if (s.bed_length > (1.0 + lift_expansion) * start.bed_length) {
-      out["velocity_m_s"] = s.inflow_velocity;
-      out["time_s"] = s.time;
-      out["pressure_drop_Pa"] = s.pressure_drop;
-      out["gradient"] = s.pressure_drop / (rho_f * g * start.bed_length);
-      return out;
+  // Lift-off: the bed grows by lift_expansion.
+  std::size_t lift = series_.size();
+  for (std::size_t k = 0; k < series_.size(); ++k)
+    if (series_[k].bed_length > (1.0 + lift_expansion) * start.bed_length) {
+      lift = k;
+      break;
     }
-  out["velocity_m_s"] = nullptr;  // the bed never lifted
+  if (lift == series_.size()) {
+    out["velocity_m_s"] = nullptr;  // the bed never lifted
+    return out;
+  }
+  out["lift_velocity_m_s"] = series_[lift].inflow_velocity;
+  out["lift_time_s"] = series_[lift].time;
+  // Kunii & Levenspiel's reading of the pressure-drop curve: the plateau
+  // the lifted bed holds (its mean pressure drop after lift-off) meets
+  // the fixed bed's branch dP = a U + b U^2 (least squares over the samples
+  // before lift-off below 0.9 of the plateau).
+  // The plateau is read just past lift-off (the next plateau_samples):
+  // far beyond it the coarse grid's bed surface smears more as the bed
+  // expands, and its pressure drop creeps up.
+  const std::size_t end = std::min(series_.size(), lift + plateau_samples);
+  double plateau = 0.0;
+  for (std::size_t k = lift; k < end; ++k) plateau += series_[k].pressure_drop;
+  plateau /= static_cast<double>(end - lift);
+  double s11 = 0, s12 = 0, s22 = 0, r1 = 0, r2 = 0;
+  for (std::size_t k = 0; k < lift; ++k) {
+    const double U = series_[k].inflow_velocity, dP = series_[k].pressure_drop;
+    if (U <= 0.0 || dP >= 0.9 * plateau) continue;
+    s11 += U * U, s12 += U * U * U, s22 += U * U * U * U, r1 += U * dP, r2 += U * U * dP;
+  }
+  const double det = s11 * s22 - s12 * s12;
+  out["plateau_pressure_drop_Pa"] = plateau;
+  if (det > 0.0) {
+    const double a = (r1 * s22 - r2 * s12) / det, b = (s11 * r2 - s12 * r1) / det;
+    const double U = b != 0.0 ? (-a + std::sqrt(a * a + 4.0 * b * plateau)) / (2.0 * b) : plateau / a;
+    out["velocity_m_s"] = U;
+    out["gradient"] = plateau / (rho_f * g * start.bed_length);
+  } else {
+    out["velocity_m_s"] = nullptr;  // no fixed-bed samples to fit
+  }
   return out;
 }
 

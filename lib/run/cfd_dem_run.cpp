@@ -214,7 +214,12 @@ void run_cfd_dem(const project::Project& p, const RunOptions& options) {
     }
     if (options.progress && root) options.progress(std::min(t, p.time.end), p.time.end);
     if (last) break;
-    const long steps = std::min<long>(interval, total_steps - step);
+    long steps = std::min<long>(interval, total_steps - step);
+    // A snapshot lands on its time: the chunk before it is cut short.
+    if (next_snapshot < snapshots.size()) {
+      const long to_snapshot = std::lround(std::ceil((snapshots[next_snapshot] - t) / dt - 1e-9));
+      if (to_snapshot >= 1) steps = std::min(steps, to_snapshot);
+    }
     coupling.advance(steps);
     step += steps;
   }
