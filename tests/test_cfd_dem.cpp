@@ -204,3 +204,53 @@ TEST_CASE("CFD-DEM check 5: two MPI ranks give one rank's result", "[cfd_dem][mp
     CHECK(y["pressure_drop_Pa"].get<double>() == Approx(x["pressure_drop_Pa"].get<double>()).epsilon(0.01));
   }
 }
+
+TEST_CASE("CFD-DEM: a settled packing is cached, and the next run starts from it", "[cfd_dem]") {
+  // Both runs share one cache directory; the second settles nothing.
+  frostwall::test::TempDir dir;
+  auto brief = [](json& p) {
+    p["time"] = {{"end", 0.02}, {"unit", "s"}, {"snapshots", {0.02}}};
+    p["grains"]["settle_time"] = 0.05;
+  };
+  const json first = run_project(dir, "verify_fluidisation", brief);
+  fs::rename(dir.path / "out", dir.path / "first");
+  const json second = run_project(dir, "verify_fluidisation", brief);
+  CHECK_FALSE(first["packing"]["read_from_cache"].get<bool>());
+  CHECK(second["packing"]["read_from_cache"].get<bool>());
+  CHECK(second["packing"]["cache"] == first["packing"]["cache"]);
+  // The same grains, to the digits LAMMPS writes (17 significant); the
+  // contacts' tangential springs start unloaded after the cache (a data
+  // file), so 0.02 s later the bed differs by its relaxation, 1e-4 of it.
+  CHECK(second["series_start"]["bed_length_m"].get<double>() ==
+        Approx(first["series_start"]["bed_length_m"].get<double>()).epsilon(1e-12));
+  CHECK(second["series_start"]["porosity"].get<double>() == Approx(first["series_start"]["porosity"].get<double>()).epsilon(1e-12));
+  CHECK(second["snapshots"][0]["bed_length_m"].get<double>() ==
+        Approx(first["snapshots"][0]["bed_length_m"].get<double>()).epsilon(1e-3));
+  // Another seed is another packing: not the cached one.
+  const json other = run_project(dir, "verify_fluidisation", [&](json& p) {
+    brief(p);
+    p["grains"]["seed"] = 8;
+  });
+  CHECK_FALSE(other["packing"]["read_from_cache"].get<bool>());
+  // dem_commands.txt replays in LAMMPS's own program: the same 480 grains.
+  const std::string replay = "cd '" + dir.path.string() + "' && lmp -log none -in out/dem_commands.txt > replay.txt 2>&1";
+  REQUIRE(std::system(replay.c_str()) == 0);
+  std::ifstream in(dir.path / "replay.txt");
+  const std::string text((std::istreambuf_iterator<char>(in)), {});
+  CHECK(text.find("480 atoms") != std::string::npos);
+}
+
+TEST_CASE("CFD-DEM: the report fills its section and the shared ones, and loads nothing", "[cfd_dem][report]") {
+  frostwall::test::TempDir dir;
+  run_project(dir, "verify_ergun", [](json& p) { p["output"]["report"] = true; });
+  std::ifstream in(dir.path / "out" / "report.html");
+  const std::string html((std::istreambuf_iterator<char>(in)), {});
+  CHECK(html.find("{{") == std::string::npos);
+  CHECK(html.find("<section id=\"cfd_dem\">") != std::string::npos);
+  CHECK(html.find("Temperature maps") == std::string::npos);  // no thermal section
+  // One row per snapshot, the pressure drops as in summary.json.
+  const json s = read_json(dir.path / "out" / "summary.json");
+  for (const auto& sn : s["snapshots"]) CHECK(html.find(fmt::format(">{:.2f}<", sn["pressure_drop_Pa"].get<double>())) != std::string::npos);
+  CHECK(html.find("<svg") != std::string::npos);
+  CHECK(html.find("http") == std::string::npos);
+}

@@ -8,10 +8,10 @@ namespace frostwall::dem {
 namespace {
 // The contact model's words, shared by pair_coeff and the walls.
 std::string contact_model(const Contact& c) {
-  std::string model = fmt::format("hertz/material {:.17g} {:.17g} {:.17g} damping tsuji tangential mindlin NULL 1.0 {:.17g}",
+  std::string model = fmt::format("hertz/material {} {} {} damping tsuji tangential mindlin NULL 1.0 {}",
                                   c.youngs_modulus, c.restitution, c.poisson_ratio, c.friction);
   if (c.rolling_friction > 0.0)
-    model += fmt::format(" rolling sds {:.17g} 0.0 {:.17g}", c.rolling_stiffness, c.rolling_friction);
+    model += fmt::format(" rolling sds {} 0.0 {}", c.rolling_stiffness, c.rolling_friction);
   return model;
 }
 }  // namespace
@@ -23,7 +23,7 @@ std::vector<std::string> setup_commands(const Box& box) {
 }
 
 std::vector<std::string> create_box_commands(const Box& box) {
-  return {fmt::format("region domain block {:.17g} {:.17g} {:.17g} {:.17g} {:.17g} {:.17g} units box", box.low[0],
+  return {fmt::format("region domain block {} {} {} {} {} {} units box", box.low[0],
                       box.high[0], box.low[1], box.high[1], box.low[2], box.high[2]),
           "create_box 1 domain"};
 }
@@ -34,7 +34,7 @@ std::vector<std::string> contact_commands(const Box& box, const Contact& contact
     if (!box.periodic[k])
       c.push_back(fmt::format("fix wall_{0} all wall/gran granular {1} {0}plane {2:.17g} {3:.17g}", "xyz"[k],
                               contact_model(contact), box.low[k], box.high[k]));
-  c.push_back(fmt::format("neighbor {:.17g} bin", skin));
+  c.push_back(fmt::format("neighbor {} bin", skin));
   c.push_back(fmt::format("compute {} all contact/atom", contact_compute));
   return c;
 }
@@ -47,18 +47,18 @@ std::vector<std::string> box_commands(const Box& box, const Contact& contact, do
 }
 
 std::vector<std::string> grain_commands(const Grain& g, long id) {
-  return {fmt::format("create_atoms 1 single {:.17g} {:.17g} {:.17g} units box", g.position[0], g.position[1], g.position[2]),
-          fmt::format("set atom {} diameter {:.17g} density {:.17g}", id, g.diameter, g.density)};
+  return {fmt::format("create_atoms 1 single {} {} {} units box", g.position[0], g.position[1], g.position[2]),
+          fmt::format("set atom {} diameter {} density {}", id, g.diameter, g.density)};
 }
 
 std::string data_file(const Box& box, const std::vector<Grain>& grains) {
   std::string text = fmt::format("frostwall grains (LAMMPS data file, atom_style sphere)\n\n{} atoms\n1 atom types\n\n", grains.size());
   for (int k = 0; k < 3; ++k)
-    text += fmt::format("{:.17g} {:.17g} {}lo {}hi\n", box.low[k], box.high[k], "xyz"[k], "xyz"[k]);
+    text += fmt::format("{} {} {}lo {}hi\n", box.low[k], box.high[k], "xyz"[k], "xyz"[k]);
   text += "\nAtoms # sphere\n\n";
   for (std::size_t i = 0; i < grains.size(); ++i) {
     const auto& g = grains[i];
-    text += fmt::format("{} 1 {:.17g} {:.17g} {:.17g} {:.17g} {:.17g}\n", i + 1, g.diameter, g.density, g.position[0],
+    text += fmt::format("{} 1 {} {} {} {} {}\n", i + 1, g.diameter, g.density, g.position[0],
                         g.position[1], g.position[2]);
   }
   return text;
@@ -71,11 +71,11 @@ std::vector<std::string> motion_commands(const std::array<double, 3>& g, double 
   const double magnitude = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
   std::vector<std::string> c;
   if (magnitude > 0.0)
-    c.push_back(fmt::format("fix gravity all gravity {:.17g} vector {:.17g} {:.17g} {:.17g}", magnitude,
+    c.push_back(fmt::format("fix gravity all gravity {} vector {} {} {}", magnitude,
                             g[0] / magnitude, g[1] / magnitude, g[2] / magnitude));
   c.push_back(fmt::format("fix {} all external pf/callback 1 1", fluid_fix));
   if (!held) c.push_back("fix move all nve/sphere");
-  c.push_back(fmt::format("timestep {:.17g}", timestep));
+  c.push_back(fmt::format("timestep {}", timestep));
   return c;
 }
 

@@ -180,6 +180,12 @@ json report_view(const fs::path& dir) {
   for (const auto& w : warnings) list.push_back({{"text", w}});
   view["warnings"] = list;
   view["has_warnings"] = !warnings.empty();
+  if (run.summary.value("physics", std::string()) == "cfd-dem") {
+    detail::add_cfd_dem(run, view);
+    return view;
+  }
+  view["cfd_dem"] = false;
+  view["has_cfd_dem"] = false;
   detail::add_headline(run, view);
   detail::add_project(run, view);
   detail::add_maps(run, view);

@@ -133,7 +133,8 @@ json CfdDemResults::fluidisation() const {
 
 json CfdDemResults::summary(const json& facts) const {
   json j = facts;
-  j["name"] = p_.name;
+  j["project"] = p_.name;
+  j["frostwall_version"] = FROSTWALL_VERSION;
   j["physics"] = "cfd-dem";
   j["bed_axis"] = std::string(1, "xyz"[axis_]);
   json settling = json::array(), snapshots = json::array(), ergun = json::array();
@@ -160,6 +161,11 @@ json CfdDemResults::summary(const json& facts) const {
     }
   }
   j["settling"] = settling;
+  if (!series_.empty()) {  // the bed as the run starts (after settling)
+    const auto& s0 = series_.front();
+    j["series_start"] = {{"bed_length_m", s0.bed_length}, {"porosity", s0.porosity}, {"contacts", s0.contacts},
+                         {"grains_in_soil", s0.grains}};
+  }
   if (!series_.empty() && series_.back().grains == 1.0) j["terminal_velocity_m_s"] = series_.back().settling_velocity;
   j["snapshots"] = snapshots;
   if (c_.flow) j["ergun"] = ergun;

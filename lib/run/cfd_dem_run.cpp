@@ -149,6 +149,11 @@ void run_cfd_dem(const project::Project& p, const RunOptions& options) {
   const bool settle = c.grains.settle_time > 0.0 && !c.grains.held;
   const bool cached = settle && fs::exists(cache);
   const auto box = dem::dem_box(c);
+  // The packing's geometry and velocities come back from the cache, not
+  // its contacts' tangential springs: LAMMPS 2021 restarts of this pair
+  // style with its histories threw the grains apart here (lost atoms at
+  // the first step), so the cache is a data file and the springs start
+  // unloaded (the bed then moves by some 1e-4 of its length).
   for (const auto& s : dem::setup_commands(box)) lammps.command(s);
   if (cached) {
     note("packing: settled grains read from the cache " + cache.string());
@@ -230,12 +235,16 @@ void run_cfd_dem(const project::Project& p, const RunOptions& options) {
     io::write_pvd(out / "grains.pvd", grain_pvd);
     io::write_pvd(out / "fluid.pvd", fluid_pvd);
   }
-  std::string commands;
+  // The set-up as LAMMPS input (runs and the cache's write_data left out):
+  // `lmp -in dem_commands.txt` rebuilds the assembly from this directory's
+  // working directory.
+  std::string commands = fmt::format("# frostwall {}: the LAMMPS commands of this run's grain assembly\n", FROSTWALL_VERSION);
   for (const auto& line : lammps.commands())
-    if (!line.starts_with("run ")) commands += line + "\n";
+    if (!line.starts_with("run ") && !line.starts_with("write_data ")) commands += line + "\n";
   commands += fmt::format("# then, every {} steps: the fluid grid is solved and each grain's fluid force set\n"
-                          "# (fix {} external), and `run {}` follows; {} steps in all\n",
-                          interval, dem::fluid_fix, interval, total_steps);
+                          "# (fix {} external, from frostwall), and `run {}` follows; {} steps in all.\n"
+                          "# To run the grains without the water: unfix {}\n",
+                          interval, dem::fluid_fix, interval, total_steps, dem::fluid_fix);
   io::write_text_file(out / "dem_commands.txt", commands);
   io::write_text_file(out / "series.csv", results.csv());
   const json facts = {{"grains", lammps.grain_count()},
