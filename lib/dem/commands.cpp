@@ -16,10 +16,16 @@ std::string contact_model(const Contact& c) {
 }
 }  // namespace
 
-std::vector<std::string> setup_commands(const Box& box) {
+std::vector<std::string> setup_commands(const Box& box, int settle_axis) {
   auto bc = [&](int k) { return box.periodic[k] ? "p" : "f"; };
-  return {"units si", "atom_style sphere", "atom_modify map array",
-          fmt::format("boundary {} {} {}", bc(0), bc(1), bc(2)), "newton off", "comm_modify vel yes"};
+  std::vector<std::string> c = {"units si", "atom_style sphere", "atom_modify map array",
+                                fmt::format("boundary {} {} {}", bc(0), bc(1), bc(2)), "newton off", "comm_modify vel yes"};
+  if (settle_axis >= 0 && settle_axis < 3) {
+    std::array<std::string, 3> grid = {"*", "*", "*"};
+    grid[settle_axis] = "1";
+    c.push_back(fmt::format("processors {} {} {}", grid[0], grid[1], grid[2]));
+  }
+  return c;
 }
 
 std::vector<std::string> create_box_commands(const Box& box) {

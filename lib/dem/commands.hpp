@@ -34,7 +34,9 @@ struct Grain {
 };
 
 // Units, atom style, boundaries: what precedes the box or a data file.
-std::vector<std::string> setup_commands(const Box& box);
+// With a settle_axis (0, 1, 2) the ranks split the box only across it:
+// grains settle along it, and slabs along it would leave ranks empty.
+std::vector<std::string> setup_commands(const Box& box, int settle_axis = -1);
 // The box and one atom type (when the grains are not read from a file).
 std::vector<std::string> create_box_commands(const Box& box);
 // Granular contacts between grains, walls on every non-periodic face, the

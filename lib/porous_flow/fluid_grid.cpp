@@ -8,41 +8,16 @@
 #include <stdexcept>
 
 #include "porous_flow/bed_resistance.hpp"
+#include "porous_flow/grid_indexing.hpp"
 
 namespace frostwall::porous_flow {
 
-namespace {
+struct PressureSolver {
+  Eigen::ConjugateGradient<Eigen::SparseMatrix<double>, Eigen::Lower | Eigen::Upper, Eigen::IncompleteCholesky<double>> cg;
+};
 
-using Cell = std::array<int, 3>;
 
-// beta at |U_slip| -> 0: bed_gradient is linear in U there (its Darcy
-// limit), so a tiny speed gives the limit without dividing by zero.
-constexpr double tiny_speed = 1e-12;
-
-Cell coords(const GridShape& s, int c) {
-  return {c % s.cells[0], (c / s.cells[0]) % s.cells[1], c / (s.cells[0] * s.cells[1])};
-}
-
-int flat(const GridShape& s, const Cell& p) { return s.index(p[0], p[1], p[2]); }
-
-// Faces normal to an axis are numbered like cells with one more along it;
-// cell p's lower face has p's indices, its upper face one more on the axis.
-int face_id(const GridShape& s, int axis, Cell q, int side = 0) {
-  Cell d = s.cells;
-  d[axis] += 1;
-  q[axis] += side;
-  return q[0] + d[0] * (q[1] + d[1] * q[2]);
-}
-
-// A face field averaged to the centre of cell c, per axis.
-Vec3 face_mean(const GridShape& s, const std::array<std::vector<double>, 3>& field, int c) {
-  const Cell p = coords(s, c);
-  Vec3 mean;
-  for (int a = 0; a < 3; ++a) mean[a] = 0.5 * (field[a][face_id(s, a, p)] + field[a][face_id(s, a, p, 1)]);
-  return mean;
-}
-
-}  // namespace
+using namespace grid;
 
 Vec3 GridShape::centre(int i, int j, int k) const {
   const Cell p{i, j, k};
@@ -204,8 +179,12 @@ SolveReport FluidGrid::solve(double tolerance, double picard_tolerance, int max_
   // Warm start: beta from the last solution's slip, with the current grains.
   update_resistance(beta_);
   Eigen::VectorXd p = Eigen::Map<const Eigen::VectorXd>(pressure_.data(), n);
-  std::vector<double> next;
-  for (int it = 1; it <= max_picard; ++it) {
+  std::vector<double> next, last_step(n, 0.0);
+  // Inexact Picard: early solves only as tight as beta is settled, and one
+  // last solve at the full tolerance with the final beta (the mass balance).
+  double linear_tolerance = std::max(tolerance, 1e-6);
+  bool final_pass = false;
+  for (int it = 1; it <= max_picard + 1; ++it) {
     // Per cell: sum over faces of the outward mixture flux = 0, the slip
     // part T (p_c - p_nb) with T = A / (h beta_f) in the matrix.
     std::vector<Eigen::Triplet<double>> entries;
@@ -243,9 +222,13 @@ SolveReport FluidGrid::solve(double tolerance, double picard_tolerance, int max_
     }
     Matrix K(n, n);
     K.setFromTriplets(entries.begin(), entries.end());
-    Eigen::ConjugateGradient<Matrix, Eigen::Lower | Eigen::Upper, Eigen::IncompleteCholesky<double>> cg;
-    cg.setTolerance(tolerance);
-    cg.compute(K);
+    if (!solver_) {
+      solver_ = std::make_unique<PressureSolver>();
+      solver_->cg.analyzePattern(K);
+    }
+    auto& cg = solver_->cg;
+    cg.setTolerance(linear_tolerance);
+    cg.factorize(K);
     bool linear_ok = cg.info() == Eigen::Success;
     if (linear_ok) {
       p = cg.solveWithGuess(rhs, p);
@@ -257,17 +240,43 @@ SolveReport FluidGrid::solve(double tolerance, double picard_tolerance, int max_
     std::copy(p.data(), p.data() + n, pressure_.begin());
     update_faces();
     if (!linear_ok) return report;
-    update_resistance(next);
-    double change = 0.0;
-    for (int c = 0; c < n; ++c) change = std::max(change, std::abs(next[c] - beta_[c]) / beta_[c]);
-    // Stop with the beta the pressure was solved with, so the face fluxes
-    // balance exactly.
-    if (change < picard_tolerance) {
+    if (final_pass) {
       report.converged = true;
       break;
     }
-    if (it == max_picard) break;
+    update_resistance(next);
+    // Where beta swings about the answer (the inertial, Forchheimer term
+    // rules: beta ~ |U| and plain Picard gives beta_k+1 = b G / beta_k),
+    // take the geometric mean of the old and the new, which lands on it;
+    // elsewhere (Darcy-like cells) plain Picard converges in a step or two.
+    for (int c = 0; c < n; ++c) {
+      const double step = next[c] - beta_[c];
+      if (it > 1 && step * last_step[c] < 0.0) next[c] = std::sqrt(next[c] * beta_[c]);
+      last_step[c] = next[c] - beta_[c];
+    }
+    // The change in each cell's pressure gradient beta |U_slip| that the
+    // new beta makes, over the largest gradient in the grid: cells with
+    // next to no flow do not hold the iteration up.
+    double change = 0.0, largest = 0.0;
+    for (int c = 0; c < n; ++c) {
+      const double speed = face_mean(shape_, slip_, c).norm();
+      largest = std::max(largest, beta_[c] * speed);
+      change = std::max(change, std::abs(next[c] - beta_[c]) * speed);
+    }
+    change = largest > 0.0 ? change / largest : 0.0;
+    // Stop with the beta the pressure was solved with, so the face fluxes
+    // balance exactly.
+    if (change < picard_tolerance || it >= max_picard) {
+      if (linear_tolerance <= tolerance) {
+        report.converged = change < picard_tolerance;
+        break;
+      }
+      final_pass = true;  // the same beta, solved tightly
+      linear_tolerance = tolerance;
+      continue;
+    }
     beta_.swap(next);
+    linear_tolerance = std::max(tolerance, std::min(1e-6, 1e-3 * change));
   }
   update_drag();
   return report;
@@ -281,115 +290,18 @@ void FluidGrid::update_drag() {
   drag_coefficient_.resize(shape_.count());
   for (int c = 0; c < shape_.count(); ++c) {
     const double e = porosity_[c];
-    const double speed = std::max(face_mean(shape_, slip_, c).norm(), tiny_speed);
-    drag_coefficient_[c] = e * e * bed_gradient_per_solid(fluid_, e, diameter_[c], speed) / speed;
-  }
-}
-
-// ---- results -----------------------------------------------------------------
-
-// U = J - (1 - eps) v_p: the mixture flux J (mean of the opposite faces')
-// less the grains' own volume flux in the cell. (The faces' slip plus
-// eps v_p would mix the faces' grain velocity, averaged with grain-free
-// neighbours, into the cell's: a lone settling grain would drag the water
-// down with it at half its speed.)
-Vec3 FluidGrid::centre_velocity(int c) const {
-  return face_mean(shape_, slip_, c) + face_mean(shape_, grain_, c) - (1.0 - porosity_[c]) * grain_velocity_[c];
-}
-
-std::vector<Vec3> FluidGrid::superficial_velocity() const {
-  std::vector<Vec3> U(shape_.count());
-  for (int c = 0; c < shape_.count(); ++c) U[c] = centre_velocity(c);
-  return U;
-}
-
-FluidSample FluidGrid::sample(const Vec3& x) const {
-  std::array<int, 3> i0;
-  std::array<double, 3> f;
-  for (int a = 0; a < 3; ++a) {
-    const int n = shape_.cells[a];
-    const double s = std::clamp((x[a] - shape_.low[a]) / shape_.cell_size(a) - 0.5, 0.0, double(n - 1));
-    i0[a] = std::min(int(std::floor(s)), std::max(n - 2, 0));
-    f[a] = s - i0[a];
-  }
-  FluidSample out;
-  out.porosity = 0.0;
-  for (int u = 0; u < 2; ++u)
-    for (int v = 0; v < 2; ++v)
-      for (int w = 0; w < 2; ++w) {
-        const double weight = (u ? f[0] : 1.0 - f[0]) * (v ? f[1] : 1.0 - f[1]) * (w ? f[2] : 1.0 - f[2]);
-        if (weight == 0.0) continue;
-        const int c = shape_.index(i0[0] + u, i0[1] + v, i0[2] + w);
-        const Vec3 U = centre_velocity(c);
-        out.porosity += weight * porosity_[c];
-        out.superficial_velocity += weight * U;
-        out.fluid_velocity += weight * U / porosity_[c];
-        out.pressure_gradient += weight * face_mean(shape_, gradient_, c);
-        if (!drag_coefficient_.empty()) {
-          out.drag_coefficient += weight * drag_coefficient_[c];
-          out.drag_velocity += weight * drag_coefficient_[c] * U / porosity_[c];
-        }
-      }
-  if (out.drag_coefficient > 0.0) out.drag_velocity /= out.drag_coefficient;
-  return out;
-}
-
-double FluidGrid::cell_outflow(int c) const {
-  const Cell p = coords(shape_, c);
-  double out = 0.0;
-  for (int a = 0; a < 3; ++a) {
-    const int lo = face_id(shape_, a, p), hi = face_id(shape_, a, p, 1);
-    out += shape_.face_area(a) * (slip_[a][hi] + grain_[a][hi] - slip_[a][lo] - grain_[a][lo]);
-  }
-  return out;
-}
-
-double FluidGrid::inflow() const {
-  double q = 0.0;
-  for (int face = 0; face < 6; ++face)
-    if (faces_[face].kind == FaceKind::inflow_velocity) {
-      const int a = face / 2;
-      q += faces_[face].value * (shape_.high[(a + 1) % 3] - shape_.low[(a + 1) % 3]) *
-           (shape_.high[(a + 2) % 3] - shape_.low[(a + 2) % 3]);
+    if (beta_[c] > beta_floor_ && e < 0.999) {
+      // The beta the pressure was solved with, so that the grains take
+      // exactly what the water lost, however far Picard went.
+      drag_coefficient_[c] = e * e * beta_[c] / (1.0 - e);
+    } else {  // nearly no grains, or the floor: the law itself at this slip
+      const double speed = std::max(face_mean(shape_, slip_, c).norm(), tiny_speed);
+      drag_coefficient_[c] = e * e * bed_gradient_per_solid(fluid_, e, diameter_[c], speed) / speed;
     }
-  return q;
-}
-
-// Net outward flow through the pressure faces; grains never cross a box
-// face, so the mixture's is the slip flux.
-double FluidGrid::outflow() const {
-  double q = 0.0;
-  for (int c = 0; c < shape_.count(); ++c) {
-    const Cell p = coords(shape_, c);
-    for (int a = 0; a < 3; ++a)
-      for (int side = 0; side < 2; ++side)
-        if (faces_[2 * a + side].kind == FaceKind::pressure && p[a] == (side == 0 ? 0 : shape_.cells[a] - 1))
-          q += (side == 0 ? -1.0 : 1.0) * shape_.face_area(a) * slip_[a][face_id(shape_, a, p, side)];
   }
-  return q;
 }
 
-double FluidGrid::largest_cell_imbalance() const {
-  double worst = 0.0;
-  for (int c = 0; c < shape_.count(); ++c) worst = std::max(worst, std::abs(cell_outflow(c)));
-  return worst;
-}
-
-double FluidGrid::face_pressure(int face) const {
-  if (face < 0 || face > 5) throw std::invalid_argument("fluid grid: face index must be 0..5");
-  if (faces_[face].kind == FaceKind::pressure) return faces_[face].value;
-  const int a = face / 2, side = face % 2;
-  const double half = (side == 0 ? -0.5 : 0.5) * shape_.cell_size(a);
-  // Every face cell has the same area: the area-weighted mean is the mean.
-  double sum = 0.0;
-  int count = 0;
-  for (int c = 0; c < shape_.count(); ++c) {
-    const Cell p = coords(shape_, c);
-    if (p[a] != (side == 0 ? 0 : shape_.cells[a] - 1)) continue;
-    sum += pressure_[c] + half * gradient_[a][face_id(shape_, a, p, side)];
-    ++count;
-  }
-  return sum / count;
-}
+FluidGrid::~FluidGrid() = default;
+FluidGrid::FluidGrid(FluidGrid&&) noexcept = default;
 
 }  // namespace frostwall::porous_flow

@@ -15,6 +15,7 @@
 #pragma once
 
 #include <array>
+#include <memory>
 #include <vector>
 
 #include "porous_flow/drag_law.hpp"
@@ -67,12 +68,16 @@ struct SolveReport {
   bool converged = false;     // beta settled and every linear solve converged
 };
 
+struct PressureSolver;  // the CG and its preconditioner's ordering, kept between solves
+
 class FluidGrid {
  public:
   // Throws std::invalid_argument for an empty box, a bad porosity range or
   // no pressure face (the pressure would be fixed only up to a constant).
   FluidGrid(GridShape shape, std::array<FaceCondition, 6> faces, Fluid fluid, double default_diameter,
             double min_porosity, double max_porosity = 1.0);
+  ~FluidGrid();
+  FluidGrid(FluidGrid&&) noexcept;
 
   // Grain deposition in three steps, so that an MPI caller can Allreduce
   // the raw sums (deposits()) between add_grain and finish_grains.
@@ -130,6 +135,7 @@ class FluidGrid {
   double default_diameter_, min_porosity_, max_porosity_;
   double beta_floor_;
   std::vector<double> drag_coefficient_;  // K per cell, after a solve
+  std::unique_ptr<PressureSolver> solver_;  // the matrix's pattern never changes: ordered once
   std::vector<double> deposits_;
   std::vector<double> raw_porosity_, porosity_, diameter_, beta_, pressure_;
   std::vector<Vec3> grain_velocity_;

@@ -10,7 +10,8 @@ namespace frostwall::run {
 
 // The DEM step: project's, else a fifth of the smallest grain's Rayleigh time.
 double dem_timestep(const project::CfdDem& c);
-// DEM steps per fluid update: project's, else from the Stokes relaxation time.
+// DEM steps per fluid update: project's, else from the Stokes relaxation
+// time and the time the flow takes to carry a grain a tenth of its size.
 int coupling_interval(const project::CfdDem& c, double dt);
 // Throws project::ProjectError when the grains or the grid would not fit.
 void check_cfd_dem_resources(const project::CfdDem& c);
