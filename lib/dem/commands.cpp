@@ -20,11 +20,8 @@ std::vector<std::string> setup_commands(const Box& box, int settle_axis) {
   auto bc = [&](int k) { return box.periodic[k] ? "p" : "f"; };
   std::vector<std::string> c = {"units si", "atom_style sphere", "atom_modify map array",
                                 fmt::format("boundary {} {} {}", bc(0), bc(1), bc(2)), "newton off", "comm_modify vel yes"};
-  if (settle_axis >= 0 && settle_axis < 3) {
-    std::array<std::string, 3> grid = {"*", "*", "*"};
-    grid[settle_axis] = "1";
-    c.push_back(fmt::format("processors {} {} {}", grid[0], grid[1], grid[2]));
-  }
+  auto ranks = [&](int k) { return k == settle_axis ? "1" : "*"; };
+  if (settle_axis >= 0 && settle_axis < 3) c.push_back(fmt::format("processors {} {} {}", ranks(0), ranks(1), ranks(2)));
   return c;
 }
 

@@ -39,6 +39,23 @@ std::map<std::string, std::vector<double>> read_columns(const fs::path& file) {
   return columns;
 }
 
+Chart line_chart(const std::string& title, const std::string& x_label, const std::string& y_label, std::vector<Series> series) {
+  Chart c;
+  c.title = title;
+  c.x_label = x_label;
+  c.y_label = y_label;
+  c.series = std::move(series);
+  return c;
+}
+
+Series line(const std::string& label, const std::vector<double>& x, const std::vector<double>& y) {
+  Series s;
+  s.label = label;
+  s.x = x;
+  s.y = y;
+  return s;
+}
+
 json chart(const std::string& id, const Chart& c, const std::string& caption) {
   return {{"id", id}, {"title", c.title}, {"svg", render_svg(c)}, {"caption", caption}};
 }
@@ -91,28 +108,30 @@ void add_cfd_dem(const RunRecord& run, json& view) {
   };
   const auto t = column("time_s");
   if (!t.empty()) {
-    Chart dp{"Pressure drop", "time (s)", "pressure drop (Pa)", {{"inflow to outflow face", t, column("pressure_drop_Pa")}}};
+    Chart dp = line_chart("Pressure drop", "time (s)", "pressure drop (Pa)", {line("inflow to outflow face", t, column("pressure_drop_Pa"))});
     if (const auto it = s.find("minimum_fluidisation"); it != s.end())
-      dp.guides.push_back({false, (*it)["buoyant_weight_Pa"].get<double>(), "buoyant weight"});
+      dp.guides.push_back(Guide{false, (*it)["buoyant_weight_Pa"].get<double>(), "buoyant weight"});
     charts.push_back(chart("pressure_drop", dp, "The excess pressure at the inflow face less that at the outflow face."));
     if (s.contains("ergun")) {
-      Chart du{"Pressure drop against the Darcy velocity", "Darcy velocity (m/s)", "pressure drop (Pa)",
-               {{"", column("inflow_velocity_m_s"), column("pressure_drop_Pa"), "", false, true}}};
+      Series points = line("", column("inflow_velocity_m_s"), column("pressure_drop_Pa"));
+      points.markers = true;
+      Chart du = line_chart("Pressure drop against the Darcy velocity", "Darcy velocity (m/s)", "pressure drop (Pa)", {points});
       du.guides = dp.guides;
       du.x_include = {0.0};
       du.y_include = {0.0};
       charts.push_back(chart("pressure_drop_velocity", du, "A fixed bed's pressure drop rises with the flow; a bed that fluidises holds its buoyant weight."));
     }
-    Chart bed{"Bed porosity", "time (s)", "porosity", {{"", t, column("porosity")}}};
+    Chart bed = line_chart("Bed porosity", "time (s)", "porosity", {line("", t, column("porosity"))});
     charts.push_back(chart("porosity", bed, "One less the grains' volume over the bed's (area times length)."));
-    Chart contacts{"Contacts", "time (s)", "grain-grain contacts", {{"", t, column("contacts")}}};
+    Chart contacts = line_chart("Contacts", "time (s)", "grain-grain contacts", {line("", t, column("contacts"))});
     charts.push_back(chart("contacts", contacts, "Contacts between grains (walls not counted)."));
-    Chart force{"Mean fluid force per grain along the bed axis", "time (s)", "force (N)",
-                {{"drag", t, column("mean_drag_N")},
-                 {"pressure gradient", t, column("mean_pressure_gradient_force_N")},
-                 {"buoyancy", t, column("mean_buoyancy_N")}}};
+    Chart force = line_chart("Mean fluid force per grain along the bed axis", "time (s)", "force (N)",
+                             {line("drag", t, column("mean_drag_N")),
+                              line("pressure gradient", t, column("mean_pressure_gradient_force_N")),
+                              line("buoyancy", t, column("mean_buoyancy_N"))});
     charts.push_back(chart("fluid_force", force, "Signed along the bed axis, away from the face the grains rest on."));
-    Chart settling{"Settling velocity", "time (s)", "mean velocity along gravity (m/s)", {{"", t, column("settling_velocity_m_s")}}};
+    Chart settling = line_chart("Settling velocity", "time (s)", "mean velocity along gravity (m/s)",
+                                {line("", t, column("settling_velocity_m_s"))});
     charts.push_back(chart("settling", settling, "The grains' volume-weighted mean velocity along gravity."));
   }
   view["charts"] = charts;

@@ -101,6 +101,13 @@ std::array<double, 3> CfdDemCoupling::fluid_force(int id) const {
   return static_cast<std::size_t>(id) < held_.size() ? held_[id] : std::array<double, 3>{};
 }
 
+double CfdDemCoupling::lost(const double* x) const {
+  if (!c_.cavity) return 0.0;
+  double r2 = 0.0;
+  for (int k = 0; k < 3; ++k) r2 += (x[k] - c_.cavity->centre[k]) * (x[k] - c_.cavity->centre[k]);
+  return r2 < c_.cavity->radius * c_.cavity->radius ? 1.0 : 0.0;
+}
+
 GrainTotals CfdDemCoupling::totals() const {
   GrainTotals t;
   const int n = lammps_.local_count();
@@ -112,6 +119,7 @@ GrainTotals CfdDemCoupling::totals() const {
   for (int i = 0; i < n; ++i) {
     const double volume = std::numbers::pi / 6.0 * std::pow(2.0 * r[i], 3);
     t.count += 1.0;
+    t.in_cavity += lost(x[i]);
     t.volume += volume;
     t.mass += volume * c_.grains.density;
     t.contacts += contacts ? contacts[i] : 0.0;

@@ -21,6 +21,7 @@ namespace frostwall::run {
 // Sums over all grains of all ranks at one moment (after an Allreduce).
 struct GrainTotals {
   double count = 0.0, volume = 0.0, contacts = 0.0;
+  double in_cavity = 0.0;  // grains whose centre lies in the cavity: out of the soil
   double mass = 0.0;
   std::array<double, 3> position_sum{}, velocity_sum{};  // volume-weighted sums
   std::array<std::array<double, 3>, 3> force{};          // by kind: drag, pressure gradient, buoyancy (N)
@@ -39,6 +40,8 @@ class CfdDemCoupling {
   // The held fluid force (sum of all kinds) of a local grain by id.
   std::array<double, 3> fluid_force(int id) const;
   double coupling_seconds() const { return coupling_seconds_; }
+  // 1 for a grain that has left the soil region (its centre in the cavity), else 0.
+  double lost(const double* x) const;
 
  private:
   const project::CfdDem& c_;

@@ -36,7 +36,8 @@ CfdDemSample CfdDemResults::sample(double t, double u, const GrainTotals& g, con
   CfdDemSample s;
   s.time = t;
   s.inflow_velocity = u;
-  s.grains = g.count;
+  s.grains = g.count - g.in_cavity;
+  s.in_cavity = g.in_cavity;
   s.contacts = g.contacts;
   if (g.volume > 0.0) {
     const double mean = g.position_sum[axis_] / g.volume;
@@ -145,7 +146,7 @@ json CfdDemResults::summary(const json& facts) const {
     std::array<double, 3> total{};
     for (int kind = 0; kind < 3; ++kind)
       for (int a = 0; a < 3; ++a) total[a] += s.mean_force[kind][a];
-    snapshots.push_back({{"time", s.time}, {"grains_in_soil", s.grains}, {"porosity", s.porosity},
+    snapshots.push_back({{"time", s.time}, {"grains_in_soil", s.grains}, {"grains_in_cavity", s.in_cavity}, {"porosity", s.porosity},
                          {"bed_length_m", s.bed_length}, {"contacts", s.contacts},
                          {"mean_fluid_force_N", force(total)}, {"mean_drag_N", force(s.mean_force[0])},
                          {"mean_pressure_gradient_force_N", force(s.mean_force[1])},
@@ -154,7 +155,7 @@ json CfdDemResults::summary(const json& facts) const {
       // The fluid's total force on the grains along the bed, drag plus
       // pressure gradient (buoyancy is the hydrostatic part, not the flow's).
       const double sign = from_low_ ? 1.0 : -1.0;
-      const double on_grains = sign * s.grains * (s.mean_force[0][axis_] + s.mean_force[1][axis_]);
+      const double on_grains = sign * (s.grains + s.in_cavity) * (s.mean_force[0][axis_] + s.mean_force[1][axis_]);
       ergun.push_back({{"time", s.time}, {"superficial_velocity", s.inflow_velocity}, {"porosity", s.porosity},
                        {"bed_length", s.bed_length}, {"pressure_drop_Pa", s.pressure_drop},
                        {"fluid_force_on_grains_N", on_grains}, {"pressure_drop_times_area_N", s.pressure_drop * area_}});
@@ -166,7 +167,7 @@ json CfdDemResults::summary(const json& facts) const {
     j["series_start"] = {{"bed_length_m", s0.bed_length}, {"porosity", s0.porosity}, {"contacts", s0.contacts},
                          {"grains_in_soil", s0.grains}};
   }
-  if (!series_.empty() && series_.back().grains == 1.0) j["terminal_velocity_m_s"] = series_.back().settling_velocity;
+  if (!series_.empty() && series_.back().grains + series_.back().in_cavity == 1.0) j["terminal_velocity_m_s"] = series_.back().settling_velocity;
   j["snapshots"] = snapshots;
   if (c_.flow) j["ergun"] = ergun;
   if (const json f = fluidisation(); !f.is_null()) j["minimum_fluidisation"] = f;

@@ -20,6 +20,7 @@ struct CfdDemSample {
   double time = 0.0;               // s
   double inflow_velocity = 0.0;    // Darcy, m/s
   double grains = 0.0;             // in the soil region
+  double in_cavity = 0.0;          // fallen into the cavity (centre inside it)
   double bed_length = 0.0;         // m
   double porosity = 0.0;           // of the bed
   double contacts = 0.0;           // grain-grain contacts

@@ -71,7 +71,7 @@ namespace {
 
 // Every rank's grains gathered on rank 0, by id: the snapshot's grain file.
 void write_grains(const fs::path& file, dem::LammpsSession& lammps, const CfdDemCoupling& coupling) {
-  constexpr int fields = 13;  // id, x3, v3, radius, contacts, force3, ...
+  constexpr int fields = 13;  // id, x3, v3, radius, contacts, force3, lost
   const int n = lammps.local_count();
   const int* ids = lammps.ids();
   double** x = lammps.position();
@@ -83,7 +83,7 @@ void write_grains(const fs::path& file, dem::LammpsSession& lammps, const CfdDem
   for (int i = 0; i < n; ++i) {
     const auto f = coupling.fluid_force(ids[i]);
     for (double value : {double(ids[i]), x[i][0], x[i][1], x[i][2], v[i][0], v[i][1], v[i][2], r[i],
-                         contacts ? contacts[i] : 0.0, f[0], f[1], f[2], 0.0})
+                         contacts ? contacts[i] : 0.0, f[0], f[1], f[2], coupling.lost(x[i])})
       mine.push_back(value);
   }
   const int size = static_cast<int>(mine.size());
