@@ -31,14 +31,64 @@ std::vector<std::string> create_box_commands(const Box& box) {
           "create_box 1 domain"};
 }
 
-std::vector<std::string> contact_commands(const Box& box, const Contact& contact, double skin) {
-  std::vector<std::string> c = {"pair_style granular", "pair_coeff * * " + contact_model(contact)};
-  for (int k = 0; k < 3; ++k)
-    if (!box.periodic[k])
-      c.push_back(fmt::format("fix wall_{0} all wall/gran granular {1} {0}plane {2:.17g} {3:.17g}", "xyz"[k],
-                              contact_model(contact), box.low[k], box.high[k]));
+std::vector<std::string> pair_commands(const Contact& contact) {
+  return {"pair_style granular", "pair_coeff * * " + contact_model(contact)};
+}
+
+std::vector<std::string> wall_commands(const Box& box, const Contact& contact, double skin, int open_face) {
+  std::vector<std::string> c;
+  for (int k = 0; k < 3; ++k) {
+    if (box.periodic[k]) continue;
+    // An open face has no plane: NULL on its side.
+    const std::string lo = open_face == 2 * k ? "NULL" : fmt::format("{}", box.low[k]);
+    const std::string hi = open_face == 2 * k + 1 ? "NULL" : fmt::format("{}", box.high[k]);
+    c.push_back(fmt::format("fix wall_{0} all wall/gran granular {1} {0}plane {2} {3}", "xyz"[k], contact_model(contact), lo, hi));
+  }
   c.push_back(fmt::format("neighbor {} bin", skin));
   c.push_back(fmt::format("compute {} all contact/atom", contact_compute));
+  return c;
+}
+
+std::vector<std::string> contact_commands(const Box& box, const Contact& contact, double skin, int open_face) {
+  auto c = pair_commands(contact);
+  for (auto&& s : wall_commands(box, contact, skin, open_face)) c.push_back(std::move(s));
+  if (open_face >= 0) c.push_back(lost_grains_allowed);
+  return c;
+}
+
+std::vector<std::string> new_contact_commands(const Box& box, const Contact& contact, int open_face) {
+  std::vector<std::string> c = {"pair_coeff * * " + contact_model(contact)};
+  for (int k = 0; k < 3; ++k)
+    if (!box.periodic[k]) c.push_back(fmt::format("unfix wall_{}", "xyz"[k]));
+  for (auto&& s : wall_commands(box, contact, 0.0, open_face))
+    if (s.starts_with("fix wall_")) c.push_back(std::move(s));
+  return c;
+}
+
+std::vector<std::string> cavity_wall_commands(const std::array<double, 3>& x, double r, const Contact& contact) {
+  return {fmt::format("region cavity_outside sphere {} {} {} {} side out units box", x[0], x[1], x[2], r),
+          "fix cavity_wall all wall/gran/region granular " + contact_model(contact) + " region cavity_outside"};
+}
+
+std::vector<std::string> remove_cavity_wall_commands() { return {"unfix cavity_wall"}; }
+
+std::string cavity_region_command(const std::array<double, 3>& x, double r) {
+  return fmt::format("region cavity_inside sphere {} {} {} {} side in units box", x[0], x[1], x[2], r);
+}
+
+std::vector<std::string> trim_commands(const Box& box, int axis, double level, const Contact& contact, int open_face) {
+  std::array<std::string, 6> bounds = {"INF", "INF", "INF", "INF", "INF", "INF"};
+  bounds[2 * axis] = fmt::format("{}", level);
+  std::vector<std::string> c = {fmt::format("region above block {} {} {} {} {} {} units box", bounds[0], bounds[1], bounds[2],
+                                            bounds[3], bounds[4], bounds[5]),
+                                "delete_atoms region above compress no",
+                                fmt::format("change_box all {} final {} {} units box", "xyz"[axis], box.low[axis], box.high[axis])};
+  if (!box.periodic[axis]) {
+    const std::string lo = open_face == 2 * axis ? "NULL" : fmt::format("{}", box.low[axis]);
+    const std::string hi = open_face == 2 * axis + 1 ? "NULL" : fmt::format("{}", box.high[axis]);
+    c.push_back(fmt::format("unfix wall_{}", "xyz"[axis]));
+    c.push_back(fmt::format("fix wall_{0} all wall/gran granular {1} {0}plane {2} {3}", "xyz"[axis], contact_model(contact), lo, hi));
+  }
   return c;
 }
 

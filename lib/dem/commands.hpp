@@ -39,9 +39,15 @@ struct Grain {
 std::vector<std::string> setup_commands(const Box& box, int settle_axis = -1);
 // The box and one atom type (when the grains are not read from a file).
 std::vector<std::string> create_box_commands(const Box& box);
-// Granular contacts between grains, walls on every non-periodic face, the
-// neighbour skin, and the per-grain contact count (compute `contacts`).
-std::vector<std::string> contact_commands(const Box& box, const Contact& contact, double skin);
+// Granular contacts between grains; walls on every non-periodic face but
+// an open one (open_face 0..5, x_min .. z_max; -1 none), the neighbour
+// skin, and the per-grain contact count (compute `contacts`); both.
+std::vector<std::string> pair_commands(const Contact& contact);
+std::vector<std::string> wall_commands(const Box& box, const Contact& contact, double skin, int open_face = -1);
+std::vector<std::string> contact_commands(const Box& box, const Contact& contact, double skin, int open_face = -1);
+// The contact law changed in place (pair_coeff and the walls again): the
+// settling friction replaced by the run's.
+std::vector<std::string> new_contact_commands(const Box& box, const Contact& contact, int open_face = -1);
 // All three above, in order (a box without grains yet).
 std::vector<std::string> box_commands(const Box& box, const Contact& contact, double skin);
 // The id-th grain made (1, 2, ...: LAMMPS numbers atoms in order).
@@ -50,6 +56,21 @@ std::vector<std::string> grain_commands(const Grain& grain, long id);
 std::string data_file(const Box& box, const std::vector<Grain>& grains);
 std::string read_data_command(const std::string& file);
 std::string write_data_command(const std::string& file);
+// A sphere (centre, radius) the grains are kept out of by a wall while
+// they settle (fix `cavity_wall`), and the commands that take it away.
+std::vector<std::string> cavity_wall_commands(const std::array<double, 3>& centre, double radius, const Contact& contact);
+std::vector<std::string> remove_cavity_wall_commands();
+// The sphere as a region (`cavity_inside`, once), and the command that
+// deletes every grain whose centre is in it (ids kept).
+std::string cavity_region_command(const std::array<double, 3>& centre, double radius);
+inline constexpr const char* delete_in_cavity = "delete_atoms region cavity_inside compress no";
+// After settling in a taller column: deletes the grains whose centre lies
+// above `level` along the axis, shrinks the box along it to `box`, and
+// puts that axis's walls at the new faces.
+std::vector<std::string> trim_commands(const Box& box, int axis, double level, const Contact& contact, int open_face = -1);
+// With an open face: grains that leave the box are gone, not an error.
+inline constexpr const char* lost_grains_allowed = "thermo_modify lost ignore";
+
 // Gravity (m/s2, any direction), an external per-grain force (fix id
 // `fluid`, pf/callback every step), velocity-Verlet for spheres unless the
 // grains are held, the step.

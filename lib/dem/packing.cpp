@@ -33,7 +33,8 @@ double mean_grain_volume(const project::GrainSettings& g) {
 }
 
 double fill_volume(const project::CfdDem& c) {
-  const auto& g = c.grains;
+  auto g = c.grains;
+  for (int k = 0; k < 3; ++k) g.fill_high[k] = std::min(g.fill_high[k], c.box.high[k]);  // a settling column counts to the top
   double volume = 1.0;
   for (int k = 0; k < 3; ++k) volume *= g.fill_high[k] - g.fill_low[k];
   if (!c.cavity) return volume;
@@ -132,6 +133,7 @@ std::filesystem::path packing_cache_file(const project::CfdDem& c, double timest
   std::string key = fmt::format("v1 {} {} {} {} {} {} {} {} {} {} {} {}", g.diameter_min, g.diameter_max, g.density,
                                 g.youngs_modulus, g.poisson_ratio, g.restitution, g.friction, g.rolling_friction,
                                 requested_grains(c), g.seed, g.settle_time, g.held);
+  if (g.settle_friction) key += fmt::format(" settle_friction {}", *g.settle_friction);
   for (int k = 0; k < 3; ++k)
     key += fmt::format(" {} {} {} {} {} {} {}", g.fill_low[k], g.fill_high[k], c.box.low[k], c.box.high[k],
                        c.box.periodic[k], c.gravity[k], c.fluid.cells[k]);
@@ -149,6 +151,14 @@ std::filesystem::path packing_cache_file(const project::CfdDem& c, double timest
 }
 
 Box dem_box(const project::CfdDem& c) { return {c.box.low, c.box.high, c.box.periodic}; }
+
+bool has_settling_column(const project::CfdDem& c) { return c.grains.fill_high[2] > c.box.high[2]; }
+
+Box settling_box(const project::CfdDem& c) {
+  Box box = dem_box(c);
+  box.high[2] = std::max(box.high[2], c.grains.fill_high[2]);
+  return box;
+}
 
 Contact dem_contact(const project::CfdDem& c) {
   const auto& g = c.grains;

@@ -18,7 +18,7 @@ namespace frostwall::dem {
 
 // Mean volume of a grain (diameters uniform in [min, max]), m3.
 double mean_grain_volume(const project::GrainSettings& g);
-// The fill region's volume minus the cavity's part of it, m3 (the
+// The fill region's volume within the box, minus the cavity's part of it, m3 (the
 // cavity's overlap found by sampling; exact when it lies inside).
 double fill_volume(const project::CfdDem& c);
 // The grain count the project asks for (count, or from the porosity).
@@ -34,6 +34,10 @@ std::vector<Grain> initial_grains(const project::CfdDem& c);
 std::filesystem::path packing_cache_file(const project::CfdDem& c, double timestep, int coupling_interval);
 
 Box dem_box(const project::CfdDem& c);
+// The box grains settle in: the project's, raised to the top of a
+// settling column (grains.fill above the box).
+Box settling_box(const project::CfdDem& c);
+bool has_settling_column(const project::CfdDem& c);
 Contact dem_contact(const project::CfdDem& c);
 
 }  // namespace frostwall::dem

@@ -26,12 +26,18 @@ struct GrainSettings {
   double poisson_ratio = 0.3;
   double restitution = 0.5;       // normal coefficient of restitution (Tsuji damping)
   double friction = 0.5;          // sliding, Coulomb
+  // Sliding friction while settling (default: friction): a low value packs
+  // the grains denser, the usual way DEM prepares a dense sand.
+  std::optional<double> settle_friction;
   double rolling_friction = 0.0;  // rolling resistance coefficient (0: none)
   // Packing: a grain count, or the porosity of the fill region (minus the
   // cavity) that sets the count.
   std::optional<long> count;
   std::optional<double> porosity;
-  Point3 fill_low{}, fill_high{};  // where grains are placed (default: the box)
+  // Where grains are placed (default: the box). It may reach above the
+  // box against gravity: a settling column, trimmed to the box after
+  // settling (the grains above the box's top are taken away).
+  Point3 fill_low{}, fill_high{};
   unsigned long long seed = 1;
   double settle_time = 0.0;  // s under gravity, still water, before the flow opens
   bool held = false;         // a fixed bed: grains never move
@@ -65,6 +71,9 @@ struct FlowSettings {
   std::optional<double> inflow_pressure;                  // Pa
   BoxFace outflow = BoxFace::z_max;
   double outflow_pressure = 0.0;                          // Pa
+  // Grains may leave through the outflow face (washed out: no wall there);
+  // else a screen holds them.
+  bool open_to_grains = false;
   double velocity_at(double t) const;
 };
 
@@ -85,6 +94,10 @@ struct CfdDem {
   Point3 gravity{0.0, 0.0, -9.81};   // m/s2
   std::vector<std::string> forces = default_fluid_forces;
   CouplingSettings coupling;
+  // The point whose fluid cell is watched (pressure, forces on its grains):
+  // the paper's "point A, 0.04 m below the surface above the cavity".
+  // Default with a cavity: above its centre, 0.04 m below the box's top.
+  std::optional<Point3> point_a;
   std::optional<double> max_grains;  // refuse above (nullopt: from the machine's memory)
 };
 

@@ -78,7 +78,7 @@ CfdDemBox read_box(const Node& n) {
 GrainSettings read_grains(const Node& n, const CfdDemBox& box) {
   GrainSettings g;
   if (!n.object({"diameter", "diameter_range", "density", "youngs_modulus", "poisson_ratio", "restitution", "friction",
-                 "rolling_friction", "count", "porosity", "fill", "seed", "settle_time", "held"}))
+                 "rolling_friction", "count", "porosity", "fill", "seed", "settle_time", "held", "settle_friction"}))
     return g;
   const Node d = n["diameter"], range = n["diameter_range"];
   if (d.present() == range.present()) d.problem(R"(give either "diameter" (m) or "diameter_range" [min, max] (m))");
@@ -102,6 +102,7 @@ GrainSettings read_grains(const Node& n, const CfdDemBox& box) {
     else g.restitution = *v;
   }
   g.friction = n["friction"].non_negative().value_or(g.friction);
+  g.settle_friction = n["settle_friction"].non_negative();
   g.rolling_friction = n["rolling_friction"].non_negative().value_or(g.rolling_friction);
   const Node count = n["count"], porosity = n["porosity"];
   if (count.present() == porosity.present()) count.problem(R"(give either "count" (grains) or "porosity" (of the fill region))");
@@ -116,8 +117,11 @@ GrainSettings read_grains(const Node& n, const CfdDemBox& box) {
   if (const Node fill = n["fill"]; fill.object({"low", "high"})) {
     const auto low = read_point3(fill["low"].required()), high = read_point3(fill["high"].required());
     if (low && high) {
-      if (!inside(*low, box.low, box.high) || !inside(*high, box.low, box.high))
-        fill.problem("must lie inside the box");
+      // Above the box (against gravity, z here) it may go: a settling column.
+      Point3 roof = box.high;
+      roof[2] = std::max(roof[2], high->at(2));
+      if (!inside(*low, box.low, box.high) || !inside(*high, box.low, roof))
+        fill.problem("must lie inside the box (it may reach above its top: a settling column)");
       else {
         bool ordered = true;
         for (int k = 0; k < 3; ++k) ordered = ordered && high->at(k) > low->at(k);
@@ -169,7 +173,8 @@ FluidSettings read_fluid(const Node& n, const CfdDemBox& box) {
 
 FlowSettings read_flow(const Node& n) {
   FlowSettings flow;
-  if (!n.object({"inflow", "darcy_velocity", "inflow_pressure", "outflow", "outflow_pressure"})) return flow;
+  if (!n.object({"inflow", "darcy_velocity", "inflow_pressure", "outflow", "outflow_pressure", "open_to_grains"})) return flow;
+  flow.open_to_grains = n["open_to_grains"].boolean().value_or(false);
   flow.inflow = read_face(n["inflow"].required()).value_or(flow.inflow);
   flow.outflow = read_face(n["outflow"].required()).value_or(flow.outflow);
   if (n["inflow"].present() && n["outflow"].present() && flow.inflow == flow.outflow)
@@ -222,7 +227,7 @@ std::vector<std::string> read_forces(const Node& n) {
 
 void read_cfd_dem(const Node& root, Project& project) {
   root.object({"name", "description", "physics", "grains", "box", "cavity", "fluid", "flow", "gravity", "forces",
-               "coupling", "time", "output", "max_grains"});
+               "coupling", "time", "output", "max_grains", "point_a"});
   project.name = root["name"].required().string().value_or("");
   project.description = root["description"].string(true).value_or("");
   CfdDem c;
@@ -245,6 +250,17 @@ void read_cfd_dem(const Node& root, Project& project) {
     c.coupling.dem_timestep = cp["dem_timestep"].positive();
   }
   c.max_grains = root["max_grains"].positive();
+  if (const Node a = root["point_a"]; a.present()) {
+    if (const auto x = read_point3(a)) {
+      if (!inside(*x, c.box.low, c.box.high)) a.problem("must lie inside the box");
+      c.point_a = *x;
+    }
+  } else if (c.cavity) {
+    c.point_a = Point3{c.cavity->centre[0], c.cavity->centre[1], c.box.high[2] - 0.04};
+  }
+  // A settling column above the box needs gravity down z.
+  if (c.grains.fill_high[2] > c.box.high[2] && !(c.gravity[2] < 0.0 && c.gravity[0] == 0.0 && c.gravity[1] == 0.0))
+    root["grains"]["fill"]["high"].problem("reaches above the box: a settling column needs gravity along -z");
   // A periodic axis carries no flow through its faces.
   if (c.flow)
     for (const auto& [face, key] : {std::pair{c.flow->inflow, "inflow"}, std::pair{c.flow->outflow, "outflow"}})

@@ -1,5 +1,6 @@
 #include "run/cfd_dem_coupling.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <mpi.h>
@@ -74,9 +75,7 @@ porous_flow::SolveReport CfdDemCoupling::update(double inflow_velocity) {
   // itself (the drag laws themselves are good to some 10 %); the flow's
   // mass balance holds to the linear solver's 1e-10 whatever beta stopped at.
   const auto report = grid_.solve(1e-10, 1e-3);
-  // Grain ids are 1..N and never reused (no grain is created later).
-  const std::size_t largest = static_cast<std::size_t>(lammps_.grain_count()) + 1;
-  if (held_.size() < largest) held_.resize(largest), by_kind_.resize(largest);
+  size_by_id();
   const porous_flow::Fluid fluid{c_.fluid.density, c_.fluid.viscosity};
   const Vec3 g(c_.gravity[0], c_.gravity[1], c_.gravity[2]);
   for (int i = 0; i < n; ++i) {
@@ -93,6 +92,38 @@ porous_flow::SolveReport CfdDemCoupling::update(double inflow_velocity) {
   }
   coupling_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return report;
+}
+
+void CfdDemCoupling::size_by_id() {
+  // Grains are never created after the start, and deleted ones keep their
+  // ids: the largest id any rank holds bounds them all.
+  const int n = lammps_.local_count();
+  const int* ids = lammps_.ids();
+  int largest = 0;
+  for (int i = 0; i < n; ++i) largest = std::max(largest, ids[i]);
+  if (lammps_.ranks() > 1) MPI_Allreduce(MPI_IN_PLACE, &largest, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
+  if (held_.size() < static_cast<std::size_t>(largest) + 1) held_.resize(largest + 1), by_kind_.resize(largest + 1);
+}
+
+void CfdDemCoupling::hold_buoyancy_only() {
+  size_by_id();
+  const int n = lammps_.local_count();
+  const int* ids = lammps_.ids();
+  const double* r = lammps_.radius();
+  const porous_flow::BuoyancyForce buoyancy;
+  const porous_flow::Fluid fluid{c_.fluid.density, c_.fluid.viscosity};
+  const Vec3 g(c_.gravity[0], c_.gravity[1], c_.gravity[2]);
+  for (int i = 0; i < n; ++i) {
+    const Vec3 f = buoyancy.force(fluid, g, 2.0 * r[i], Vec3::Zero(), porous_flow::FluidSample{});
+    held_[ids[i]] = {f[0], f[1], f[2]};
+    by_kind_[ids[i]] = {};
+    by_kind_[ids[i]][kind_index(porous_flow::ForceKind::buoyancy)] = held_[ids[i]];
+  }
+}
+
+const std::array<std::array<double, 3>, 3>& CfdDemCoupling::force_by_kind(int id) const {
+  static const std::array<std::array<double, 3>, 3> none{};
+  return static_cast<std::size_t>(id) < by_kind_.size() ? by_kind_[id] : none;
 }
 
 void CfdDemCoupling::advance(long steps) { lammps_.run(steps); }

@@ -33,12 +33,16 @@ class CfdDemCoupling {
   // Deposits, solves the flow (inflow velocity as given), finds and holds
   // every local grain's fluid force. Returns the fluid solve's report.
   porous_flow::SolveReport update(double inflow_velocity);
+  // Without the grid: gravity's partner only, the buoyancy (grains settling
+  // in a column the grid does not reach).
+  void hold_buoyancy_only();
   // Runs `steps` DEM steps with the held forces.
   void advance(long steps);
   GrainTotals totals() const;  // collective: every rank must call it
   const porous_flow::FluidGrid& grid() const { return grid_; }
-  // The held fluid force (sum of all kinds) of a local grain by id.
+  // The held fluid force (sum of all kinds) of a local grain by id, and by kind.
   std::array<double, 3> fluid_force(int id) const;
+  const std::array<std::array<double, 3>, 3>& force_by_kind(int id) const;
   double coupling_seconds() const { return coupling_seconds_; }
   // 1 for a grain that has left the soil region (its centre in the cavity), else 0.
   double lost(const double* x) const;
@@ -51,6 +55,7 @@ class CfdDemCoupling {
   std::vector<std::array<double, 3>> held_;                      // by grain id
   std::vector<std::array<std::array<double, 3>, 3>> by_kind_;  // by grain id
   double coupling_seconds_ = 0.0;
+  void size_by_id();  // held_ and by_kind_ reach the largest grain id (ids are never reused)
 };
 
 // The fluid grid's faces for a project: the flow's inflow and outflow, or

@@ -22,6 +22,8 @@
 #include "report/report.hpp"
 #include "run/cfd_dem_coupling.hpp"
 #include "run/cfd_dem_results.hpp"
+#include "run/cfd_dem_setup.hpp"
+#include "run/cfd_dem_soil.hpp"
 
 namespace frostwall::run {
 
@@ -38,14 +40,14 @@ double dem_timestep(const project::CfdDem& c) {
   return 0.2 * rayleigh;
 }
 
-int coupling_interval(const project::CfdDem& c, double dt) {
+int coupling_interval(const project::CfdDem& c, double dt, bool flowing) {
   if (c.coupling.interval) return *c.coupling.interval;
   // Forces are held between fluid updates: for at most 2 % of the smallest
-  // grain's Stokes relaxation time, and no longer than the flow takes to
-  // carry a grain a tenth of its diameter; 1 to 250 steps.
+  // grain's Stokes relaxation time, and, once the water flows, no longer
+  // than it takes to carry a grain a tenth of its diameter; 1 to 250 steps.
   const double d = c.grains.diameter_min;
   double hold = 0.02 * c.grains.density * d * d / (18.0 * c.fluid.viscosity);
-  if (c.flow)
+  if (c.flow && flowing)
     for (const auto& [t, u] : c.flow->darcy_velocity)
       if (std::abs(u) > 0.0) hold = std::min(hold, 0.1 * d / std::abs(u));
   return std::clamp(static_cast<int>(hold / dt), 1, 250);
@@ -136,7 +138,10 @@ void run_cfd_dem(const project::Project& p, const RunOptions& options) {
   const auto grains = dem::initial_grains(c);  // refuses a count that does not fit
   check_output_directory(p.output.directory);
   const double dt = dem_timestep(c);
-  const int interval = coupling_interval(c, dt);
+  const int interval = coupling_interval(c, dt, true);
+  // Settling is in still water, whatever the flow later: variants that
+  // differ only in their flow share one settled packing.
+  const int settle_interval = coupling_interval(c, dt, false);
 
   // LAMMPS's own log beside the results: where it explains an abort.
   if (dem::world_rank() == 0) fs::create_directories(p.output.directory);
@@ -153,55 +158,21 @@ void run_cfd_dem(const project::Project& p, const RunOptions& options) {
   if (root) {
     if (!options.project_text.empty()) io::write_text_file(out / "project.json", options.project_text);
   }
-  const fs::path cache = dem::packing_cache_file(c, dt, interval);
-  const bool settle = c.grains.settle_time > 0.0 && !c.grains.held;
-  const bool cached = settle && fs::exists(cache);
-  const auto box = dem::dem_box(c);
-  // The packing's geometry and velocities come back from the cache, not
-  // its contacts' tangential springs: LAMMPS 2021 restarts of this pair
-  // style with its histories threw the grains apart here (lost atoms at
-  // the first step), so the cache is a data file and the springs start
-  // unloaded (the bed then moves by some 1e-4 of its length).
-  int settle_axis = 0;
-  for (int k = 1; k < 3; ++k)
-    if (std::abs(c.gravity[k]) > std::abs(c.gravity[settle_axis])) settle_axis = k;
-  if (c.gravity[settle_axis] == 0.0) settle_axis = -1;
-  for (const auto& s : dem::setup_commands(box, settle_axis)) lammps.command(s);
-  if (cached) {
-    note("packing: settled grains read from the cache " + cache.string());
-    lammps.command(dem::read_data_command(cache.string()));
-  } else {
-    if (root) io::write_text_file(out / "dem_initial.data", dem::data_file(box, grains));
-    MPI_Barrier(MPI_COMM_WORLD);
-    lammps.command(dem::read_data_command((out / "dem_initial.data").string()));
-  }
-  for (const auto& s : dem::contact_commands(box, dem::dem_contact(c), 0.25 * c.grains.diameter_max)) lammps.command(s);
-  for (const auto& s : dem::motion_commands(c.gravity, dt, c.grains.held)) lammps.command(s);
+  const GrainSetup setup = set_up_grains(p, lammps, grains, out, dt, settle_interval, note);
   CfdDemCoupling coupling(c, lammps);
   lammps.command("run 0 post no");  // forces, neighbour lists and computes set up before anything reads them
   note(fmt::format("cfd-dem: {} grains on {} rank(s), DEM step {:.3g} s, fluid every {} steps", lammps.grain_count(),
                    lammps.ranks(), dt, interval));
 
-  if (settle && !cached) {
-    const long chunks = std::max(1L, std::lround(c.grains.settle_time / (dt * interval)));
-    for (long k = 0; k < chunks; ++k) {
-      coupling.update(0.0);
-      coupling.advance(interval);
-      if (options.progress && root) options.progress(-c.grains.settle_time * (1.0 - double(k + 1) / chunks), p.time.end);
-    }
-    // Cached under a temporary name, renamed when complete.
-    const fs::path tmp = cache.string() + fmt::format(".tmp-{}", getpid());
-    if (root) fs::create_directories(cache.parent_path());
-    MPI_Barrier(MPI_COMM_WORLD);
-    lammps.command(dem::write_data_command(tmp.string()));
-    if (root) fs::rename(tmp, cache);
-    note("packing: settled for " + fmt::format("{:g}", c.grains.settle_time) + " s, cached as " + cache.string());
-  }
+  settle_grains(p, lammps, coupling, setup, dt, settle_interval, options.progress, note);
 
   // The run proper (after any settling) is what the rates are of.
   const auto flow_start = std::chrono::steady_clock::now();
   const double coupling_before = coupling.coupling_seconds();
   CfdDemResults results(p);
+  const SoilWatch soil(c, lammps);
+  SoilRecord soil_record(c);
+  double lost_cavity = 0.0, lost_outflow = 0.0, start_volume = -1.0;
   std::vector<double> samples;
   for (int k = 0; k <= 200; ++k) samples.push_back(p.time.end * k / 200.0);
   const auto& snapshots = p.time.snapshots;
@@ -219,7 +190,10 @@ void run_cfd_dem(const project::Project& p, const RunOptions& options) {
     const bool is_snapshot = next_snapshot < snapshots.size() && (t >= snapshots[next_snapshot] - 0.5 * dt || last);
     if (is_sample || is_snapshot || last) {
       const auto totals = coupling.totals();
+      if (start_volume < 0.0) start_volume = totals.volume;
       results.add(results.sample(t, u, totals, coupling.grid(), report), is_snapshot);
+      soil_record.add({t, totals.count - totals.in_cavity, lost_cavity, lost_outflow, totals.contacts, soil.measure(coupling)},
+                      is_snapshot);
       while (next_sample < samples.size() && samples[next_sample] <= t + 0.5 * dt) ++next_sample;
     }
     if (is_snapshot) {
@@ -240,8 +214,15 @@ void run_cfd_dem(const project::Project& p, const RunOptions& options) {
       const long to_snapshot = std::lround(std::ceil((snapshots[next_snapshot] - t) / dt - 1e-9));
       if (to_snapshot >= 1) steps = std::min(steps, to_snapshot);
     }
+    const long before = lammps.grain_count();
     coupling.advance(steps);
     step += steps;
+    // Grains gone through an open outflow face, then those fallen into the
+    // cavity (the leak carries them away: deleted).
+    const long after_run = lammps.grain_count();
+    if (c.cavity) lammps.command(dem::delete_in_cavity);
+    lost_outflow += static_cast<double>(before - after_run);
+    lost_cavity += static_cast<double>(after_run - lammps.grain_count());
   }
 
   const auto now = std::chrono::steady_clock::now();
@@ -258,13 +239,15 @@ void run_cfd_dem(const project::Project& p, const RunOptions& options) {
   // working directory.
   std::string commands = fmt::format("# frostwall {}: the LAMMPS commands of this run's grain assembly\n", FROSTWALL_VERSION);
   for (const auto& line : lammps.commands())
-    if (!line.starts_with("run ") && !line.starts_with("write_data ")) commands += line + "\n";
+    if (!line.starts_with("run ") && !line.starts_with("write_data ") && line != dem::delete_in_cavity) commands += line + "\n";
   commands += fmt::format("# then, every {} steps: the fluid grid is solved and each grain's fluid force set\n"
                           "# (fix {} external, from frostwall), and `run {}` follows; {} steps in all.\n"
-                          "# To run the grains without the water: unfix {}\n",
-                          interval, dem::fluid_fix, interval, total_steps, dem::fluid_fix);
+                          "# To run the grains without the water: unfix {}\n{}",
+                          interval, dem::fluid_fix, interval, total_steps, dem::fluid_fix,
+                          c.cavity ? fmt::format("# after every run: {}\n", dem::delete_in_cavity) : "");
   io::write_text_file(out / "dem_commands.txt", commands);
   io::write_text_file(out / "series.csv", results.csv());
+  io::write_text_file(out / "soil.csv", soil_record.csv());
   const json facts = {{"grains", lammps.grain_count()},
                       {"ranks", lammps.ranks()},
                       {"dem_timestep_s", dt},
@@ -272,12 +255,14 @@ void run_cfd_dem(const project::Project& p, const RunOptions& options) {
                       {"dem_steps", total_steps},
                       {"fluid_cells", c.fluid.cells},
                       {"fluid_forces", c.forces},
-                      {"packing", {{"cache", cache.string()}, {"read_from_cache", cached}, {"settle_time_s", c.grains.settle_time}}},
+                      {"packing", {{"cache", setup.cache.string()}, {"read_from_cache", setup.cached}, {"settle_time_s", c.grains.settle_time}}},
                       {"wall_time_s", wall},
                       {"run_wall_time_s", flow_wall},  // after settling: the DEM steps counted in dem_steps
                       {"coupling_seconds", coupling_seconds},
                       {"coupling_share", flow_wall > 0 ? coupling_seconds / flow_wall : 0.0}};
-  io::write_text_file(out / "summary.json", results.summary(facts).dump(2) + "\n");
+  auto summary = results.summary(facts);
+  summary["soil"] = soil_record.summary(packing_regime(c, std::max(0.0, start_volume)), soil.bins(), soil.initial_surface());
+  io::write_text_file(out / "summary.json", summary.dump(2) + "\n");
   if (p.output.report) report::write_report(out);
 }
 

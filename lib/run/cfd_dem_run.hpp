@@ -12,7 +12,7 @@ namespace frostwall::run {
 double dem_timestep(const project::CfdDem& c);
 // DEM steps per fluid update: project's, else from the Stokes relaxation
 // time and the time the flow takes to carry a grain a tenth of its size.
-int coupling_interval(const project::CfdDem& c, double dt);
+int coupling_interval(const project::CfdDem& c, double dt, bool flowing);
 // Throws project::ProjectError when the grains or the grid would not fit.
 void check_cfd_dem_resources(const project::CfdDem& c);
 
