@@ -115,3 +115,56 @@ TEST_CASE("leak, scaled: a weak packing caves in over the cavity and the surface
   CHECK(deepest == Approx(end["settlement_max_m"].get<double>()));
   CHECK(deepest > 0.006);  // more than a grain
 }
+
+TEST_CASE("leak, scaled: a study of inflow velocities runs the variants in turn and compares their losses", "[cfd_dem][leak][study]") {
+  frostwall::test::TempDir dir;
+  json base = scaled_case(0.5, 0.01);
+  base["time"] = {{"end", 0.1}, {"unit", "s"}, {"snapshots", {0.1}}};
+  std::ofstream(dir.path / "base.json") << base.dump(2);
+  const json study = {{"name", "leak velocities, scaled"},
+                      {"base", "base.json"},
+                      {"output", {{"directory", "study"}}},
+                      {"product", {{{"path", "flow.darcy_velocity"}, {"values", {0.01, 0.3}}, {"labels", {"slow", "fast"}}}}}};
+  std::ofstream(dir.path / "study.json") << study.dump(2);
+  setenv("FROSTWALL_CACHE", cache().c_str(), 1);
+  const std::string command = "cd '" + dir.path.string() + "' && '" FROSTWALL_EXE "' study study.json > log.txt 2>&1";
+  REQUIRE(std::system(command.c_str()) == 0);
+  std::ifstream html_in(dir.path / "study" / "study.html");
+  const std::string html((std::istreambuf_iterator<char>(html_in)), {});
+  CHECK(html.find("<section id=\"erosion\">") != std::string::npos);
+  CHECK(html.find("No variant finished") == std::string::npos);
+  CHECK(html.find("{{") == std::string::npos);
+  std::ifstream csv(dir.path / "study" / "erosion.csv");
+  std::string header, slow, fast;
+  std::getline(csv, header), std::getline(csv, slow), std::getline(csv, fast);
+  INFO(slow << "\n" << fast);
+  auto lost = [](const std::string& line) {  // the fourth column
+    std::size_t at = 0;
+    for (int k = 0; k < 3; ++k) at = line.find(',', at) + 1;
+    return std::stod(line.substr(at));
+  };
+  CHECK(slow.starts_with("slow,"));
+  CHECK(fast.starts_with("fast,"));
+  CHECK(lost(fast) > lost(slow));
+}
+
+TEST_CASE("leak, scaled: the report shows the erosion section with a displacement map per snapshot", "[cfd_dem][leak][report]") {
+  frostwall::test::TempDir dir;
+  json p = scaled_case(0.5, 0.3);
+  p["time"] = {{"end", 0.1}, {"unit", "s"}, {"snapshots", {0.05, 0.1}}};
+  p["output"] = {{"directory", "out"}, {"report", true}, {"vtk", true}};
+  std::ofstream(dir.path / "p.json") << p.dump(2);
+  setenv("FROSTWALL_CACHE", cache().c_str(), 1);
+  const std::string command = "cd '" + dir.path.string() + "' && '" FROSTWALL_EXE "' run p.json > log.txt 2>&1";
+  REQUIRE(std::system(command.c_str()) == 0);
+  std::ifstream in(dir.path / "out" / "report.html");
+  const std::string html((std::istreambuf_iterator<char>(in)), {});
+  CHECK(html.find("<section id=\"erosion\"") != std::string::npos);
+  CHECK(html.find("boils") != std::string::npos);  // 0.3 m/s is far above fluidisation: said, not hidden
+  CHECK(html.find("Minimum fluidisation") == std::string::npos);  // a horizontal flow lifts no bed
+  std::size_t maps = 0;
+  for (std::size_t at = 0; (at = html.find("<figure><svg viewBox=", at)) != std::string::npos; ++at) ++maps;
+  CHECK(maps == 2);
+  CHECK(html.find("{{") == std::string::npos);
+  CHECK(html.find("<circle") != std::string::npos);
+}

@@ -151,6 +151,7 @@ void add_cfd_dem(const RunRecord& run, json& view) {
   const std::vector<std::pair<std::string, std::string>> known{
       {"summary.json", "results in machine-readable form"},
       {"series.csv", "the bed and the flow over time"},
+      {"soil.csv", "the ground over the cavity over time: losses, zone porosity, point A, settlement, collapse zone"},
       {"project.json", "the project file as given"},
       {"grains.pvd", "ParaView: the grains at every snapshot (velocity, fluid force, contacts)"},
       {"fluid.pvd", "ParaView: the fluid grid at every snapshot (porosity, pressure, Darcy velocity)"},
@@ -160,6 +161,7 @@ void add_cfd_dem(const RunRecord& run, json& view) {
   for (const auto& [name, what] : known)
     if (fs::exists(run.dir / name)) files.push_back({{"name", name}, {"href", name}, {"description", what}});
   view["files"] = files;
+  add_erosion(run, view);
 }
 
 }  // namespace frostwall::report::detail

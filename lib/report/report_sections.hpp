@@ -32,5 +32,6 @@ void add_mechanics(const RunRecord& run, nlohmann::json& view); // PD: displacem
 void add_frost(const RunRecord& run, nlohmann::json& view);     // porous plate: maps, pore freezing, damage
 void add_run_facts(const RunRecord& run, nlohmann::json& view); // run table and file links
 void add_cfd_dem(const RunRecord& run, nlohmann::json& view);   // CFD-DEM: bed, fluidisation, curves, run, files
+void add_erosion(const RunRecord& run, nlohmann::json& view);   // CFD-DEM over a cavity: losses, settlement, section maps
 
 }  // namespace frostwall::report::detail

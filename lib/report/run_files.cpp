@@ -103,6 +103,21 @@ FieldSnapshot read_field(const fs::path& file) {
   return s;
 }
 
+GrainSnapshot read_grains(const fs::path& file) {
+  const auto grid = read_grid(file);
+  GrainSnapshot s;
+  vtkDataArray *D = grid->GetPointData()->GetArray("diameter"), *U = grid->GetPointData()->GetArray("displacement");
+  if (!D || !U) return s;
+  for (vtkIdType i = 0; i < grid->GetNumberOfPoints(); ++i) {
+    const double* x = grid->GetPoint(i);
+    s.position.push_back({x[0], x[1], x[2]});
+    s.diameter.push_back(D->GetTuple1(i));
+    const double* u = U->GetTuple3(i);
+    s.displacement.push_back(std::hypot(u[0], u[1], u[2]));
+  }
+  return s;
+}
+
 SolidSnapshot read_solid(const fs::path& file) {
   const auto grid = read_grid(file);
   SolidSnapshot s;

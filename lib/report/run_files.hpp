@@ -4,6 +4,7 @@
 // so `frostwall report <dir>` rebuilds it without running anything.
 #pragma once
 
+#include <array>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -46,6 +47,14 @@ struct SolidSnapshot {
   std::vector<int> material;
 };
 SolidSnapshot read_solid(const std::filesystem::path& file);
+
+// The grains of a CFD-DEM snapshot (grains_XXXX.vtu): centres, diameters
+// and |displacement| since the run started (empty when the file has none).
+struct GrainSnapshot {
+  std::vector<std::array<double, 3>> position;
+  std::vector<double> diameter, displacement;
+};
+GrainSnapshot read_grains(const std::filesystem::path& file);
 
 // The polylines of an interface_XXXX.vtp file (closed ones repeat their first point).
 std::vector<post::Polyline> read_polylines(const std::filesystem::path& file);

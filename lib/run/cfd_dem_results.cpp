@@ -71,6 +71,11 @@ void CfdDemResults::add(const CfdDemSample& s, bool snapshot) {
 // that weight), Terzaghi's critical gradient i_c = (G_s - 1)(1 - n).
 json CfdDemResults::fluidisation() const {
   if (!c_.flow || c_.grains.held || series_.empty() || c_.flow->inflow_pressure) return nullptr;
+  // Only an upward flow lifts a bed: the flow along gravity's axis, in
+  // against it.
+  if (std::abs(c_.gravity[axis_]) < 0.5 * std::hypot(c_.gravity[0], c_.gravity[1], c_.gravity[2]) ||
+      (from_low_ ? c_.gravity[axis_] > 0.0 : c_.gravity[axis_] < 0.0))
+    return nullptr;
   const auto& start = series_.front();
   const double g = std::abs(c_.gravity[axis_]);
   const double rho_f = c_.fluid.density, rho_p = c_.grains.density;

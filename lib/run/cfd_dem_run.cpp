@@ -72,8 +72,8 @@ void check_cfd_dem_resources(const project::CfdDem& c) {
 namespace {
 
 // Every rank's grains gathered on rank 0, by id: the snapshot's grain file.
-void write_grains(const fs::path& file, dem::LammpsSession& lammps, const CfdDemCoupling& coupling) {
-  constexpr int fields = 13;  // id, x3, v3, radius, contacts, force3, lost
+void write_grains(const fs::path& file, dem::LammpsSession& lammps, const CfdDemCoupling& coupling, const SoilWatch& soil) {
+  constexpr int fields = 16;  // id, x3, v3, radius, contacts, force3, lost, displacement3
   const int n = lammps.local_count();
   const int* ids = lammps.ids();
   double** x = lammps.position();
@@ -84,8 +84,10 @@ void write_grains(const fs::path& file, dem::LammpsSession& lammps, const CfdDem
   mine.reserve(static_cast<std::size_t>(n) * fields);
   for (int i = 0; i < n; ++i) {
     const auto f = coupling.fluid_force(ids[i]);
+    const auto s = soil.start(ids[i]);
     for (double value : {double(ids[i]), x[i][0], x[i][1], x[i][2], v[i][0], v[i][1], v[i][2], r[i],
-                         contacts ? contacts[i] : 0.0, f[0], f[1], f[2], coupling.lost(x[i])})
+                         contacts ? contacts[i] : 0.0, f[0], f[1], f[2], coupling.lost(x[i]), x[i][0] - s[0], x[i][1] - s[1],
+                         x[i][2] - s[2]})
       mine.push_back(value);
   }
   const int size = static_cast<int>(mine.size());
@@ -103,7 +105,7 @@ void write_grains(const fs::path& file, dem::LammpsSession& lammps, const CfdDem
   for (std::size_t i = 0; i < count; ++i) order[i] = i;
   std::sort(order.begin(), order.end(), [&](auto a, auto b) { return all[a * fields] < all[b * fields]; });
   io::PointCloudFrame frame;
-  std::vector<double> diameter, contact, lost, velocity, force;
+  std::vector<double> diameter, contact, lost, velocity, force, displacement;
   for (std::size_t i : order) {
     const double* g = &all[i * fields];
     frame.points.push_back({g[1], g[2], g[3]});
@@ -112,9 +114,10 @@ void write_grains(const fs::path& file, dem::LammpsSession& lammps, const CfdDem
     contact.push_back(g[8]);
     force.insert(force.end(), {g[9], g[10], g[11]});
     lost.push_back(g[12]);
+    displacement.insert(displacement.end(), {g[13], g[14], g[15]});
   }
   frame.fields = {{"diameter", diameter}, {"contacts", contact}, {"lost", lost}};
-  frame.vectors = {{"velocity", velocity}, {"fluid_force", force}};
+  frame.vectors = {{"velocity", velocity}, {"fluid_force", force}, {"displacement", displacement}};
   io::write_vtu(file, frame);
 }
 
@@ -199,7 +202,7 @@ void run_cfd_dem(const project::Project& p, const RunOptions& options) {
     if (is_snapshot) {
       const std::string stem = fmt::format("{:04d}", next_snapshot + 1);
       if (p.output.vtk) {
-        write_grains(out / ("grains_" + stem + ".vtu"), lammps, coupling);
+        write_grains(out / ("grains_" + stem + ".vtu"), lammps, coupling, soil);
         if (root) write_fluid(out / ("fluid_" + stem + ".vti"), coupling.grid());
         grain_pvd.push_back({t, "grains_" + stem + ".vtu"});
         fluid_pvd.push_back({t, "fluid_" + stem + ".vti"});

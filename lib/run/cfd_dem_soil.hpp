@@ -37,6 +37,10 @@ class SoilWatch {
   SoilMeasures measure(const CfdDemCoupling& coupling) const;
   const std::vector<double>& bins() const { return bin_centres_; }  // x of the surface bins, m
   const std::vector<double>& initial_surface() const { return initial_surface_; }
+  // Where grain `id` was as the run started (NaN for an id not known then).
+  std::array<double, 3> start(int id) const {
+    return static_cast<std::size_t>(id) < start_.size() ? start_[id] : std::array<double, 3>{NAN, NAN, NAN};
+  }
 
  private:
   std::vector<double> surface() const;  // collective

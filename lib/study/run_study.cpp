@@ -51,6 +51,11 @@ StudyRun run_study(const Study& study, const StudyOptions& options) {
   const int cores = std::max(1, omp_get_num_procs());
   const int n = static_cast<int>(study.variants.size());
   result.jobs = std::clamp(options.jobs > 0 ? options.jobs : cores, 1, std::max(1, n));
+  // CFD-DEM variants run one after another: each embeds LAMMPS on the
+  // process's MPI communicator, which two threads may not share; they also
+  // share one settled packing (the first variant settles it).
+  for (const auto& v : study.variants)
+    if (v.project.value("physics", std::string()) == "cfd-dem") result.jobs = 1;
   result.threads = options.threads > 0 ? options.threads : (result.jobs == 1 ? omp_get_max_threads() : 1);
   result.variants.resize(study.variants.size());
 

@@ -10,6 +10,7 @@
 #include "report/run_files.hpp"
 #include "report/svg_chart.hpp"
 #include "report/templates.hpp"
+#include "study/study_erosion.hpp"
 
 namespace frostwall::study {
 
@@ -178,6 +179,9 @@ json study_view(const Study& study, const StudyRun& run, const std::vector<Stand
   if (required) chart.guides.push_back({false, *required, fmt::format("required {} m", number(*required, 2))});
   chart.guides.push_back({true, study.thickness_day, fmt::format("ranking day {:g}", study.thickness_day)});
   view["chart_svg"] = chart.series.empty() ? "" : report::render_svg(chart);
+  view["has_erosion"] = false;
+  add_erosion(run, view);
+  if (view["has_erosion"].get<bool>()) view["has_results"] = false;  // no frozen wall to rank
   return view;
 }
 
@@ -195,6 +199,7 @@ StudyRun run_and_write_study(const Study& study, const StudyOptions& options) {
   const auto standings = rank_variants(run, study.thickness_day);
   write_study_csv(study.output_directory / "study.csv", standings, study.thickness_day);
   write_study_html(study.output_directory / "study.html", study, run, standings);
+  if (has_erosion(run)) write_erosion_csv(study.output_directory / "erosion.csv", run);
   return run;
 }
 

@@ -1,0 +1,134 @@
+// The report's seepage-erosion section (a CFD-DEM run over a cavity): the
+// packing's regime said plainly, the grains lost and how, the zone over
+// the cavity, point A, the surface's settlement profile, and maps of the
+// grains' displacement on the mid-section through the cavity at the
+// snapshots (the CFD-DEM paper's Fig. 5).
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fmt/format.h>
+
+#include "report/colour_scale.hpp"
+#include "report/report_sections.hpp"
+#include "report/run_files.hpp"
+#include "report/svg_chart.hpp"
+
+namespace frostwall::report::detail {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+double get(const json& j, const char* key) { return j.contains(key) && j[key].is_number() ? j[key].get<double>() : NAN; }
+
+Series series_of(const json& rows, const std::string& label, const std::function<double(const json&)>& y) {
+  Series s;
+  s.label = label;
+  for (const auto& r : rows) s.x.push_back(get(r, "time")), s.y.push_back(y(r));
+  return s;
+}
+
+Chart chart_of(const std::string& title, const std::string& x_label, const std::string& y_label, std::vector<Series> s) {
+  Chart c;
+  c.title = title;
+  c.x_label = x_label;
+  c.y_label = y_label;
+  c.series = std::move(s);
+  return c;
+}
+
+// Grains within a diameter of the plane x = x0 (the y-z mid-section),
+// drawn to scale as circles coloured by |displacement|.
+std::string section_svg(const GrainSnapshot& g, double x0, const std::array<double, 4>& window, const ColourScale& colours) {
+  const double width = 300.0, scale = width / (window[1] - window[0]);
+  const double height = (window[3] - window[2]) * scale;
+  std::string svg = fmt::format(R"(<svg viewBox="0 0 {:.0f} {:.0f}" width="{:.0f}" height="{:.0f}" role="img">)", width, height,
+                                width, height);
+  svg += fmt::format(R"(<rect width="{:.0f}" height="{:.0f}" fill="#f4f4f4"/>)", width, height);
+  for (std::size_t i = 0; i < g.position.size(); ++i) {
+    const auto& p = g.position[i];
+    if (std::abs(p[0] - x0) > 0.5 * g.diameter[i]) continue;
+    const auto c = colours(g.displacement[i]);
+    svg += fmt::format(R"svg(<circle cx="{:.1f}" cy="{:.1f}" r="{:.2f}" fill="rgb({},{},{})"/>)svg", (p[1] - window[0]) * scale,
+                       (window[3] - p[2]) * scale, 0.5 * g.diameter[i] * scale, c[0], c[1], c[2]);
+  }
+  return svg + "</svg>";
+}
+
+}  // namespace
+
+void add_erosion(const RunRecord& run, json& view) {
+  const json& s = run.summary.value("soil", json::object());
+  const bool cavity = run.project && run.project->cfd_dem && run.project->cfd_dem->cavity;
+  view["has_erosion"] = cavity && s.contains("series");
+  if (!view["has_erosion"].get<bool>()) return;
+  const auto& c = *run.project->cfd_dem;
+  const json& regime = s.value("regime", json::object());
+  view["erosion_regime"] = regime.value("note", fmt::format("packing porosity {:.3f}, critical gradient {:.2f}, "
+                                                            "Ergun's minimum fluidisation velocity {:.3g} m/s (still water)",
+                                                            get(regime, "porosity"), get(regime, "critical_gradient"),
+                                                            get(regime, "minimum_fluidisation_velocity_m_s")));
+  view["erosion_boils"] = regime.value("above_fluidisation", false);
+  view["erosion_facts"] = json::array({{{"label", "grains at the start"}, {"value", fmt::format("{:.0f}", get(s, "grains_at_start"))}},
+                                       {{"label", "fell into the cavity (taken away by the leak)"}, {"value", fmt::format("{:.0f}", get(s, "lost_to_cavity"))}},
+                                       {{"label", "washed out through the outflow face"}, {"value", fmt::format("{:.0f}", get(s, "washed_out"))}},
+                                       {{"label", "point A"}, {"value", s.contains("point_a") ? s["point_a"].dump() : "–"}}});
+  const json& rows = s["series"];
+  json charts = json::array();
+  auto add = [&](const std::string& id, const Chart& ch, const std::string& caption) {
+    charts.push_back({{"id", id}, {"title", ch.title}, {"svg", render_svg(ch)}, {"caption", caption}});
+  };
+  add("lost", chart_of("Grains lost", "time (s)", "grains", {series_of(rows, "into the cavity", [](const json& r) { return get(r, "lost_to_cavity"); }),
+                                                             series_of(rows, "washed out", [](const json& r) { return get(r, "washed_out"); })}),
+      "Cumulative; the loss rate of an interval is its loss over the grains in the soil at its start (summary.json, soil.csv).");
+  add("loss_rate", chart_of("Loss rate", "time (s)", "grains lost per grain in the soil, per output interval",
+                            {series_of(rows, "", [](const json& r) { return get(r, "loss_rate"); })}), "");
+  add("zone", chart_of("Porosity over the cavity", "time (s)", "porosity", {series_of(rows, "", [](const json& r) { return get(r, "zone_porosity"); })}),
+      "The cylinder of the cavity's radius from its crown to the surface: 1 when its grains are gone.");
+  add("contacts", chart_of("Change of contacts", "time (s)", "contacts gained since the last output",
+                           {series_of(rows, "", [](const json& r) { return get(r, "contact_change"); })}), "");
+  add("point_a", chart_of("Point A: pressure drop from the inflow face", "time (s)", "Pa",
+                          {series_of(rows, "", [](const json& r) { return get(r, "pressure_drop_to_a_Pa"); })}), "");
+  add("forces_a", chart_of("Point A's cell: mean force per grain", "time (s)", "N (magnitude)",
+                           {series_of(rows, "drag", [](const json& r) { return std::hypot(r["mean_drag_at_a_N"][0].get<double>(), r["mean_drag_at_a_N"][1].get<double>(), r["mean_drag_at_a_N"][2].get<double>()); }),
+                            series_of(rows, "pressure gradient", [](const json& r) { const auto& f = r["mean_pressure_gradient_force_at_a_N"]; return std::hypot(f[0].get<double>(), f[1].get<double>(), f[2].get<double>()); }),
+                            series_of(rows, "buoyancy", [](const json& r) { const auto& f = r["mean_buoyancy_at_a_N"]; return std::hypot(f[0].get<double>(), f[1].get<double>(), f[2].get<double>()); })}), "");
+  Chart profile = chart_of("Surface settlement over the cavity", "x (m)", "settlement (mm)", {});
+  for (const auto& p : s.value("surface_profiles", json::array())) {
+    Series line;
+    line.label = fmt::format("{:.2f} s", p["time"].get<double>());
+    for (const auto& b : p["settlement"]) line.x.push_back(b[0].get<double>()), line.y.push_back(1e3 * b[1].get<double>());
+    profile.series.push_back(line);
+  }
+  profile.guides.push_back({true, c.cavity->centre[0], "cavity"});
+  add("settlement", profile, "Along x through the cavity: the surface's drop since the run started (its highest grain in bins of two diameters).");
+  Chart cone = chart_of("Collapse zone", "time (s)", "grains displaced more than two diameters",
+                        {series_of(rows, "", [](const json& r) { return get(r, "displaced_grains"); })});
+  add("collapse", cone, "Its boundary's angle from the horizontal is in summary.json (cone_angle_deg).");
+  view["erosion_charts"] = charts;
+
+  // Displacement on the mid-section x = cavity centre, one map per snapshot.
+  std::vector<fs::path> files;
+  for (const auto& e : fs::directory_iterator(run.dir))
+    if (e.path().filename().string().starts_with("grains_") && e.path().extension() == ".vtu") files.push_back(e.path());
+  std::sort(files.begin(), files.end());
+  std::vector<GrainSnapshot> snaps;
+  double largest = 0.0;
+  for (const auto& f : files) {
+    snaps.push_back(read_grains(f));
+    for (double d : snaps.back().displacement) largest = std::max(largest, d);
+  }
+  const ColourScale colours(0.0, std::max(largest, 1e-6), -1.0);
+  json maps = json::array();
+  const std::array<double, 4> window = {c.box.low[1], c.box.high[1], c.box.low[2], c.box.high[2]};
+  const auto& times = run.summary.value("snapshots", json::array());
+  for (std::size_t k = 0; k < snaps.size(); ++k)
+    if (!snaps[k].position.empty())
+      maps.push_back({{"html", section_svg(snaps[k], c.cavity->centre[0], window, colours)},
+                      {"caption", fmt::format("{} s", k < times.size() ? fmt::format("{:.3g}", times[k]["time"].get<double>()) : "?")}});
+  view["erosion_maps"] = maps;
+  view["erosion_colour_bar"] = maps.empty() ? "" : colours.colour_bar_svg(320, "displacement (m)");
+}
+
+}  // namespace frostwall::report::detail

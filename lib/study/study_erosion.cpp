@@ -1,0 +1,103 @@
+#include "study/study_erosion.hpp"
+
+#include <cmath>
+#include <fmt/core.h>
+
+#include "io/atomic_file.hpp"
+#include "report/nice_scale.hpp"
+#include "report/svg_chart.hpp"
+
+namespace frostwall::study {
+
+using nlohmann::json;
+
+namespace {
+
+std::string number(double v, int decimals) { return std::isfinite(v) ? report::tick_label(v, decimals) : "–"; }
+double get(const json& j, const char* key) { return j.contains(key) && j[key].is_number() ? j[key].get<double>() : NAN; }
+const json& soil(const VariantOutcome& v) { return v.summary["soil"]; }
+
+// Lost grains over the count at the start, per second of the run.
+double mean_loss_rate(const json& s) {
+  const double start = get(s, "grains_at_start"), lost = get(s, "lost_to_cavity") + get(s, "washed_out");
+  const auto& series = s["series"];
+  const double t = series.empty() ? NAN : get(series.back(), "time");
+  return start > 0 && t > 0 ? lost / start / t : NAN;
+}
+
+report::Chart overlay(const std::string& title, const std::string& y_label) {
+  report::Chart c;
+  c.title = title;
+  c.x_label = "time (s)";
+  c.y_label = y_label;
+  c.x_include = {0.0};
+  c.y_include = {0.0};
+  return c;
+}
+
+}  // namespace
+
+bool has_erosion(const StudyRun& run) {
+  for (const auto& v : run.variants)
+    if (v.ok && v.summary.value("physics", std::string()) == "cfd-dem" && v.summary.contains("soil")) return true;
+  return false;
+}
+
+void add_erosion(const StudyRun& run, json& view) {
+  view["has_erosion"] = has_erosion(run);
+  if (!view["has_erosion"].get<bool>()) return;
+  json rows = json::array();
+  report::Chart lost = overlay("grains lost, every variant", "grains lost (into the cavity and washed out)");
+  report::Chart zone = overlay("porosity over the cavity, every variant", "porosity of the zone over the cavity");
+  report::Chart settled = overlay("deepest surface settlement, every variant", "settlement (mm)");
+  for (const auto& v : run.variants) {
+    if (!v.ok || !v.summary.contains("soil")) continue;
+    const json& s = soil(v);
+    const json& regime = s.value("regime", json::object());
+    const auto& last = s["series"].empty() ? json::object() : s["series"].back();
+    rows.push_back({{"name", v.name},
+                    {"href", v.name + "/report.html"},
+                    {"velocity", number(get(regime, "darcy_velocity_m_s"), 3)},
+                    {"regime", regime.value("above_fluidisation", false) ? "above fluidisation: the inflow face boils"
+                                                                         : "below fluidisation"},
+                    {"cavity", number(get(s, "lost_to_cavity"), 0)},
+                    {"washed", number(get(s, "washed_out"), 0)},
+                    {"loss_rate", number(100.0 * mean_loss_rate(s), 2)},
+                    {"settlement", number(1e3 * get(last, "settlement_max_m"), 1)},
+                    {"width", number(1e3 * get(last, "settlement_width_m"), 0)},
+                    {"cone", number(get(last, "cone_angle_deg"), 0)},
+                    {"seconds", fmt::format("{:.1f}", v.seconds)}});
+    report::Series a, b, c;
+    a.label = b.label = c.label = v.name;
+    for (const auto& r : s["series"]) {
+      const double t = get(r, "time");
+      a.x.push_back(t), b.x.push_back(t), c.x.push_back(t);
+      a.y.push_back(get(r, "lost_to_cavity") + get(r, "washed_out"));
+      b.y.push_back(get(r, "zone_porosity"));
+      c.y.push_back(1e3 * get(r, "settlement_max_m"));
+    }
+    lost.series.push_back(a), zone.series.push_back(b), settled.series.push_back(c);
+  }
+  view["erosion_rows"] = rows;
+  view["erosion_charts"] = json::array({{{"svg", report::render_svg(lost)}, {"caption", "Grains that left the soil: fell into the cavity (the leak takes them) or were washed out through the outflow face."}},
+                                        {{"svg", report::render_svg(zone)}, {"caption", "The cylinder over the cavity's crown to the surface; 1 when it is empty."}},
+                                        {{"svg", report::render_svg(settled)}, {"caption", "The deepest settlement of the surface along the line through the cavity."}}});
+}
+
+void write_erosion_csv(const std::filesystem::path& file, const StudyRun& run) {
+  std::string text = "variant,darcy_velocity_m_s,above_fluidisation,lost_to_cavity,washed_out,mean_loss_rate_per_s,"
+                     "settlement_max_m,settlement_width_m,cone_angle_deg,run_s\n";
+  for (const auto& v : run.variants) {
+    if (!v.ok || !v.summary.contains("soil")) continue;
+    const json& s = soil(v);
+    const json& regime = s.value("regime", json::object());
+    const auto& last = s["series"].empty() ? json::object() : s["series"].back();
+    text += fmt::format("{},{},{},{},{},{:.6g},{:.6g},{:.6g},{:.6g},{:.1f}\n", v.name, get(regime, "darcy_velocity_m_s"),
+                        regime.value("above_fluidisation", false), get(s, "lost_to_cavity"), get(s, "washed_out"),
+                        mean_loss_rate(s), get(last, "settlement_max_m"), get(last, "settlement_width_m"),
+                        get(last, "cone_angle_deg"), v.seconds);
+  }
+  io::write_text_file(file, text);
+}
+
+}  // namespace frostwall::study
