@@ -39,15 +39,6 @@ std::map<std::string, std::vector<double>> read_columns(const fs::path& file) {
   return columns;
 }
 
-Chart line_chart(const std::string& title, const std::string& x_label, const std::string& y_label, std::vector<Series> series) {
-  Chart c;
-  c.title = title;
-  c.x_label = x_label;
-  c.y_label = y_label;
-  c.series = std::move(series);
-  return c;
-}
-
 Series line(const std::string& label, const std::vector<double>& x, const std::vector<double>& y) {
   Series s;
   s.label = label;
@@ -61,6 +52,15 @@ json chart(const std::string& id, const Chart& c, const std::string& caption) {
 }
 
 }  // namespace
+
+Chart line_chart(const std::string& title, const std::string& x_label, const std::string& y_label, std::vector<Series> series) {
+  Chart c;
+  c.title = title;
+  c.x_label = x_label;
+  c.y_label = y_label;
+  c.series = std::move(series);
+  return c;
+}
 
 void add_cfd_dem(const RunRecord& run, json& view) {
   const json& s = run.summary;

@@ -29,15 +29,6 @@ Series series_of(const json& rows, const std::string& label, const std::function
   return s;
 }
 
-Chart chart_of(const std::string& title, const std::string& x_label, const std::string& y_label, std::vector<Series> s) {
-  Chart c;
-  c.title = title;
-  c.x_label = x_label;
-  c.y_label = y_label;
-  c.series = std::move(s);
-  return c;
-}
-
 // Grains within a diameter of the plane x = x0 (the y-z mid-section),
 // drawn to scale as circles coloured by |displacement|.
 std::string section_svg(const GrainSnapshot& g, double x0, const std::array<double, 4>& window, const ColourScale& colours) {
@@ -79,22 +70,22 @@ void add_erosion(const RunRecord& run, json& view) {
   auto add = [&](const std::string& id, const Chart& ch, const std::string& caption) {
     charts.push_back({{"id", id}, {"title", ch.title}, {"svg", render_svg(ch)}, {"caption", caption}});
   };
-  add("lost", chart_of("Grains lost", "time (s)", "grains", {series_of(rows, "into the cavity", [](const json& r) { return get(r, "lost_to_cavity"); }),
+  add("lost", line_chart("Grains lost", "time (s)", "grains", {series_of(rows, "into the cavity", [](const json& r) { return get(r, "lost_to_cavity"); }),
                                                              series_of(rows, "washed out", [](const json& r) { return get(r, "washed_out"); })}),
       "Cumulative; the loss rate of an interval is its loss over the grains in the soil at its start (summary.json, soil.csv).");
-  add("loss_rate", chart_of("Loss rate", "time (s)", "grains lost per grain in the soil, per output interval",
+  add("loss_rate", line_chart("Loss rate", "time (s)", "grains lost per grain in the soil, per output interval",
                             {series_of(rows, "", [](const json& r) { return get(r, "loss_rate"); })}), "");
-  add("zone", chart_of("Porosity over the cavity", "time (s)", "porosity", {series_of(rows, "", [](const json& r) { return get(r, "zone_porosity"); })}),
+  add("zone", line_chart("Porosity over the cavity", "time (s)", "porosity", {series_of(rows, "", [](const json& r) { return get(r, "zone_porosity"); })}),
       "The cylinder of the cavity's radius from its crown to the surface: 1 when its grains are gone.");
-  add("contacts", chart_of("Change of contacts", "time (s)", "contacts gained since the last output",
+  add("contacts", line_chart("Change of contacts", "time (s)", "contacts gained since the last output",
                            {series_of(rows, "", [](const json& r) { return get(r, "contact_change"); })}), "");
-  add("point_a", chart_of("Point A: pressure drop from the inflow face", "time (s)", "Pa",
+  add("point_a", line_chart("Point A: pressure drop from the inflow face", "time (s)", "Pa",
                           {series_of(rows, "", [](const json& r) { return get(r, "pressure_drop_to_a_Pa"); })}), "");
-  add("forces_a", chart_of("Point A's cell: mean force per grain", "time (s)", "N (magnitude)",
+  add("forces_a", line_chart("Point A's cell: mean force per grain", "time (s)", "N (magnitude)",
                            {series_of(rows, "drag", [](const json& r) { return std::hypot(r["mean_drag_at_a_N"][0].get<double>(), r["mean_drag_at_a_N"][1].get<double>(), r["mean_drag_at_a_N"][2].get<double>()); }),
                             series_of(rows, "pressure gradient", [](const json& r) { const auto& f = r["mean_pressure_gradient_force_at_a_N"]; return std::hypot(f[0].get<double>(), f[1].get<double>(), f[2].get<double>()); }),
                             series_of(rows, "buoyancy", [](const json& r) { const auto& f = r["mean_buoyancy_at_a_N"]; return std::hypot(f[0].get<double>(), f[1].get<double>(), f[2].get<double>()); })}), "");
-  Chart profile = chart_of("Surface settlement over the cavity", "x (m)", "settlement (mm)", {});
+  Chart profile = line_chart("Surface settlement over the cavity", "x (m)", "settlement (mm)", {});
   for (const auto& p : s.value("surface_profiles", json::array())) {
     Series line;
     line.label = fmt::format("{:.2f} s", p["time"].get<double>());
@@ -103,7 +94,7 @@ void add_erosion(const RunRecord& run, json& view) {
   }
   profile.guides.push_back({true, c.cavity->centre[0], "cavity"});
   add("settlement", profile, "Along x through the cavity: the surface's drop since the run started (its highest grain in bins of two diameters).");
-  Chart cone = chart_of("Collapse zone", "time (s)", "grains displaced more than two diameters",
+  Chart cone = line_chart("Collapse zone", "time (s)", "grains displaced more than two diameters",
                         {series_of(rows, "", [](const json& r) { return get(r, "displaced_grains"); })});
   add("collapse", cone, "Its boundary's angle from the horizontal is in summary.json (cone_angle_deg).");
   view["erosion_charts"] = charts;

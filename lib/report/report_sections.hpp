@@ -8,6 +8,7 @@
 #include <string>
 
 #include "project/project.hpp"
+#include "report/svg_chart.hpp"
 
 namespace frostwall::report::detail {
 
@@ -32,6 +33,8 @@ void add_mechanics(const RunRecord& run, nlohmann::json& view); // PD: displacem
 void add_frost(const RunRecord& run, nlohmann::json& view);     // porous plate: maps, pore freezing, damage
 void add_run_facts(const RunRecord& run, nlohmann::json& view); // run table and file links
 void add_cfd_dem(const RunRecord& run, nlohmann::json& view);   // CFD-DEM: bed, fluidisation, curves, run, files
-void add_erosion(const RunRecord& run, nlohmann::json& view);   // CFD-DEM over a cavity: losses, settlement, section maps
+void add_erosion(const RunRecord& run, nlohmann::json& view);
+// A line chart with its titles (the CFD-DEM sections' charts).
+Chart line_chart(const std::string& title, const std::string& x_label, const std::string& y_label, std::vector<Series> series);   // CFD-DEM over a cavity: losses, settlement, section maps
 
 }  // namespace frostwall::report::detail
