@@ -48,14 +48,24 @@ const fs::path& cache() {
   return dir.path;
 }
 
-json run(const json& project) {
-  frostwall::test::TempDir dir;
-  std::ofstream(dir.path / "p.json") << project.dump(2);
+// `frostwall <command> <file>` in dir with the shared cache; it must succeed.
+void frostwall_in(const fs::path& dir, const std::string& command, const std::string& file) {
   setenv("FROSTWALL_CACHE", cache().c_str(), 1);
-  const std::string command = "cd '" + dir.path.string() + "' && '" FROSTWALL_EXE "' run p.json > log.txt 2>&1";
-  const int status = std::system(command.c_str());
+  const std::string line = "cd '" + dir.string() + "' && '" FROSTWALL_EXE "' " + command + " " + file + " > log.txt 2>&1";
+  const int status = std::system(line.c_str());
   REQUIRE(WIFEXITED(status));
   REQUIRE(WEXITSTATUS(status) == 0);
+}
+
+// Runs the project in dir (its output in dir/out).
+void run_in(const fs::path& dir, const json& project) {
+  std::ofstream(dir / "p.json") << project.dump(2);
+  frostwall_in(dir, "run", "p.json");
+}
+
+json run(const json& project) {
+  frostwall::test::TempDir dir;
+  run_in(dir.path, project);
   std::ifstream in(dir.path / "out" / "summary.json");
   return json::parse(in)["soil"];
 }
@@ -126,9 +136,7 @@ TEST_CASE("leak, scaled: a study of inflow velocities runs the variants in turn 
                       {"output", {{"directory", "study"}}},
                       {"product", {{{"path", "flow.darcy_velocity"}, {"values", {0.01, 0.3}}, {"labels", {"slow", "fast"}}}}}};
   std::ofstream(dir.path / "study.json") << study.dump(2);
-  setenv("FROSTWALL_CACHE", cache().c_str(), 1);
-  const std::string command = "cd '" + dir.path.string() + "' && '" FROSTWALL_EXE "' study study.json > log.txt 2>&1";
-  REQUIRE(std::system(command.c_str()) == 0);
+  frostwall_in(dir.path, "study", "study.json");
   std::ifstream html_in(dir.path / "study" / "study.html");
   const std::string html((std::istreambuf_iterator<char>(html_in)), {});
   CHECK(html.find("<section id=\"erosion\">") != std::string::npos);
@@ -153,10 +161,7 @@ TEST_CASE("leak, scaled: the report shows the erosion section with a displacemen
   json p = scaled_case(0.5, 0.3);
   p["time"] = {{"end", 0.1}, {"unit", "s"}, {"snapshots", {0.05, 0.1}}};
   p["output"] = {{"directory", "out"}, {"report", true}, {"vtk", true}};
-  std::ofstream(dir.path / "p.json") << p.dump(2);
-  setenv("FROSTWALL_CACHE", cache().c_str(), 1);
-  const std::string command = "cd '" + dir.path.string() + "' && '" FROSTWALL_EXE "' run p.json > log.txt 2>&1";
-  REQUIRE(std::system(command.c_str()) == 0);
+  run_in(dir.path, p);
   std::ifstream in(dir.path / "out" / "report.html");
   const std::string html((std::istreambuf_iterator<char>(in)), {});
   CHECK(html.find("<section id=\"erosion\"") != std::string::npos);

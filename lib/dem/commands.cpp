@@ -35,15 +35,18 @@ std::vector<std::string> pair_commands(const Contact& contact) {
   return {"pair_style granular", "pair_coeff * * " + contact_model(contact)};
 }
 
+// The walls normal to one axis (`fix wall_<axis>`); an open face has no
+// plane: NULL on its side.
+static std::string wall_command(const Box& box, const Contact& contact, int k, int open_face) {
+  const std::string lo = open_face == 2 * k ? "NULL" : fmt::format("{}", box.low[k]);
+  const std::string hi = open_face == 2 * k + 1 ? "NULL" : fmt::format("{}", box.high[k]);
+  return fmt::format("fix wall_{0} all wall/gran granular {1} {0}plane {2} {3}", "xyz"[k], contact_model(contact), lo, hi);
+}
+
 std::vector<std::string> wall_commands(const Box& box, const Contact& contact, double skin, int open_face) {
   std::vector<std::string> c;
-  for (int k = 0; k < 3; ++k) {
-    if (box.periodic[k]) continue;
-    // An open face has no plane: NULL on its side.
-    const std::string lo = open_face == 2 * k ? "NULL" : fmt::format("{}", box.low[k]);
-    const std::string hi = open_face == 2 * k + 1 ? "NULL" : fmt::format("{}", box.high[k]);
-    c.push_back(fmt::format("fix wall_{0} all wall/gran granular {1} {0}plane {2} {3}", "xyz"[k], contact_model(contact), lo, hi));
-  }
+  for (int k = 0; k < 3; ++k)
+    if (!box.periodic[k]) c.push_back(wall_command(box, contact, k, open_face));
   c.push_back(fmt::format("neighbor {} bin", skin));
   c.push_back(fmt::format("compute {} all contact/atom", contact_compute));
   return c;
@@ -59,9 +62,10 @@ std::vector<std::string> contact_commands(const Box& box, const Contact& contact
 std::vector<std::string> new_contact_commands(const Box& box, const Contact& contact, int open_face) {
   std::vector<std::string> c = {"pair_coeff * * " + contact_model(contact)};
   for (int k = 0; k < 3; ++k)
-    if (!box.periodic[k]) c.push_back(fmt::format("unfix wall_{}", "xyz"[k]));
-  for (auto&& s : wall_commands(box, contact, 0.0, open_face))
-    if (s.starts_with("fix wall_")) c.push_back(std::move(s));
+    if (!box.periodic[k]) {
+      c.push_back(fmt::format("unfix wall_{}", "xyz"[k]));
+      c.push_back(wall_command(box, contact, k, open_face));
+    }
   return c;
 }
 
@@ -84,10 +88,8 @@ std::vector<std::string> trim_commands(const Box& box, int axis, double level, c
                                 "delete_atoms region above compress no",
                                 fmt::format("change_box all {} final {} {} units box", "xyz"[axis], box.low[axis], box.high[axis])};
   if (!box.periodic[axis]) {
-    const std::string lo = open_face == 2 * axis ? "NULL" : fmt::format("{}", box.low[axis]);
-    const std::string hi = open_face == 2 * axis + 1 ? "NULL" : fmt::format("{}", box.high[axis]);
     c.push_back(fmt::format("unfix wall_{}", "xyz"[axis]));
-    c.push_back(fmt::format("fix wall_{0} all wall/gran granular {1} {0}plane {2} {3}", "xyz"[axis], contact_model(contact), lo, hi));
+    c.push_back(wall_command(box, contact, axis, open_face));
   }
   return c;
 }

@@ -32,6 +32,8 @@ double mean_grain_volume(const project::GrainSettings& g) {
   return std::numbers::pi / 6.0 * mean_d3;
 }
 
+double mean_grain_diameter(const project::GrainSettings& g) { return std::cbrt(6.0 / std::numbers::pi * mean_grain_volume(g)); }
+
 double fill_volume(const project::CfdDem& c) {
   auto g = c.grains;
   for (int k = 0; k < 3; ++k) g.fill_high[k] = std::min(g.fill_high[k], c.box.high[k]);  // a settling column counts to the top

@@ -18,6 +18,8 @@ namespace frostwall::dem {
 
 // Mean volume of a grain (diameters uniform in [min, max]), m3.
 double mean_grain_volume(const project::GrainSettings& g);
+// The diameter of a sphere of that volume, m.
+double mean_grain_diameter(const project::GrainSettings& g);
 // The fill region's volume within the box, minus the cavity's part of it, m3 (the
 // cavity's overlap found by sampling; exact when it lies inside).
 double fill_volume(const project::CfdDem& c);

@@ -10,6 +10,15 @@ double ergun_gradient(const Fluid& fluid, double e, double d, double U) {
   return 150.0 * fluid.viscosity * s * s * U / (e3 * d * d) + 1.75 * fluid.density * s * std::abs(U) * U / (e3 * d);
 }
 
+double ergun_velocity(const Fluid& fluid, double e, double d, double gradient) {
+  double lo = 0.0, hi = 100.0;
+  for (int it = 0; it < 200; ++it) {
+    const double mid = 0.5 * (lo + hi);
+    (ergun_gradient(fluid, e, d, mid) < gradient ? lo : hi) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
 double wen_yu_gradient(const Fluid& fluid, double e, double d, double U) {
   if (U == 0.0) return 0.0;
   const double Re = fluid.density * std::abs(U) * d / fluid.viscosity;

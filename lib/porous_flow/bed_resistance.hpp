@@ -20,6 +20,10 @@ namespace frostwall::porous_flow {
 double ergun_gradient(const Fluid& fluid, double porosity, double diameter, double superficial_velocity);
 double wen_yu_gradient(const Fluid& fluid, double porosity, double diameter, double superficial_velocity);
 double bed_gradient(const Fluid& fluid, double porosity, double diameter, double superficial_velocity);
+// The superficial velocity at which Ergun's gradient reaches `gradient`
+// (Pa/m; by bisection, it rises monotonically): a bed's minimum
+// fluidisation velocity when that is its buoyant weight per volume.
+double ergun_velocity(const Fluid& fluid, double porosity, double diameter, double gradient);
 // bed_gradient / (1 - porosity), written out so that it stays finite as
 // the porosity reaches 1: the gradient per unit of solid fraction.
 double bed_gradient_per_solid(const Fluid& fluid, double porosity, double diameter, double superficial_velocity);

@@ -26,6 +26,12 @@ Vec3 GridShape::centre(int i, int j, int k) const {
   return x;
 }
 
+int GridShape::cell_of(const Vec3& x) const {
+  Cell p;
+  for (int a = 0; a < 3; ++a) p[a] = std::clamp(static_cast<int>((x[a] - low[a]) / cell_size(a)), 0, cells[a] - 1);
+  return flat(*this, p);
+}
+
 FluidGrid::FluidGrid(GridShape shape, std::array<FaceCondition, 6> faces, Fluid fluid, double default_diameter,
                      double min_porosity, double max_porosity)
     : shape_(shape), faces_(faces), fluid_(fluid), default_diameter_(default_diameter),

@@ -35,6 +35,8 @@ struct GridShape {
   int index(int i, int j, int k) const { return i + cells[0] * (j + cells[1] * k); }
   int count() const { return cells[0] * cells[1] * cells[2]; }
   Vec3 centre(int i, int j, int k) const;
+  // The cell holding x (clamped into the box).
+  int cell_of(const Vec3& x) const;
 };
 
 // Box faces 0..5: x-, x+, y-, y+, z-, z+ (face = 2 axis + side).

@@ -85,6 +85,10 @@ struct CouplingSettings {
   std::optional<double> dem_timestep;  // s (nullopt: 0.2 of the Rayleigh time)
 };
 
+struct CfdDem;
+// The axis gravity runs along most (0, 1, 2), or -1 without gravity.
+int gravity_axis(const CfdDem& c);
+
 struct CfdDem {
   GrainSettings grains;
   CfdDemBox box;

@@ -17,6 +17,13 @@ const char* face_name(BoxFace f) {
   return names[static_cast<int>(f)];
 }
 
+int gravity_axis(const CfdDem& c) {
+  int axis = 0;
+  for (int k = 1; k < 3; ++k)
+    if (std::abs(c.gravity[k]) > std::abs(c.gravity[axis])) axis = k;
+  return c.gravity[axis] == 0.0 ? -1 : axis;
+}
+
 double FlowSettings::velocity_at(double t) const {
   if (darcy_velocity.empty()) return 0.0;
   if (t <= darcy_velocity.front().first) return darcy_velocity.front().second;

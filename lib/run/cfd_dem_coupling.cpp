@@ -35,9 +35,7 @@ std::array<porous_flow::FaceCondition, 6> fluid_faces(const project::CfdDem& c, 
     return faces;
   }
   // Still water: the surface is open where gravity points away from.
-  int axis = 0;
-  for (int k = 1; k < 3; ++k)
-    if (std::abs(c.gravity[k]) > std::abs(c.gravity[axis])) axis = k;
+  const int axis = std::max(0, project::gravity_axis(c));
   faces[2 * axis + (c.gravity[axis] <= 0.0 ? 1 : 0)] = {FaceKind::pressure, 0.0};
   return faces;
 }
@@ -48,6 +46,7 @@ CfdDemCoupling::CfdDemCoupling(const project::CfdDem& c, dem::LammpsSession& lam
       grid_(grid_shape(c), fluid_faces(c, 0.0), {c.fluid.density, c.fluid.viscosity}, c.grains.mean_diameter(),
             c.fluid.min_porosity),
       forces_(porous_flow::make_fluid_forces(c.forces)) {
+  size_by_id();
   lammps_.set_external_force(dem::fluid_fix, [this](int n, const int* ids, double**, double** force) {
     for (int i = 0; i < n; ++i) {
       const auto f = fluid_force(ids[i]);  // none before the first update
@@ -75,7 +74,6 @@ porous_flow::SolveReport CfdDemCoupling::update(double inflow_velocity) {
   // itself (the drag laws themselves are good to some 10 %); the flow's
   // mass balance holds to the linear solver's 1e-10 whatever beta stopped at.
   const auto report = grid_.solve(1e-10, 1e-3);
-  size_by_id();
   const porous_flow::Fluid fluid{c_.fluid.density, c_.fluid.viscosity};
   const Vec3 g(c_.gravity[0], c_.gravity[1], c_.gravity[2]);
   for (int i = 0; i < n; ++i) {
@@ -95,8 +93,9 @@ porous_flow::SolveReport CfdDemCoupling::update(double inflow_velocity) {
 }
 
 void CfdDemCoupling::size_by_id() {
-  // Grains are never created after the start, and deleted ones keep their
-  // ids: the largest id any rank holds bounds them all.
+  // Grains are never created after the start (this is called once, when
+  // they have been read), and deleted ones keep their ids: the largest id
+  // any rank holds bounds them all.
   const int n = lammps_.local_count();
   const int* ids = lammps_.ids();
   int largest = 0;
@@ -106,7 +105,6 @@ void CfdDemCoupling::size_by_id() {
 }
 
 void CfdDemCoupling::hold_buoyancy_only() {
-  size_by_id();
   const int n = lammps_.local_count();
   const int* ids = lammps_.ids();
   const double* r = lammps_.radius();
@@ -152,7 +150,6 @@ GrainTotals CfdDemCoupling::totals() const {
     t.count += 1.0;
     t.in_cavity += lost(x[i]);
     t.volume += volume;
-    t.mass += volume * c_.grains.density;
     t.contacts += contacts ? contacts[i] : 0.0;
     for (int k = 0; k < 3; ++k) {
       t.position_sum[k] += volume * x[i][k];

@@ -22,7 +22,6 @@ namespace frostwall::run {
 struct GrainTotals {
   double count = 0.0, volume = 0.0, contacts = 0.0;
   double in_cavity = 0.0;  // grains whose centre lies in the cavity: out of the soil
-  double mass = 0.0;
   std::array<double, 3> position_sum{}, velocity_sum{};  // volume-weighted sums
   std::array<std::array<double, 3>, 3> force{};          // by kind: drag, pressure gradient, buoyancy (N)
 };
@@ -55,7 +54,7 @@ class CfdDemCoupling {
   std::vector<std::array<double, 3>> held_;                      // by grain id
   std::vector<std::array<std::array<double, 3>, 3>> by_kind_;  // by grain id
   double coupling_seconds_ = 0.0;
-  void size_by_id();  // held_ and by_kind_ reach the largest grain id (ids are never reused)
+  void size_by_id();  // held_ and by_kind_ reach the largest grain id (once: ids are never reused)
 };
 
 // The fluid grid's faces for a project: the flow's inflow and outflow, or

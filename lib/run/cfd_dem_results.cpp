@@ -22,8 +22,7 @@ CfdDemResults::CfdDemResults(const project::Project& p) : p_(p), c_(*p.cfd_dem) 
     axis_ = static_cast<int>(c_.flow->inflow) / 2;
     from_low_ = static_cast<int>(c_.flow->inflow) % 2 == 0;
   } else {
-    for (int k = 0; k < 3; ++k)
-      if (std::abs(c_.gravity[k]) > std::abs(c_.gravity[axis_])) axis_ = k;
+    axis_ = std::max(0, project::gravity_axis(c_));
     from_low_ = c_.gravity[axis_] <= 0.0;
   }
   area_ = 1.0;
@@ -82,16 +81,12 @@ json CfdDemResults::fluidisation() const {
   const double solid = (1.0 - start.porosity) * start.bed_length;  // grain volume per area
   const double weight = (rho_p - rho_f) * g * solid;               // buoyant, Pa
   const porous_flow::Fluid fluid{rho_f, c_.fluid.viscosity};
-  const double d = std::cbrt(6.0 / M_PI * dem::mean_grain_volume(c_.grains));
-  double lo = 0.0, hi = 100.0;
-  for (int it = 0; it < 200; ++it) {
-    const double mid = 0.5 * (lo + hi);
-    (porous_flow::ergun_gradient(fluid, start.porosity, d, mid) * start.bed_length < weight ? lo : hi) = mid;
-  }
+  const double ergun_velocity = porous_flow::ergun_velocity(fluid, start.porosity, dem::mean_grain_diameter(c_.grains),
+                                                            weight / start.bed_length);
   json out = {{"bed_length_m", start.bed_length},
               {"porosity", start.porosity},
               {"buoyant_weight_Pa", weight},
-              {"ergun_velocity_m_s", 0.5 * (lo + hi)},
+              {"ergun_velocity_m_s", ergun_velocity},
               {"critical_gradient", (rho_p / rho_f - 1.0) * (1.0 - start.porosity)},
               {"lift_expansion", lift_expansion}};
   // Lift-off: the bed grows by lift_expansion.

@@ -14,14 +14,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// The axis gravity runs along (-1 without gravity).
-int settle_axis(const project::CfdDem& c) {
-  int axis = 0;
-  for (int k = 1; k < 3; ++k)
-    if (std::abs(c.gravity[k]) > std::abs(c.gravity[axis])) axis = k;
-  return c.gravity[axis] == 0.0 ? -1 : axis;
-}
-
 double skin(const project::CfdDem& c) { return 0.25 * c.grains.diameter_max; }
 
 }  // namespace
@@ -43,7 +35,7 @@ GrainSetup set_up_grains(const project::Project& p, dem::LammpsSession& lammps, 
   // the first step), so the cache is a data file and the springs start
   // unloaded (the bed then moves by some 1e-4 of its length).
   const auto box = setup.cached ? dem::dem_box(c) : dem::settling_box(c);
-  for (const auto& s : dem::setup_commands(box, settle_axis(c))) lammps.command(s);
+  for (const auto& s : dem::setup_commands(box, project::gravity_axis(c))) lammps.command(s);
   if (setup.cached) {
     note("packing: settled grains read from the cache " + setup.cache.string());
     lammps.command(dem::read_data_command(setup.cache.string()));

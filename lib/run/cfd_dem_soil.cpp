@@ -73,20 +73,8 @@ SoilMeasures SoilWatch::measure(const CfdDemCoupling& coupling) const {
   const double* r = lammps_.radius();
   const double d = c_.grains.diameter_max;
   // Point A's cell.
-  int cell_a = -1;
-  if (c_.point_a) {
-    std::array<int, 3> ijk{};
-    for (int k = 0; k < 3; ++k)
-      ijk[k] = std::clamp(static_cast<int>((c_.point_a->at(k) - c_.box.low[k]) / grid.shape().cell_size(k)), 0,
-                          grid.shape().cells[k] - 1);
-    cell_a = grid.shape().index(ijk[0], ijk[1], ijk[2]);
-  }
-  auto cell_of = [&](const double* p) {
-    std::array<int, 3> ijk{};
-    for (int k = 0; k < 3; ++k)
-      ijk[k] = std::clamp(static_cast<int>((p[k] - c_.box.low[k]) / grid.shape().cell_size(k)), 0, grid.shape().cells[k] - 1);
-    return grid.shape().index(ijk[0], ijk[1], ijk[2]);
-  };
+  const int cell_a = c_.point_a ? grid.shape().cell_of(porous_flow::Vec3(c_.point_a->at(0), c_.point_a->at(1), c_.point_a->at(2))) : -1;
+  auto cell_of = [&](const double* p) { return grid.shape().cell_of(porous_flow::Vec3(p[0], p[1], p[2])); };
   // Local sums: zone solid volume, grains in A's cell and their forces, displaced grains.
   constexpr int heights = 8;  // the collapse zone's boundary in height bins over the cavity's centre
   std::array<double, 4 + 9> sums{};

@@ -22,30 +22,26 @@ json packing_regime(const project::CfdDem& c, double grain_volume) {
   const double rho_f = c.fluid.density, rho_p = c.grains.density;
   const double g = std::hypot(c.gravity[0], c.gravity[1], c.gravity[2]);
   const porous_flow::Fluid fluid{rho_f, c.fluid.viscosity};
-  const double d = std::cbrt(6.0 / M_PI * dem::mean_grain_volume(c.grains));
+  const double d = dem::mean_grain_diameter(c.grains);
   const double weight = (1.0 - n) * (rho_p - rho_f) * g;  // buoyant, per volume
-  double lo = 0.0, hi = 100.0;
-  for (int it = 0; it < 200; ++it) {
-    const double mid = 0.5 * (lo + hi);
-    (porous_flow::ergun_gradient(fluid, n, d, mid) < weight ? lo : hi) = mid;
-  }
+  const double u_mf = porous_flow::ergun_velocity(fluid, n, d, weight);
   json out = {{"porosity", n}, {"critical_gradient", (rho_p / rho_f - 1.0) * (1.0 - n)},
-              {"minimum_fluidisation_velocity_m_s", 0.5 * (lo + hi)}};
+              {"minimum_fluidisation_velocity_m_s", u_mf}};
   if (c.flow && !c.flow->darcy_velocity.empty()) {
     double u = 0.0;
     for (const auto& [t, v] : c.flow->darcy_velocity) u = std::max(u, std::abs(v));
     const double gradient = porous_flow::ergun_gradient(fluid, n, d, u) / (rho_f * g);
     out["darcy_velocity_m_s"] = u;
     out["hydraulic_gradient"] = gradient;
-    out["above_fluidisation"] = u > 0.5 * (lo + hi);
-    out["note"] = u > 0.5 * (lo + hi)
+    out["above_fluidisation"] = u > u_mf;
+    out["note"] = u > u_mf
                       ? fmt::format("{:.3g} m/s is {:.1f} times Ergun's minimum fluidisation velocity of this packing: the "
                                     "seepage gradient ({:.2f}) exceeds the critical gradient ({:.2f}), so the ground at the "
                                     "inflow face is loosened and boils rather than seeping",
-                                    u, u / (0.5 * (lo + hi)), gradient, (rho_p / rho_f - 1.0) * (1.0 - n))
+                                    u, u / (u_mf), gradient, (rho_p / rho_f - 1.0) * (1.0 - n))
                       : fmt::format("{:.3g} m/s is below Ergun's minimum fluidisation velocity of this packing ({:.3g} m/s): "
                                     "seepage gradient {:.3f} against the critical {:.2f}",
-                                    u, 0.5 * (lo + hi), gradient, (rho_p / rho_f - 1.0) * (1.0 - n));
+                                    u, u_mf, gradient, (rho_p / rho_f - 1.0) * (1.0 - n));
   }
   return out;
 }
