@@ -172,4 +172,8 @@ TEST_CASE("leak, scaled: the report shows the erosion section with a displacemen
   CHECK(maps == 2);
   CHECK(html.find("{{") == std::string::npos);
   CHECK(html.find("<circle") != std::string::npos);
+  // The 3-D views of the last snapshot: the whole block and the cut-away.
+  std::size_t views = 0;
+  for (std::size_t at = 0; (at = html.find("<figure><img src=\"data:image/png;base64,", at)) != std::string::npos; ++at) ++views;
+  CHECK(views == 2);
 }

@@ -6,9 +6,11 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <numbers>
 #include <fmt/format.h>
 
 #include "report/colour_scale.hpp"
+#include "report/grain_render.hpp"
 #include "report/report_sections.hpp"
 #include "report/run_files.hpp"
 #include "report/svg_chart.hpp"
@@ -45,6 +47,33 @@ std::string section_svg(const GrainSnapshot& g, double x0, const std::array<doub
                        (window[3] - p[2]) * scale, 0.5 * g.diameter[i] * scale, c[0], c[1], c[2]);
   }
   return svg + "</svg>";
+}
+
+// The last snapshot in 3-D: the whole block from above a corner (the
+// surface's trough), and cut through the cavity's centre across the flow's
+// section plane, seen from the cut side (the collapse cone inside).
+json grain_views(const GrainSnapshot& g, const project::CfdDem& c, const ColourScale& scale) {
+  std::vector<std::array<std::uint8_t, 3>> colour(g.position.size());
+  for (std::size_t i = 0; i < colour.size(); ++i) colour[i] = scale(g.displacement[i]);
+  GrainView whole;
+  whole.up_axis = project::gravity_axis(c);
+  GrainView cut = whole;
+  cut.cut_axis = (whole.up_axis + 1) % 3;
+  cut.cut_at = c.cavity->centre[std::size_t(cut.cut_axis)];
+  cut.azimuth_deg = 215.0;
+  const char* axis = "xyz";
+  auto seen_from = [&](const GrainView& v) {  // the camera's side, in the model's axes
+    const double az = v.azimuth_deg * std::numbers::pi / 180.0;
+    const int a1 = (v.up_axis + 1) % 3, a2 = (v.up_axis + 2) % 3;
+    return fmt::format("seen from {}{}, {}{}, {:.0f}° above the horizontal", std::cos(az) < 0 ? "−" : "+", axis[a1],
+                       std::sin(az) < 0 ? "−" : "+", axis[a2], v.elevation_deg);
+  };
+  json views = json::array();
+  for (const auto& [v, caption] : {std::pair{whole, "the whole block, " + seen_from(whole)},
+                                   std::pair{cut, fmt::format("cut at {} = {:.3g} m through the cavity's centre, {}", axis[cut.cut_axis], cut.cut_at, seen_from(cut))}})
+    views.push_back({{"png", png_data_uri(render_grains(g.position, g.diameter, colour, c.box.low, c.box.high, v))},
+                     {"width", v.width}, {"height", v.height}, {"caption", caption}});
+  return views;
 }
 
 }  // namespace
@@ -119,6 +148,9 @@ void add_erosion(const RunRecord& run, json& view) {
       maps.push_back({{"html", section_svg(snaps[k], c.cavity->centre[0], window, colours)},
                       {"caption", fmt::format("{} s", k < times.size() ? fmt::format("{:.3g}", times[k]["time"].get<double>()) : "?")}});
   view["erosion_maps"] = maps;
+  view["erosion_views"] = json::array();
+  if (!snaps.empty() && !snaps.back().displacement.empty()) view["erosion_views"] = grain_views(snaps.back(), c, colours);
+  view["has_erosion_views"] = !view["erosion_views"].empty();
   view["erosion_colour_bar"] = maps.empty() ? "" : colours.colour_bar_svg(320, "displacement (m)");
 }
 
