@@ -33,7 +33,7 @@ std::vector<double> settle(const porous_flow::DragLaw& law, const porous_flow::F
   const double height = 1.5 * std::min(stokes, 2.0) * end + 10 * d;
   box.high = {5 * d, 5 * d, height};
   box.periodic = {true, true, false};
-  for (const auto& c : dem::box_commands(box, dem::Contact{}, 0.1 * d)) lammps.command(c);
+  for (const auto& c : dem::box_commands(box, dem::Contact{}, dem::Neighbour{0.1 * d})) lammps.command(c);
   for (const auto& c : dem::grain_commands({{0.0, 0.0, height - 5 * d}, d, rho_p}, 1)) lammps.command(c);
   for (const auto& c : dem::motion_commands(g, timestep)) lammps.command(c);
   const double volume = std::numbers::pi * d * d * d / 6.0;

@@ -43,18 +43,20 @@ static std::string wall_command(const Box& box, const Contact& contact, int k, i
   return fmt::format("fix wall_{0} all wall/gran granular {1} {0}plane {2} {3}", "xyz"[k], contact_model(contact), lo, hi);
 }
 
-std::vector<std::string> wall_commands(const Box& box, const Contact& contact, double skin, int open_face) {
+std::vector<std::string> wall_commands(const Box& box, const Contact& contact, const Neighbour& neighbour, int open_face) {
   std::vector<std::string> c;
   for (int k = 0; k < 3; ++k)
     if (!box.periodic[k]) c.push_back(wall_command(box, contact, k, open_face));
-  c.push_back(fmt::format("neighbor {} bin", skin));
+  c.push_back(fmt::format("neighbor {} bin", neighbour.skin));
+  c.push_back(fmt::format("neigh_modify delay 0 every {} check yes", neighbour.every) +
+              (neighbour.bin_size > 0.0 ? fmt::format(" binsize {}", neighbour.bin_size) : std::string()));
   c.push_back(fmt::format("compute {} all contact/atom", contact_compute));
   return c;
 }
 
-std::vector<std::string> contact_commands(const Box& box, const Contact& contact, double skin, int open_face) {
+std::vector<std::string> contact_commands(const Box& box, const Contact& contact, const Neighbour& neighbour, int open_face) {
   auto c = pair_commands(contact);
-  for (auto&& s : wall_commands(box, contact, skin, open_face)) c.push_back(std::move(s));
+  for (auto&& s : wall_commands(box, contact, neighbour, open_face)) c.push_back(std::move(s));
   if (open_face >= 0) c.push_back(lost_grains_allowed);
   return c;
 }
@@ -94,10 +96,10 @@ std::vector<std::string> trim_commands(const Box& box, int axis, double level, c
   return c;
 }
 
-std::vector<std::string> box_commands(const Box& box, const Contact& contact, double skin) {
+std::vector<std::string> box_commands(const Box& box, const Contact& contact, const Neighbour& neighbour) {
   auto c = setup_commands(box);
   for (auto&& s : create_box_commands(box)) c.push_back(std::move(s));
-  for (auto&& s : contact_commands(box, contact, skin)) c.push_back(std::move(s));
+  for (auto&& s : contact_commands(box, contact, neighbour)) c.push_back(std::move(s));
   return c;
 }
 

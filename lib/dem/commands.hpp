@@ -39,17 +39,25 @@ struct Grain {
 std::vector<std::string> setup_commands(const Box& box, int settle_axis = -1);
 // The box and one atom type (when the grains are not read from a file).
 std::vector<std::string> create_box_commands(const Box& box);
+// Neighbour lists: skin (m), steps between the moved-half-the-skin checks,
+// bin size (m; 0: LAMMPS' half the cutoff).
+struct Neighbour {
+  double skin = 0.0;
+  int every = 1;
+  double bin_size = 0.0;
+};
+
 // Granular contacts between grains; walls on every non-periodic face but
 // an open one (open_face 0..5, x_min .. z_max; -1 none), the neighbour
 // skin, and the per-grain contact count (compute `contacts`); both.
 std::vector<std::string> pair_commands(const Contact& contact);
-std::vector<std::string> wall_commands(const Box& box, const Contact& contact, double skin, int open_face = -1);
-std::vector<std::string> contact_commands(const Box& box, const Contact& contact, double skin, int open_face = -1);
+std::vector<std::string> wall_commands(const Box& box, const Contact& contact, const Neighbour& neighbour, int open_face = -1);
+std::vector<std::string> contact_commands(const Box& box, const Contact& contact, const Neighbour& neighbour, int open_face = -1);
 // The contact law changed in place (pair_coeff and the walls again): the
 // settling friction replaced by the run's.
 std::vector<std::string> new_contact_commands(const Box& box, const Contact& contact, int open_face = -1);
 // All three above, in order (a box without grains yet).
-std::vector<std::string> box_commands(const Box& box, const Contact& contact, double skin);
+std::vector<std::string> box_commands(const Box& box, const Contact& contact, const Neighbour& neighbour);
 // The id-th grain made (1, 2, ...: LAMMPS numbers atoms in order).
 std::vector<std::string> grain_commands(const Grain& grain, long id);
 // A LAMMPS data file's text (atom_style sphere) holding these grains, ids 1..n.

@@ -85,6 +85,15 @@ struct CouplingSettings {
   std::optional<double> dem_timestep;  // s (nullopt: 0.2 of the Rayleigh time)
 };
 
+// LAMMPS' neighbour lists. The list is always rebuilt once a grain has
+// moved half the skin (check yes), so with every = 1 no contact is ever
+// missed and these settings change the speed, not the answer.
+struct NeighbourSettings {
+  std::optional<double> skin;      // m (nullopt: a quarter of the largest grain)
+  int every = 1;                   // steps between the moved-half-the-skin checks
+  std::optional<double> bin_size;  // m (nullopt: LAMMPS' half the cutoff)
+};
+
 struct CfdDem;
 // The axis gravity runs along most (0, 1, 2), or -1 without gravity.
 int gravity_axis(const CfdDem& c);
@@ -98,6 +107,7 @@ struct CfdDem {
   Point3 gravity{0.0, 0.0, -9.81};   // m/s2
   std::vector<std::string> forces = default_fluid_forces;
   CouplingSettings coupling;
+  NeighbourSettings neighbour;
   // The point whose fluid cell is watched (pressure, forces on its grains):
   // the paper's "point A, 0.04 m below the surface above the cavity".
   // Default with a cavity: above its centre, 0.04 m below the box's top.

@@ -234,7 +234,7 @@ std::vector<std::string> read_forces(const Node& n) {
 
 void read_cfd_dem(const Node& root, Project& project) {
   root.object({"name", "description", "physics", "grains", "box", "cavity", "fluid", "flow", "gravity", "forces",
-               "coupling", "time", "output", "max_grains", "point_a"});
+               "coupling", "neighbour", "time", "output", "max_grains", "point_a"});
   project.name = root["name"].required().string().value_or("");
   project.description = root["description"].string(true).value_or("");
   CfdDem c;
@@ -255,6 +255,16 @@ void read_cfd_dem(const Node& root, Project& project) {
   if (const Node cp = root["coupling"]; cp.object({"interval", "dem_timestep"})) {
     if (const auto k = cp["interval"].count()) c.coupling.interval = *k;
     c.coupling.dem_timestep = cp["dem_timestep"].positive();
+  }
+  if (const Node nb = root["neighbour"]; nb.object({"skin", "every", "bin_size"})) {
+    c.neighbour.skin = nb["skin"].positive();
+    if (c.neighbour.skin && *c.neighbour.skin > c.grains.diameter_max)
+      nb["skin"].problem("must not exceed the largest grain's diameter (each grain would list far more than its contacts)");
+    if (const auto k = nb["every"].count()) {
+      c.neighbour.every = *k;
+      if (*k > 100) nb["every"].problem("must be at most 100 steps");
+    }
+    c.neighbour.bin_size = nb["bin_size"].positive();
   }
   c.max_grains = root["max_grains"].positive();
   if (const Node a = root["point_a"]; a.present()) {

@@ -41,7 +41,7 @@ double dem_timestep(const project::CfdDem& c) {
 }
 
 int coupling_interval(const project::CfdDem& c, double dt, bool flowing) {
-  if (c.coupling.interval) return *c.coupling.interval;
+  if (c.coupling.interval && flowing) return *c.coupling.interval;
   // Forces are held between fluid updates: for at most 2 % of the smallest
   // grain's Stokes relaxation time, and, once the water flows, no longer
   // than it takes to carry a grain a tenth of its diameter; 1 to 250 steps.
@@ -142,8 +142,9 @@ void run_cfd_dem(const project::Project& p, const RunOptions& options) {
   check_output_directory(p.output.directory);
   const double dt = dem_timestep(c);
   const int interval = coupling_interval(c, dt, true);
-  // Settling is in still water, whatever the flow later: variants that
-  // differ only in their flow share one settled packing.
+  // Settling is in still water at the interval chosen for it, whatever the
+  // flow and coupling.interval later: variants that differ only in those
+  // share one settled packing.
   const int settle_interval = coupling_interval(c, dt, false);
 
   // LAMMPS's own log beside the results: where it explains an abort.

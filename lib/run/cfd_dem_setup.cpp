@@ -14,7 +14,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
-double skin(const project::CfdDem& c) { return 0.25 * c.grains.diameter_max; }
+dem::Neighbour neighbour(const project::CfdDem& c) {
+  return {c.neighbour.skin.value_or(0.25 * c.grains.diameter_max), c.neighbour.every, c.neighbour.bin_size.value_or(0.0)};
+}
 
 }  // namespace
 
@@ -44,7 +46,7 @@ GrainSetup set_up_grains(const project::Project& p, dem::LammpsSession& lammps, 
     MPI_Barrier(MPI_COMM_WORLD);
     lammps.command(dem::read_data_command((out / "dem_initial.data").string()));
   }
-  for (const auto& s : dem::contact_commands(box, contact, skin(c), setup.open_face)) lammps.command(s);
+  for (const auto& s : dem::contact_commands(box, contact, neighbour(c), setup.open_face)) lammps.command(s);
   if (c.cavity) {
     lammps.command(dem::cavity_region_command(c.cavity->centre, c.cavity->radius));
     if (settling_here)
