@@ -13,6 +13,7 @@
 #include <fmt/format.h>
 
 #include "project/json_reader.hpp"
+#include "project/load_groundwater.hpp"
 #include "project/load_cfd_dem.hpp"
 #include "project/load_pores.hpp"
 #include "project/load_reports.hpp"
@@ -374,7 +375,7 @@ Project read_project(const Node& root) {
     return project;
   }
   root.object({"name", "description", "physics", "layout", "shaft", "geometry", "pipe", "soil", "domain", "time",
-               "numerics", "design", "monitoring", "output", "mechanics", "pore_fluid"});
+               "numerics", "design", "monitoring", "output", "mechanics", "pore_fluid", "groundwater"});
   project.name = root["name"].required().string().value_or("");
   project.description = root["description"].string(true).value_or("");
 
@@ -446,6 +447,10 @@ Project read_project(const Node& root) {
     else project.mechanics = read_mechanics(mech, project.warnings);
     if (!shaft && project.numerics.placement == Placement::graded)
       mech.problem(R"(needs "placement": "lattice" (one horizon for the whole cloud))");
+  }
+  if (const Node water = root["groundwater"]; water.present()) {
+    if (!shaft) water.problem(R"(only used with "shaft" sections in this version)");
+    else project.groundwater = detail::read_groundwater(water);
   }
   detail::read_pore_settings(root, project);
   project.design = read_design(root["design"]);

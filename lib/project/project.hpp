@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "project/cfd_dem.hpp"
+#include "project/groundwater.hpp"
 #include "project/mechanics.hpp"
 
 namespace frostwall::project {
@@ -231,6 +232,7 @@ struct Project {
   std::vector<Sensor> monitoring;
   Output output;
   std::optional<Mechanics> mechanics;  // plain geometries: PD thermo-mechanics
+  std::optional<Groundwater> groundwater;  // shafts: water flowing through the ground (none: still water)
   PoreFluid pore_fluid;                // what fills Rectangle::pores (default water/ice)
   // "physics": "cfd-dem": grains and pore water; then only name,
   // description, time and output above are read.

@@ -49,6 +49,9 @@ class PhaseChangeLaw {
   // 0 inside an isothermal change, so an implicit step knows T is pinned.
   double temperature_slope(double H, double direction) const;
   double latent_heat_volumetric() const { return rho_L_; }
+  // The smaller sensible heat capacity, frozen or unfrozen, J/(m3 K): the
+  // least heat a particle needs per kelvin (latent heat only adds to it).
+  double smallest_heat_capacity() const { return std::min(rho_cs_, rho_cl_); }
   // H / H_l unclamped: the share of its latent heat a particle still holds
   // (1 at the start of freezing, 0 fully frozen, below 0 colder). Closure
   // follows it through 0 (post/closure.hpp). Without latent heat, H over

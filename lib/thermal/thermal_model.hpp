@@ -109,6 +109,8 @@ class ThermalModel {
   const std::vector<double>& temperature() const { return T_; }
   const std::vector<double>& liquid_fraction() const { return f_; }
   const std::vector<double>& volume() const { return volume_; }
+  // Boundary id of each particle (-1 free).
+  const std::vector<int>& boundary_ids() const { return boundary_id_; }
   // Conductivity of particle i along axis d.
   double conductivity(std::size_t i, int d) const { return k_[i * 2 + d]; }
 

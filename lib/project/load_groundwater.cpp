@@ -1,0 +1,69 @@
+// Reads the "groundwater" block (project/groundwater.hpp).
+#include <cmath>
+
+#include "project/load_groundwater.hpp"
+
+namespace frostwall::project {
+
+double Groundwater::speed() const { return std::hypot(darcy_flux[0], darcy_flux[1]); }
+
+double Groundwater::conductivity_of(double k_m2) const { return k_m2 * water_density * 9.81 / water_viscosity; }
+
+double Groundwater::permeability_m2() const {
+  if (permeability) return *permeability;
+  return hydraulic_conductivity.value_or(0.0) * water_viscosity / (water_density * 9.81);
+}
+
+namespace detail {
+
+Groundwater read_groundwater(const Node& n) {
+  Groundwater g;
+  n.object({"permeability", "hydraulic_conductivity", "porosity", "permeability_law", "darcy_flux", "unit", "water",
+            "resolve_tolerance"});
+  g.permeability = n["permeability"].positive();
+  g.hydraulic_conductivity = n["hydraulic_conductivity"].positive();
+  if (n["permeability"].present() == n["hydraulic_conductivity"].present())
+    n["permeability"].problem(R"(give either "permeability" (m^2) or "hydraulic_conductivity" (m/s))");
+  if (const auto porosity = n["porosity"].required().positive()) {
+    if (*porosity >= 1.0) n["porosity"].problem(fmt::format("must be below 1, got {}", *porosity));
+    g.law.porosity = *porosity;
+  }
+  if (const Node law = n["permeability_law"]; law.object({"model", "impedance", "liquid_fraction", "floor"})) {
+    if (const auto m = law["model"].required().choice<porous_flow::PermeabilityModel>(
+            "permeability law", {{"impedance", porous_flow::PermeabilityModel::impedance},
+                                 {"kozeny_carman", porous_flow::PermeabilityModel::kozeny_carman},
+                                 {"threshold", porous_flow::PermeabilityModel::threshold}}))
+      g.law.model = *m;
+    if (const auto omega = law["impedance"].positive()) g.law.impedance = *omega;
+    if (law["impedance"].present() && g.law.model != porous_flow::PermeabilityModel::impedance)
+      law["impedance"].problem(R"(only used with "model": "impedance")");
+    if (const auto f = law["liquid_fraction"].positive()) {
+      if (*f >= 1.0) law["liquid_fraction"].problem(fmt::format("must be below 1, got {}", *f));
+      g.law.threshold_liquid_fraction = *f;
+    }
+    if (law["liquid_fraction"].present() && g.law.model != porous_flow::PermeabilityModel::threshold)
+      law["liquid_fraction"].problem(R"(only used with "model": "threshold")");
+    if (const auto floor = law["floor"].positive()) {
+      if (*floor >= 1.0) law["floor"].problem(fmt::format("must be below 1, got {}", *floor));
+      g.law.floor = *floor;
+    }
+  }
+  double per_second = 1.0 / 86400.0;
+  if (const auto unit = n["unit"].choice<double>("unit", {{"m/d", 1.0 / 86400.0}, {"m/s", 1.0}})) per_second = *unit;
+  if (const Node q = n["darcy_flux"].required(); q.given()) {
+    if (q.array() != std::size_t{2}) q.problem(fmt::format("must be [q_x, q_y], got {}", q.shown()));
+    else
+      for (std::size_t d = 0; d < 2; ++d)
+        if (const auto v = q[d].number()) g.darcy_flux[d] = *v * per_second;
+  }
+  if (const Node w = n["water"]; w.object({"density", "heat_capacity", "viscosity"})) {
+    g.water_density = w["density"].positive().value_or(g.water_density);
+    g.water_heat_capacity = w["heat_capacity"].positive().value_or(g.water_heat_capacity);
+    g.water_viscosity = w["viscosity"].positive().value_or(g.water_viscosity);
+  }
+  if (const auto tol = n["resolve_tolerance"].positive()) g.resolve_tolerance = *tol;
+  return g;
+}
+
+}  // namespace detail
+}  // namespace frostwall::project
