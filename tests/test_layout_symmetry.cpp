@@ -354,3 +354,29 @@ TEST_CASE("symmetry of the shipped free rings: 26 and 30 pipes share the 0 and 9
   CHECK(w.angle / deg == Approx(90.0));
   CHECK(w.start_angle == Approx(0.0).margin(1e-12));
 }
+
+TEST_CASE("Under seepage only the mirror line along the flow survives", "[layout][groundwater]") {
+  // 26 pipes on a ring from 0 deg: mirror lines every 180/26 deg.
+  std::vector<Pipe2> pipes;
+  for (int k = 0; k < 26; ++k) pipes.push_back({std::cos(k * 2 * pi / 26), std::sin(k * 2 * pi / 26), 0, k});
+  const double tol = geometry::default_symmetry_tolerance(pipes);
+  std::string note;
+  // Along x, through pipe 0: half the section, from the flow's direction.
+  const auto along = geometry::find_flow_symmetry_wedge(pipes, 0.0, tol, note);
+  CHECK(along.mirror_count == 1);
+  CHECK(along.angle == Approx(pi));
+  CHECK_THAT(note, Contains("half the section"));
+  // Along a line between two pipes' mirror lines: nothing survives.
+  const auto skew = geometry::find_flow_symmetry_wedge(pipes, 2.0 * deg, tol, note);
+  CHECK(skew.mirror_count == 0);
+  CHECK(skew.angle == Approx(2 * pi));
+  CHECK_THAT(note, Contains("full circle"));
+  // Along a mirror line between pipes (half a pitch) and against the flow: half again.
+  CHECK(geometry::find_flow_symmetry_wedge(pipes, 180.0 / 26 * deg, tol, note).mirror_count == 1);
+  CHECK(geometry::find_flow_symmetry_wedge(pipes, pi, tol, note).mirror_count == 1);
+  // Three pipes (a triangle pointing along x): along x half, along y full.
+  std::vector<Pipe2> three = {{1, 0, 0, 0}, {std::cos(2 * pi / 3), std::sin(2 * pi / 3), 0, 1}, {std::cos(4 * pi / 3), std::sin(4 * pi / 3), 0, 2}};
+  const double tol3 = geometry::default_symmetry_tolerance(three);
+  CHECK(geometry::find_flow_symmetry_wedge(three, 0.0, tol3, note).mirror_count == 1);
+  CHECK(geometry::find_flow_symmetry_wedge(three, pi / 2, tol3, note).mirror_count == 0);
+}

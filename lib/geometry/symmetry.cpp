@@ -143,6 +143,27 @@ Wedge find_symmetry_wedge(const std::vector<Pipe2>& pipes, double preferred_star
   return find_symmetry_wedge(pipes, preferred_start_angle, default_symmetry_tolerance(pipes));
 }
 
+Wedge find_flow_symmetry_wedge(const std::vector<Pipe2>& pipes, double flow_angle, double tolerance, std::string& note) {
+  const double along = wrap(flow_angle, 2 * pi);
+  const Pipe2* ref = pipes.empty() ? nullptr : farthest_pipe(pipes);
+  const double same_line = ref ? angular_tolerance(tolerance, std::hypot(ref->x, ref->y)) : 1e-12;
+  const auto lines = mirror_lines(pipes, tolerance);
+  const bool no_pipe_off_axis = lines.empty() && (pipes.empty() || std::hypot(ref->x, ref->y) <= tolerance);
+  bool mirrored = no_pipe_off_axis;
+  for (const double line : lines) {
+    const double d = wrap(line - along, pi);
+    if (d <= same_line || pi - d <= same_line) mirrored = true;
+  }
+  if (!mirrored) {
+    note = fmt::format("symmetry under seepage: the layout has no mirror line along the flow ({:.3f} deg); the full circle",
+                       along * 180.0 / pi);
+    return {0, along, 2 * pi};
+  }
+  note = fmt::format("symmetry under seepage: only the mirror line along the flow ({:.3f} deg) survives; half the section",
+                     along * 180.0 / pi);
+  return {1, along, pi};
+}
+
 std::string describe(const Wedge& wedge) {
   const double to_deg = 180.0 / pi;
   if (wedge.mirror_count == 0)

@@ -39,6 +39,13 @@ std::vector<double> mirror_lines(const std::vector<Pipe2>& pipes, double toleran
 Wedge find_symmetry_wedge(const std::vector<Pipe2>& pipes, double preferred_start_angle, double tolerance);
 Wedge find_symmetry_wedge(const std::vector<Pipe2>& pipes, double preferred_start_angle);
 
+// The wedge that survives a regional groundwater flow along `flow_angle`
+// (rad): the flow is mirror symmetric only about lines along it, so the
+// half plane from the mirror ray nearest the flow's direction when the
+// layout has a mirror line along the flow (M = 1, pi wide), else the full
+// circle. `note` says which and why, for the log.
+Wedge find_flow_symmetry_wedge(const std::vector<Pipe2>& pipes, double flow_angle, double tolerance, std::string& note);
+
 // One line for the log: "symmetry: 26 mirror lines, wedge of 6.923 deg from 0.000 deg".
 std::string describe(const Wedge& wedge);
 

@@ -20,6 +20,9 @@ struct PairWeights {
   // Squared direction cosines of r_ij per pair (Dim values), kept only for
   // anisotropic soils, whose pair factor depends on the pair's direction.
   std::vector<double> direction2;
+  // x_j - x_i per pair (Dim values; j as the pair sees it, a mirror image
+  // or the particle), kept only when asked (LaplacianOptions::keep_vectors).
+  std::vector<double> vector;
   int dim = 2;
   std::vector<double> renormalisation;    // c_i per free particle (1 for plain)
   // Moment correction (graded clouds): particles corrected, and the range of

@@ -87,6 +87,7 @@ LaplacianPairs build_laplacian_pairs(const ParticleSet<Dim>& particles, const Ke
   pairs.column.resize(nnz);
   pairs.weight.resize(nnz);
   if (options.keep_directions) pairs.direction2.resize(nnz * Dim);
+  if (options.keep_vectors) pairs.vector.resize(nnz * Dim);
 
   // Second pass: the stored weights G_ij.
   std::vector<std::uint32_t> entry_point;  // the point (real or image) of each pair, for the moment correction
@@ -106,6 +107,8 @@ LaplacianPairs build_laplacian_pairs(const ParticleSet<Dim>& particles, const Ke
         const Vec<Dim> rij = xi - points[k];
         for (int d = 0; d < Dim; ++d) pairs.direction2[e * Dim + d] = rij[d] * rij[d] / (r * r);
       }
+      if (options.keep_vectors)
+        for (int d = 0; d < Dim; ++d) pairs.vector[e * Dim + d] = points[k][d] - xi[d];
       ++e;
     });
   });
@@ -135,6 +138,8 @@ LaplacianPairs build_laplacian_pairs(const ParticleSet<Dim>& particles, const Ke
         pairs.weight[out] = pairs.weight[e];
         if (options.keep_directions)
           for (int d = 0; d < Dim; ++d) pairs.direction2[out * Dim + d] = pairs.direction2[e * Dim + d];
+        if (options.keep_vectors)
+          for (int d = 0; d < Dim; ++d) pairs.vector[out * Dim + d] = pairs.vector[e * Dim + d];
         ++out;
       }
     }
@@ -142,6 +147,7 @@ LaplacianPairs build_laplacian_pairs(const ParticleSet<Dim>& particles, const Ke
     pairs.column.resize(out);
     pairs.weight.resize(out);
     if (options.keep_directions) pairs.direction2.resize(out * Dim);
+    if (options.keep_vectors) pairs.vector.resize(out * Dim);
   }
   return pairs;
 }

@@ -37,6 +37,9 @@ struct LaplacianOptions {
   // Graded clouds: make the renormalised weights exact for every quadratic
   // field (moment_correction.hpp); a lattice is exact without it.
   bool correct_moments = false;
+  // Store each pair's vector x_j - x_i (j as the pair sees it: a mirror
+  // image or the particle): the gradients a second-order advection needs.
+  bool keep_vectors = false;
 };
 
 template <int Dim>

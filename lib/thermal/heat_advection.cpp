@@ -7,8 +7,8 @@
 
 namespace frostwall::thermal {
 
-HeatAdvection::HeatAdvection(double water_heat_capacity, std::vector<double> pair_flux)
-    : rho_c_w_(water_heat_capacity), flux_(std::move(pair_flux)) {}
+HeatAdvection::HeatAdvection(double water_heat_capacity, std::vector<double> pair_flux, AdvectionScheme scheme)
+    : rho_c_w_(water_heat_capacity), flux_(std::move(pair_flux)), scheme_(scheme) {}
 
 double HeatAdvection::stable_step(const ThermalModel& model) const {
   const auto& P = model.pairs();
@@ -18,42 +18,87 @@ double HeatAdvection::stable_step(const ThermalModel& model) const {
     for (std::size_t e = P.row_start[i]; e < P.row_start[i + 1]; ++e) inflow += std::max(0.0, -flux_[e]);
     if (inflow > 0.0) step = std::min(step, model.volume()[i] * model.law_of(i).smallest_heat_capacity() / (rho_c_w_ * inflow));
   }
-  return step;
+  return scheme_ == AdvectionScheme::limited ? 0.5 * step : step;
 }
 
-void HeatAdvection::rate(const ThermalModel& model, std::vector<double>& rate, std::vector<double>& boundary_heat) const {
+// Least-squares temperature gradient of each free particle over its pairs
+// (weights G_e): exact for a linear field, one-sided supports included.
+void HeatAdvection::gradients(const ThermalModel& model) const {
+  const auto& P = model.pairs();
+  const auto& T = model.temperature();
+  gradient_.assign(2 * P.n_free, 0.0);
+  particles::for_each_particle(P.n_free, [&](std::size_t i) {
+    double m00 = 0.0, m01 = 0.0, m11 = 0.0, b0 = 0.0, b1 = 0.0;
+    for (std::size_t e = P.row_start[i]; e < P.row_start[i + 1]; ++e) {
+      const double w = P.weight[e], x = P.vector[2 * e], y = P.vector[2 * e + 1], dT = T[P.column[e]] - T[i];
+      m00 += w * x * x, m01 += w * x * y, m11 += w * y * y, b0 += w * dT * x, b1 += w * dT * y;
+    }
+    const double det = m00 * m11 - m01 * m01;
+    if (det > 1e-14 * (m00 * m11 + m01 * m01)) {
+      gradient_[2 * i] = (m11 * b0 - m01 * b1) / det;
+      gradient_[2 * i + 1] = (m00 * b1 - m01 * b0) / det;
+    }
+  });
+}
+
+void HeatAdvection::rate(const ThermalModel& model, double t, std::vector<double>& rate, std::vector<double>& boundary_heat) const {
   const auto& P = model.pairs();
   if (flux_.size() != P.pairs()) throw std::logic_error("HeatAdvection: one flux per pair expected");
+  const bool limited = scheme_ == AdvectionScheme::limited;
+  if (limited && P.vector.size() != 2 * P.pairs())
+    throw std::logic_error("HeatAdvection: the limited scheme needs the pairs' vectors");
+  if (limited) gradients(model);
   const auto& T = model.temperature();
+  const auto& boundary = model.boundary_ids();
   rate.assign(P.n_free, 0.0);
   boundary_heat.assign(model.boundaries().size(), 0.0);
-  const auto& boundary = model.boundary_ids();
-  particles::for_each_particle(P.n_free, [&](std::size_t i) {
-    double out = 0.0;
+  std::vector<double> wall(model.boundaries().size());
+  for (std::size_t b = 0; b < wall.size(); ++b) wall[b] = model.boundaries()[b].temperature.at(t);
+  // Each pair once: between free particles from its upstream end (Q > 0
+  // in that row), to a fixed particle in the free particle's row.
+  for (std::size_t i = 0; i < P.n_free; ++i)
     for (std::size_t e = P.row_start[i]; e < P.row_start[i + 1]; ++e) {
       const double Q = flux_[e];
-      out += Q * (Q > 0.0 ? T[i] : T[P.column[e]]);
+      const std::uint32_t j = P.column[e];
+      const bool fixed = j >= P.n_free;
+      if (fixed) {  // across the wall, at the wall's temperature
+        if (Q == 0.0) continue;
+        const std::size_t b = std::size_t(boundary[j]);
+        const double heat = rho_c_w_ * Q * wall[b];
+        rate[i] -= heat;
+        boundary_heat[b] -= heat;
+      } else if (Q > 0.0) {
+        double face = T[i];
+        const double jump = T[j] - T[i];
+        if (limited && jump != 0.0) {
+          const double r = 2.0 * (gradient_[2 * i] * P.vector[2 * e] + gradient_[2 * i + 1] * P.vector[2 * e + 1]) / jump - 1.0;
+          face += 0.5 * (r + std::abs(r)) / (1.0 + std::abs(r)) * jump;
+        }
+        const double heat = rho_c_w_ * Q * face;
+        rate[i] -= heat;
+        rate[j] += heat;
+      }
     }
-    rate[i] = -rho_c_w_ * out;
-  });
-  // What crosses into fixed particles enters or leaves the ground there.
-  for (std::size_t i = 0; i < P.n_free; ++i)
-    for (std::size_t e = P.row_start[i]; e < P.row_start[i + 1]; ++e)
-      if (const std::uint32_t j = P.column[e]; j >= P.n_free && flux_[e] != 0.0)
-        boundary_heat[std::size_t(boundary[j])] -= rho_c_w_ * flux_[e] * (flux_[e] > 0.0 ? T[i] : T[j]);
 }
 
-std::vector<double> HeatAdvection::advance(ThermalModel& model, double dt) {
+std::vector<double> HeatAdvection::advance(ThermalModel& model, double t, double dt) {
   std::vector<double> carried(model.boundaries().size(), 0.0);
   const double stable = stable_step(model);
   const long steps = std::isfinite(stable) ? std::max(1L, long(std::ceil(dt / stable - 1e-12))) : 1L;
   const double h = dt / double(steps);
+  const auto& H = model.enthalpy();
+  const auto& V = model.volume();
   for (long s = 0; s < steps; ++s) {
-    rate(model, rate_, heat_);
-    const auto& H = model.enthalpy();
-    const auto& V = model.volume();
+    // SSP Runge-Kutta 2: two Euler steps, then the mean with the start;
+    // each stage monotone, so the step is.
+    start_.assign(H.begin(), H.begin() + long(model.free_count()));
+    const double t0 = t + double(s) * h;
+    rate(model, t0, rate_, heat_);
+    for (std::size_t b = 0; b < carried.size(); ++b) carried[b] += 0.5 * h * heat_[b];
     model.update_free([&](std::size_t i) { return H[i] + h * rate_[i] / V[i]; });
-    for (std::size_t b = 0; b < carried.size(); ++b) carried[b] += h * heat_[b];
+    rate(model, t0 + h, rate_, heat_);
+    for (std::size_t b = 0; b < carried.size(); ++b) carried[b] += 0.5 * h * heat_[b];
+    model.update_free([&](std::size_t i) { return 0.5 * (start_[i] + H[i] + h * rate_[i] / V[i]); });
   }
   return carried;
 }

@@ -1,8 +1,19 @@
 // The heat that flowing groundwater carries, rho_w c_w div(q T), on the
 // conduction pairs with the Darcy solver's pair fluxes Q_e (i to j, m^2/s
-// per metre of depth; porous_flow/darcy_cloud.hpp). Pair e carries
-// rho_w c_w Q_e T_up out of i and into j, with T_up the upstream
-// particle's temperature (first-order upwind):
+// per metre of depth; porous_flow/darcy_cloud.hpp). Each pair's heat,
+// rho_w c_w |Q_e| T_face, is computed once, from its upstream end u to its
+// downstream end d, and taken from one and given to the other:
+//  - upwind: T_face = T_u (first order);
+//  - limited (default when the pairs carry their vectors): T_face =
+//    T_u + phi(r) (T_d - T_u) / 2, van Leer's limiter phi on the ratio
+//    r = 2 grad T_u . (x_d - x_u) / (T_d - T_u) - 1, grad T_u a least-
+//    squares fit over u's pairs: central (second order) where T is smooth,
+//    upwind at a sharp front.
+// A pair to a fixed particle crosses its boundary's wall (a pipe, the far
+// field, a face), where the temperature is the wall's: water crossing
+// there, in or out, carries the wall temperature at that time (a fixed
+// particle beyond the wall holds an extrapolated value instead).
+// Time: SSP Runge-Kutta 2, sub-stepped.
 //  - conservative: each pair's heat leaves one particle and enters the
 //    other (its mirror pair across a symmetry plane carries the opposite),
 //    and what crosses into fixed particles is the heat carried out of the
@@ -19,33 +30,42 @@
 
 namespace frostwall::thermal {
 
+enum class AdvectionScheme { upwind, limited };
+
 class HeatAdvection {
  public:
   // water_heat_capacity: rho_w c_w, J/(m3 K). pair_flux: Q_e for every
-  // pair of model.pairs() (0 for pairs without flow).
-  HeatAdvection(double water_heat_capacity, std::vector<double> pair_flux);
+  // pair of model.pairs() (0 for pairs without flow). `limited` needs the
+  // pairs' vectors (sph::LaplacianOptions::keep_vectors).
+  HeatAdvection(double water_heat_capacity, std::vector<double> pair_flux,
+                AdvectionScheme scheme = AdvectionScheme::limited);
 
   void set_pair_flux(std::vector<double> pair_flux) { flux_ = std::move(pair_flux); }
   const std::vector<double>& pair_flux() const { return flux_; }
 
   // The largest explicit step that keeps the update monotone: for every
   // free particle, V_i C_min / (rho_w c_w sum of its inflows), C_min the
-  // law's smaller sensible capacity (latent heat only slows a particle).
+  // law's smaller sensible capacity (latent heat only slows a particle);
+  // half that with the limiter (its face values reach twice as far).
   double stable_step(const ThermalModel& model) const;
 
   // V_i dH_i/dt for the free particles (W per metre), and the heat the
   // water carries into the ground from each boundary (W per metre; out is
   // negative).
-  void rate(const ThermalModel& model, std::vector<double>& rate, std::vector<double>& boundary_heat) const;
+  // (Wall temperatures at time t.)
+  void rate(const ThermalModel& model, double t, std::vector<double>& rate, std::vector<double>& boundary_heat) const;
 
-  // Advances the enthalpy by dt in as many equal stable steps as needed;
-  // returns the heat carried in from each boundary, J per metre.
-  std::vector<double> advance(ThermalModel& model, double dt);
+  // Advances the enthalpy from t by dt in as many equal stable steps as
+  // needed; returns the heat carried in from each boundary, J per metre.
+  std::vector<double> advance(ThermalModel& model, double t, double dt);
 
  private:
+  void gradients(const ThermalModel& model) const;
   double rho_c_w_;
   std::vector<double> flux_;
-  std::vector<double> rate_, heat_;
+  AdvectionScheme scheme_;
+  mutable std::vector<double> gradient_;  // 2 per free particle
+  std::vector<double> rate_, heat_, start_;
 };
 
 }  // namespace frostwall::thermal
