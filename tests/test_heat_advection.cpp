@@ -18,6 +18,7 @@
 #include "sph/wall_extrapolation.hpp"
 #include "thermal/heat_advection.hpp"
 #include "thermal/integrator.hpp"
+#include "no_phase_change_soil.hpp"
 
 using namespace frostwall;
 using particles::Vec;
@@ -28,16 +29,6 @@ constexpr double L = 1.0, W = 0.1;
 constexpr double lambda = 2.0, rho_c = 2.0e6, rho_c_w = 4.2e6;  // W/(m K), J/(m3 K)
 constexpr double T0 = 0.0, T1 = 1.0;
 
-project::Soil plain_soil() {
-  project::Soil soil;
-  soil.name = "test";
-  soil.density = 2000.0;
-  soil.unfrozen = {{lambda, lambda}, rho_c / 2000.0};
-  soil.frozen = soil.unfrozen;
-  soil.latent_heat = 0.0;
-  soil.freezing_point = -100.0;  // never reached
-  return soil;
-}
 
 struct Strip {
   particles::ParticleSet<2> cloud;
@@ -72,7 +63,7 @@ Strip make_strip(double s, double q, double initial) {
   std::vector<thermal::FixedTemperatureBoundary> faces = {{"inflow", project::TemperatureSchedule::fixed(T0)},
                                                           {"outflow", project::TemperatureSchedule::fixed(T1)}};
   strip.model = std::make_unique<thermal::ThermalModel>(cloud.volume, cloud.boundary, strip.pairs,
-                                                        thermal::PhaseChangeLaw(plain_soil()), faces,
+                                                        thermal::PhaseChangeLaw(test::no_phase_change_soil("test", lambda, rho_c)), faces,
                                                         thermal::ConductionOptions{}, initial,
                                                         sph::build_wall_extrapolation<2>(cloud, kernel, h));
   return strip;

@@ -18,6 +18,7 @@
 #include "sph/laplacian.hpp"
 #include "thermal/heat_advection.hpp"
 #include "thermal/integrator.hpp"
+#include "no_phase_change_soil.hpp"
 
 using namespace frostwall;
 using particles::Vec;
@@ -41,15 +42,6 @@ double exact_rise(const Vec<2>& x, double t) {
   return q_L / (4.0 * std::numbers::pi * lambda) * std::exp(v * x[0] / (2.0 * a)) * sum * (top - bottom) / n;
 }
 
-project::Soil ground() {
-  project::Soil soil;
-  soil.name = "OGS moving line source";
-  soil.density = 2000.0;
-  soil.unfrozen = {{lambda, lambda}, rho_c / 2000.0};
-  soil.frozen = soil.unfrozen;
-  soil.freezing_point = -100.0;  // no phase change
-  return soil;
-}
 
 // Runs the case on a lattice of spacing s (rows half a spacing off the
 // axes, so two particles straddle the line); returns the relative error at
@@ -72,7 +64,8 @@ std::vector<double> line_source_errors(double s, std::string& log) {
   for (std::size_t j = cloud.n_free; j < cloud.size(); ++j) far.push_back(-q * cloud.position[j][0]);
   porous_flow::DarcyCloud darcy(pairs, cloud.volume, far);
   darcy.solve(std::vector<double>(cloud.size(), 1.0));
-  thermal::ThermalModel model(cloud.volume, cloud.boundary, pairs, thermal::PhaseChangeLaw(ground()),
+  const thermal::PhaseChangeLaw ground(test::no_phase_change_soil("OGS moving line source", lambda, rho_c));
+  thermal::ThermalModel model(cloud.volume, cloud.boundary, pairs, ground,
                               {{"far_field", project::TemperatureSchedule::fixed(0.0)}}, thermal::ConductionOptions{}, 0.0);
   thermal::HeatAdvection water(rho_c_w, darcy.pair_flux());
   thermal::ExplicitEuler conduction(0.1, h);
