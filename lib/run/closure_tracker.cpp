@@ -19,7 +19,7 @@ void ClosureTracker::after_step(const thermal::ThermalModel& model, double t) {
   watch_.observe(t, latent_left_, check_interval_);
   // Only RKL2 takes steps long enough to matter (the implicit integrator
   // holds a quarter of the latent heat per step, explicit ones are short).
-  if (auto* rkl2 = dynamic_cast<thermal::SuperTimeStepping*>(model_.integrator.get())) {
+  if (auto* rkl2 = thermal::find_integrator<thermal::SuperTimeStepping>(model_.integrator.get())) {
     const auto resolve = watch_.time_to_fall(step_fall);
     rkl2->limit_step(resolve ? std::min(*resolve, longest_step_) : longest_step_);
   }

@@ -75,12 +75,20 @@ Model build_model(const project::Project& p) {
     const auto& section = std::get<project::ShaftSection>(p.geometry);
     if (const auto problems = geometry::layout_problems(section); !problems.empty())
       throw project::ProjectError(problems);
-    const auto wedge = symmetry_wedge(section);
+    // Flowing groundwater keeps only a mirror line along the flow.
+    std::string seepage_note;
+    const auto wedge = p.groundwater && p.groundwater->speed() > 0.0
+                           ? geometry::find_flow_symmetry_wedge(geometry::pipe_positions(section.layout),
+                                                                std::atan2(p.groundwater->darcy_flux[1], p.groundwater->darcy_flux[0]),
+                                                                geometry::default_symmetry_tolerance(geometry::pipe_positions(section.layout)),
+                                                                seepage_note)
+                           : symmetry_wedge(section);
     auto scene = std::make_unique<geometry::ShaftScene>(
         graded ? geometry::build_graded_shaft_section(
                      section, p.domain, wedge, geometry::shaft_size_field(section, wedge, spacing, p.numerics.grading),
                      p.numerics.smoothing_ratio)
                : geometry::build_shaft_section(section, p.domain, wedge, spacing, m.h));
+    if (!seepage_note.empty()) scene->notes.push_back(seepage_note);
     scene->notes.push_back(geometry::describe(wedge));
     if (!p.numerics.use_symmetry) {
       geometry::unfold_to_full_ring(*scene);
@@ -101,7 +109,8 @@ Model build_model(const project::Project& p) {
           ? pd::build_conduction_bonds(m.particles(), {p.numerics.horizon * spacing,
                                                        p.numerics.laplacian == project::LaplacianForm::renormalised})
           : sph::build_laplacian_pairs<2>(m.particles(), *m.kernel,
-                                          {m.smoothing, p.numerics.laplacian, law.anisotropic(), m.particles().graded()});
+                                          {m.smoothing, p.numerics.laplacian, law.anisotropic(), m.particles().graded(),
+                                           p.groundwater.has_value()});  // the water's heat needs the pairs' vectors
   m.model = std::make_unique<thermal::ThermalModel>(
       m.particles().volume, m.particles().boundary, std::move(pairs), law, m.scene->boundaries,
       thermal::ConductionOptions{p.numerics.conductivity_mean, p.numerics.laplacian}, p.domain.initial_temperature,

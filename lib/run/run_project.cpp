@@ -16,6 +16,7 @@
 #include "thermal/backward_euler.hpp"
 #include "thermal/super_time_stepping.hpp"
 #include "run/frost_results.hpp"
+#include "run/groundwater_flow.hpp"
 #include "run/mechanics_run.hpp"
 #include "run/plain_results.hpp"
 #include "run/shaft_results.hpp"
@@ -140,12 +141,10 @@ void check_output_directory(const std::string& directory) {
 
 void run_project(const Project& p, const RunOptions& options) {
   if (p.cfd_dem) return run_cfd_dem(p, options);
-  // Issue 17 is under way: the flow solver and the permeability laws exist
-  // (lib/porous_flow), the heat they carry is not coupled into the run yet.
-  // Refused rather than silently run as still water.
-  if (p.groundwater)
-    throw project::ProjectError({"groundwater: flowing groundwater is not coupled to the heat yet in this version; "
-                                 "remove the block to run with still water"});
+  // The regional flow is held on the far field: an adiabatic one has none.
+  if (p.groundwater && !p.domain.far_field_temperature)
+    throw project::ProjectError({"groundwater: needs domain.far_field_temperature (the far field holds the regional flow "
+                                 "and the temperature of the water that enters)"});
   const auto wall_start = std::chrono::steady_clock::now();
   auto note = [&](const std::string& s) {
     if (options.note) options.note(s);
@@ -178,6 +177,14 @@ void run_project(const Project& p, const RunOptions& options) {
   // wall thickness.
   const double longest_step = p.time.end / time_series_points;
   if (auto* rkl2 = dynamic_cast<thermal::SuperTimeStepping*>(built.integrator.get())) rkl2->limit_step(longest_step);
+  // Flowing groundwater: the conduction integrator wrapped with the flow
+  // and the heat it carries.
+  GroundwaterFlow* flow = nullptr;
+  if (p.groundwater) {
+    auto wrapped = std::make_unique<GroundwaterFlow>(*p.groundwater, built);
+    flow = wrapped.get();
+    built.integrator = std::move(wrapped);
+  }
   // Closure of a shaft section (a fully frozen path) and the day the frozen
   // columns touch: checked 2000 times over the run while the gap is open,
   // at every step once it freezes.
@@ -309,15 +316,23 @@ void run_project(const Project& p, const RunOptions& options) {
         {"time_unit", p.time.unit == project::TimeUnit::s ? "s" : (p.time.unit == project::TimeUnit::h ? "h" : "d")}}},
       {"warnings", p.warnings},
   });
-  if (const auto* implicit = dynamic_cast<const thermal::BackwardEuler*>(built.integrator.get())) {
+  if (const auto* implicit = thermal::find_integrator<thermal::BackwardEuler>(built.integrator.get())) {
     const auto& stats = implicit->statistics();
     summary["run"]["newton_iterations"] = stats.newton_iterations;
     summary["run"]["linear_iterations"] = stats.linear_iterations;
     summary["run"]["step_halvings"] = stats.halvings;
   }
-  if (const auto* rkl2 = dynamic_cast<const thermal::SuperTimeStepping*>(built.integrator.get()))
+  if (const auto* rkl2 = thermal::find_integrator<thermal::SuperTimeStepping>(built.integrator.get()))
     summary["run"]["stages"] = rkl2->statistics().stages;
   if (mechanics) summary["run"]["mechanics"] = mechanics->facts();
+  if (flow) {
+    const auto& g = *p.groundwater;
+    summary["groundwater"] = {{"darcy_flux_m_per_day", {g.darcy_flux[0] * 86400.0, g.darcy_flux[1] * 86400.0}},
+                              {"permeability_law", g.law.name()},
+                              {"impedance", g.law.model == porous_flow::PermeabilityModel::impedance ? nlohmann::json(g.law.impedance) : nlohmann::json(nullptr)},
+                              {"floor", g.law.floor},
+                              {"flow_solves", flow->flow_solves()}};
+  }
   io::write_text_file(out / "summary.json", summary.dump(2) + "\n");
   if (p.output.report) report::write_report(out);  // from the files just written
 }

@@ -20,7 +20,18 @@ class Integrator {
   // particles from each boundary during the step, J.
   virtual std::vector<double> advance(ThermalModel& model, double t, double dt) = 0;
   virtual const char* name() const = 0;
+  // A wrapper (flowing groundwater around the conduction) returns what it
+  // wraps, so step limits and statistics reach the conduction integrator.
+  virtual Integrator* wrapped() const { return nullptr; }
 };
+
+// The integrator of type T in a chain of wrappers, or nullptr.
+template <class T>
+T* find_integrator(Integrator* integrator) {
+  for (; integrator; integrator = integrator->wrapped())
+    if (auto* found = dynamic_cast<T*>(integrator)) return found;
+  return nullptr;
+}
 
 // Forward Euler with the paper's step dt = beta h^2 / alpha_max (its eq. 10
 // prints k where the diffusivity alpha = k / (rho C) is meant).

@@ -1,0 +1,73 @@
+#include "run/groundwater_flow.hpp"
+
+#include <cmath>
+
+#include "porous_flow/darcy_velocity.hpp"
+#include "run/model.hpp"
+
+namespace frostwall::run {
+
+namespace {
+
+// The potential each fixed particle holds: -q . x on the far field, none
+// (no flow) on the pipes.
+std::vector<double> fixed_potentials(const project::Groundwater& water, const Model& m) {
+  const auto& P = m.particles();
+  std::vector<double> fixed;
+  for (std::size_t j = P.n_free; j < P.size(); ++j)
+    fixed.push_back(P.boundary[j] == m.shaft->far_field_boundary
+                        ? -(water.darcy_flux[0] * P.position[j][0] + water.darcy_flux[1] * P.position[j][1])
+                        : std::nan(""));
+  return fixed;
+}
+
+}  // namespace
+
+GroundwaterFlow::GroundwaterFlow(const project::Groundwater& water, Model& m)
+    : water_(water),
+      built_(m),
+      conduction_(std::move(m.integrator)),
+      name_(std::string(conduction_->name()) + "+groundwater"),
+      darcy_(m.model->pairs(), m.particles().volume, fixed_potentials(water, m)),
+      heat_(water.water_density * water.water_heat_capacity, {}),
+      k_(m.particles().size(), 1.0) {
+  solve_if_changed(*m.model);
+}
+
+void GroundwaterFlow::solve_if_changed(const thermal::ThermalModel& model) {
+  if (water_.speed() == 0.0 && solves_ > 0) return;  // still water: the potential stays 0
+  const auto& f = model.liquid_fraction();
+  bool changed = k_solved_.empty();
+  for (std::size_t i = 0; i < model.free_count(); ++i) {
+    k_[i] = water_.law.relative(f[i]);
+    if (!changed && std::abs(std::log(k_[i] / k_solved_[i])) > std::log1p(water_.resolve_tolerance)) changed = true;
+  }
+  if (!changed) return;
+  darcy_.solve(k_);
+  heat_.set_pair_flux(darcy_.pair_flux());
+  k_solved_ = k_;
+  ++solves_;
+}
+
+double GroundwaterFlow::preferred_step(const thermal::ThermalModel& model) const {
+  const double conduction = conduction_->preferred_step(model);
+  if (water_.speed() == 0.0) return conduction;
+  return std::min(conduction, courant_ * heat_.stable_step(model));
+}
+
+std::vector<double> GroundwaterFlow::advance(thermal::ThermalModel& model, double t, double dt) {
+  if (water_.speed() == 0.0) return conduction_->advance(model, t, dt);  // still water carries nothing
+  solve_if_changed(model);
+  auto heat = heat_.advance(model, t, 0.5 * dt);
+  const auto conducted = conduction_->advance(model, t, dt);
+  const auto carried = heat_.advance(model, t + 0.5 * dt, 0.5 * dt);
+  for (std::size_t b = 0; b < heat.size(); ++b) heat[b] += conducted[b] + carried[b];
+  return heat;
+}
+
+std::vector<particles::Vec<2>> GroundwaterFlow::darcy_flux() const {
+  // psi = K_sat h is in m^2/s when q is in m/s: its gradient is the flux.
+  return porous_flow::darcy_flux_at_particles(built_.particles(), darcy_.potential(), k_, 2.0 * built_.smoothing.largest());
+}
+
+}  // namespace frostwall::run

@@ -1,0 +1,55 @@
+// Groundwater flowing through a freezing shaft section (issue 17): the
+// steady Darcy flow on the run's own particle pairs, the heat it carries,
+// and the two alternated with the conduction (Strang: half the water's
+// heat, the conduction integrator's step, the other half). The flow is
+// solved again when ice has changed some particle's permeability by more
+// than groundwater.resolve_tolerance since the last solve. Pipes carry no
+// flow; the far field holds the regional potential -q . x. An Integrator
+// itself, so the time loop, closure and energy balance see one step.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "porous_flow/darcy_cloud.hpp"
+#include "project/project.hpp"
+#include "thermal/heat_advection.hpp"
+#include "thermal/integrator.hpp"
+
+namespace frostwall::run {
+
+struct Model;
+
+class GroundwaterFlow final : public thermal::Integrator {
+ public:
+  // Takes over the model's conduction integrator.
+  GroundwaterFlow(const project::Groundwater& water, Model& model);
+  // The conduction's step, and no longer than the water takes to carry heat
+  // across a particle (advective Courant number 1): the splitting's error
+  // grows with the distance the heat front moves within one step.
+  double preferred_step(const thermal::ThermalModel& model) const override;
+  std::vector<double> advance(thermal::ThermalModel& model, double t, double dt) override;
+  const char* name() const override { return name_.c_str(); }
+  Integrator* wrapped() const override { return conduction_.get(); }
+
+  int flow_solves() const { return solves_; }
+  // The Darcy flux at every free particle now, m/s.
+  std::vector<particles::Vec<2>> darcy_flux() const;
+
+ private:
+  void solve_if_changed(const thermal::ThermalModel& model);
+  const project::Groundwater& water_;
+  const Model& built_;
+  std::unique_ptr<thermal::Integrator> conduction_;
+  std::string name_;
+  porous_flow::DarcyCloud darcy_;
+  thermal::HeatAdvection heat_;
+  std::vector<double> k_, k_solved_;
+  int solves_ = 0;
+  // Steps of the limited scheme's stable step per splitting step (2: the
+  // heat front crosses about one particle a step).
+  double courant_ = 2.0;
+};
+
+}  // namespace frostwall::run

@@ -1,0 +1,66 @@
+// Issue 17 through the command line, on a scaled shaft (6 pipes on a
+// 0.8 m ring, 2.5 m domain, 5 cm lattice; closes in about 4 days in still
+// water): a groundwater block with no flow is still water to the last
+// digit; flowing water delays closure more the faster it flows; the heat
+// balance, with what the water carries in and out, closes to round-off.
+#include <catch2/catch.hpp>
+#include <fmt/core.h>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "temp_dir.hpp"
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+json scaled_ring(const json& flux) {
+  json p = {{"name", "scaled ring under seepage"},
+            {"layout", {{"pattern", "single"}, {"outer_ring", {{"radius", 0.8}, {"count", 6}, {"start_angle_deg", 0.0}}}}},
+            {"shaft", {{"excavation_radius", 0.5}}},
+            {"pipe", {{"diameter", 0.127}, {"temperature", -20.0}}},
+            {"soil", "sand"},
+            {"domain", {{"outer_radius", 2.5}, {"initial_temperature", 10.0}, {"far_field", {{"temperature", 10.0}}}}},
+            {"time", {{"end", 8}, {"unit", "d"}, {"snapshots", {8}}}},
+            {"numerics", {{"placement", "lattice"}, {"spacing", 0.05}}},
+            {"output", {{"directory", "out"}, {"vtk", false}, {"report", false}}}};
+  if (!flux.is_null())
+    p["groundwater"] = {{"hydraulic_conductivity", 1e-4}, {"porosity", 0.35}, {"darcy_flux", flux}, {"unit", "m/d"}};
+  return p;
+}
+
+json run(const json& project) {
+  frostwall::test::TempDir dir;
+  std::ofstream(dir.path / "p.json") << project.dump(2);
+  const std::string line = "cd '" + dir.path.string() + "' && '" FROSTWALL_EXE "' run p.json > log.txt 2>&1";
+  const int status = std::system(line.c_str());
+  REQUIRE(WIFEXITED(status));
+  REQUIRE(WEXITSTATUS(status) == 0);
+  std::ifstream in(dir.path / "out" / "summary.json");
+  return json::parse(in);
+}
+
+double closure(const json& s) { return s["closure_time_days"].is_null() ? 1e9 : s["closure_time_days"].get<double>(); }
+
+}  // namespace
+
+TEST_CASE("Groundwater without flow is still water; flowing water delays closure", "[groundwater][cli]") {
+  const json still = run(scaled_ring(nullptr)), zero = run(scaled_ring({0.0, 0.0}));
+  const json slow = run(scaled_ring({0.5, 0.0})), fast = run(scaled_ring({1.0, 0.0}));
+  WARN(fmt::format("closure {:.3f} / {:.3f} / {:.3f} / {:.3f} d (none, 0, 0.5, 1 m/d)", closure(still), closure(zero),
+                   closure(slow), closure(fast)));
+  CHECK(closure(zero) == closure(still));
+  CHECK(zero["run"]["steps"] == still["run"]["steps"]);
+  CHECK(closure(slow) > closure(still));
+  CHECK(closure(fast) > closure(slow));
+  CHECK(fast["groundwater"]["permeability_law"] == "impedance");
+  CHECK(fast["groundwater"]["flow_solves"].get<int>() > 1);  // solved again as the ground froze
+  CHECK(fast["wedge"]["mirror_lines"] == 1);                 // only the line along the flow
+  for (const json* s : {&slow, &fast}) {
+    const auto& balance = (*s)["heat_balance"];
+    double brought = 0.0;
+    for (const auto& [name, heat] : balance["from_boundaries"].items()) brought += heat.get<double>();
+    CHECK(balance["stored_change"].get<double>() == Approx(brought).epsilon(1e-9));
+  }
+}
