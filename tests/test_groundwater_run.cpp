@@ -45,7 +45,7 @@ double closure(const json& s) { return s["closure_time_days"].is_null() ? 1e9 : 
 
 }  // namespace
 
-TEST_CASE("Groundwater without flow is still water; flowing water delays closure", "[groundwater][cli]") {
+TEST_CASE("Groundwater without flow is still water, and flowing water delays closure", "[groundwater][cli]") {
   const json still = run(scaled_ring(nullptr)), zero = run(scaled_ring({0.0, 0.0}));
   const json slow = run(scaled_ring({0.5, 0.0})), fast = run(scaled_ring({1.0, 0.0}));
   WARN(fmt::format("closure {:.3f} / {:.3f} / {:.3f} / {:.3f} d (none, 0, 0.5, 1 m/d)", closure(still), closure(zero),

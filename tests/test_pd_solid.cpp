@@ -112,7 +112,7 @@ TEST_CASE("PD solid: a plate cooled by 9 K on rollers takes the exact plane-stra
   }
 }
 
-TEST_CASE("PD solid: free thermal expansion breaks nothing; overstretched bonds break", "[pd][mechanics]") {
+TEST_CASE("PD solid: free thermal expansion breaks nothing, overstretched bonds break", "[pd][mechanics]") {
   const double L = 0.01, dx = L / 20;
   auto m = plate_mechanics();
   m.material.fracture_energy = 1e-6;  // a critical stretch far below the thermal one

@@ -210,7 +210,7 @@ TEST_CASE("rectangles: the Neumann strip and the soil column", "[project]") {
   CHECK(column.soil.latent_heat == 33500.0);
 }
 
-TEST_CASE("measured pipes, anisotropic soil, adiabatic far field; free rings", "[project]") {
+TEST_CASE("measured pipes, anisotropic soil, adiabatic far field, free rings", "[project]") {
   const Project p = load_valid("measured_pipes.json");
   const auto& s = std::get<ShaftSection>(p.geometry);
   CHECK(s.layout.pattern == Pattern::pipes);

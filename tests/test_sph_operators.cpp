@@ -206,7 +206,7 @@ sph::MomentSystem<2> shaken_square_system(int m) {
 }
 }  // namespace
 
-TEST_CASE("Two-level block CG agrees with a direct solve; its iterations do not grow with the cloud", "[sph]") {
+TEST_CASE("Two-level block CG agrees with a direct solve, and its iterations do not grow with the cloud", "[sph]") {
   int iterations[2];
   const int sizes[2] = {30, 90};
   for (int s = 0; s < 2; ++s) {
