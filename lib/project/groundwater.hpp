@@ -28,9 +28,8 @@ struct Groundwater {
   // changed by this factor since the last solve (0.1: 10 %).
   double resolve_tolerance = 0.1;
 
-  double speed() const;                          // |q|, m/s
-  double conductivity_of(double k_m2) const;     // K from k
-  double permeability_m2() const;                // k, m^2
+  double speed() const;            // |q|, m/s
+  double permeability_m2() const;  // k, m^2 (from K when K was given)
 };
 
 }  // namespace frostwall::project

@@ -7,8 +7,6 @@ namespace frostwall::project {
 
 double Groundwater::speed() const { return std::hypot(darcy_flux[0], darcy_flux[1]); }
 
-double Groundwater::conductivity_of(double k_m2) const { return k_m2 * water_density * 9.81 / water_viscosity; }
-
 double Groundwater::permeability_m2() const {
   if (permeability) return *permeability;
   return hydraulic_conductivity.value_or(0.0) * water_viscosity / (water_density * 9.81);

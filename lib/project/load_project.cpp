@@ -453,7 +453,7 @@ Project read_project(const Node& root) {
     else {
       project.groundwater = detail::read_groundwater(water);
       project.warnings.push_back(
-          "groundwater: the coupling is new (issue 17 in progress): beside frozen ground the flow is within about 7 %, "
+          "groundwater: the coupling is new (issue 17 in progress): beside frozen ground the flow is 7-9 % off, "
           "not the 2 % asked; closure per gap and the upstream/downstream wall are not reported yet");
     }
   }

@@ -2,7 +2,6 @@
 
 #include <cmath>
 
-#include "porous_flow/darcy_velocity.hpp"
 #include "run/model.hpp"
 
 namespace frostwall::run {
@@ -25,7 +24,6 @@ std::vector<double> fixed_potentials(const project::Groundwater& water, const Mo
 
 GroundwaterFlow::GroundwaterFlow(const project::Groundwater& water, Model& m)
     : water_(water),
-      built_(m),
       conduction_(std::move(m.integrator)),
       name_(std::string(conduction_->name()) + "+groundwater"),
       darcy_(m.model->pairs(), m.particles().volume, fixed_potentials(water, m)),
@@ -63,11 +61,6 @@ std::vector<double> GroundwaterFlow::advance(thermal::ThermalModel& model, doubl
   const auto carried = heat_.advance(model, t + 0.5 * dt, 0.5 * dt);
   for (std::size_t b = 0; b < heat.size(); ++b) heat[b] += conducted[b] + carried[b];
   return heat;
-}
-
-std::vector<particles::Vec<2>> GroundwaterFlow::darcy_flux() const {
-  // psi = K_sat h is in m^2/s when q is in m/s: its gradient is the flux.
-  return porous_flow::darcy_flux_at_particles(built_.particles(), darcy_.potential(), k_, 2.0 * built_.smoothing.largest());
 }
 
 }  // namespace frostwall::run

@@ -34,13 +34,10 @@ class GroundwaterFlow final : public thermal::Integrator {
   Integrator* wrapped() const override { return conduction_.get(); }
 
   int flow_solves() const { return solves_; }
-  // The Darcy flux at every free particle now, m/s.
-  std::vector<particles::Vec<2>> darcy_flux() const;
 
  private:
   void solve_if_changed(const thermal::ThermalModel& model);
   const project::Groundwater& water_;
-  const Model& built_;
   std::unique_ptr<thermal::Integrator> conduction_;
   std::string name_;
   porous_flow::DarcyCloud darcy_;

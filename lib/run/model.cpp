@@ -77,12 +77,13 @@ Model build_model(const project::Project& p) {
       throw project::ProjectError(problems);
     // Flowing groundwater keeps only a mirror line along the flow.
     std::string seepage_note;
-    const auto wedge = p.groundwater && p.groundwater->speed() > 0.0
-                           ? geometry::find_flow_symmetry_wedge(geometry::pipe_positions(section.layout),
-                                                                std::atan2(p.groundwater->darcy_flux[1], p.groundwater->darcy_flux[0]),
-                                                                geometry::default_symmetry_tolerance(geometry::pipe_positions(section.layout)),
-                                                                seepage_note)
-                           : symmetry_wedge(section);
+    geometry::Wedge wedge = symmetry_wedge(section);
+    if (p.groundwater && p.groundwater->speed() > 0.0) {
+      const auto pipes = geometry::pipe_positions(section.layout);
+      const auto& q = p.groundwater->darcy_flux;
+      wedge = geometry::find_flow_symmetry_wedge(pipes, std::atan2(q[1], q[0]), geometry::default_symmetry_tolerance(pipes),
+                                                 seepage_note);
+    }
     auto scene = std::make_unique<geometry::ShaftScene>(
         graded ? geometry::build_graded_shaft_section(
                      section, p.domain, wedge, geometry::shaft_size_field(section, wedge, spacing, p.numerics.grading),

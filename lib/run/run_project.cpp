@@ -328,6 +328,7 @@ void run_project(const Project& p, const RunOptions& options) {
   if (flow) {
     const auto& g = *p.groundwater;
     summary["groundwater"] = {{"darcy_flux_m_per_day", {g.darcy_flux[0] * 86400.0, g.darcy_flux[1] * 86400.0}},
+                              {"permeability_m2", g.permeability_m2()},
                               {"permeability_law", g.law.name()},
                               {"impedance", g.law.model == porous_flow::PermeabilityModel::impedance ? nlohmann::json(g.law.impedance) : nlohmann::json(nullptr)},
                               {"floor", g.law.floor},

@@ -5,12 +5,15 @@
 #include <limits>
 #include <stdexcept>
 
+#include "particles/pair_gradient.hpp"
+
 namespace frostwall::thermal {
 
 HeatAdvection::HeatAdvection(double water_heat_capacity, std::vector<double> pair_flux, AdvectionScheme scheme)
     : rho_c_w_(water_heat_capacity), flux_(std::move(pair_flux)), scheme_(scheme) {}
 
 double HeatAdvection::stable_step(const ThermalModel& model) const {
+  if (stable_ >= 0.0) return stable_;  // fixed until the fluxes change
   const auto& P = model.pairs();
   double step = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < P.n_free; ++i) {
@@ -18,36 +21,15 @@ double HeatAdvection::stable_step(const ThermalModel& model) const {
     for (std::size_t e = P.row_start[i]; e < P.row_start[i + 1]; ++e) inflow += std::max(0.0, -flux_[e]);
     if (inflow > 0.0) step = std::min(step, model.volume()[i] * model.law_of(i).smallest_heat_capacity() / (rho_c_w_ * inflow));
   }
-  return scheme_ == AdvectionScheme::limited ? 0.5 * step : step;
-}
-
-// Least-squares temperature gradient of each free particle over its pairs
-// (weights G_e): exact for a linear field, one-sided supports included.
-void HeatAdvection::gradients(const ThermalModel& model) const {
-  const auto& P = model.pairs();
-  const auto& T = model.temperature();
-  gradient_.assign(2 * P.n_free, 0.0);
-  particles::for_each_particle(P.n_free, [&](std::size_t i) {
-    double m00 = 0.0, m01 = 0.0, m11 = 0.0, b0 = 0.0, b1 = 0.0;
-    for (std::size_t e = P.row_start[i]; e < P.row_start[i + 1]; ++e) {
-      const double w = P.weight[e], x = P.vector[2 * e], y = P.vector[2 * e + 1], dT = T[P.column[e]] - T[i];
-      m00 += w * x * x, m01 += w * x * y, m11 += w * y * y, b0 += w * dT * x, b1 += w * dT * y;
-    }
-    const double det = m00 * m11 - m01 * m01;
-    if (det > 1e-14 * (m00 * m11 + m01 * m01)) {
-      gradient_[2 * i] = (m11 * b0 - m01 * b1) / det;
-      gradient_[2 * i + 1] = (m00 * b1 - m01 * b0) / det;
-    }
-  });
+  stable_ = scheme_ == AdvectionScheme::limited ? 0.5 * step : step;
+  return stable_;
 }
 
 void HeatAdvection::rate(const ThermalModel& model, double t, std::vector<double>& rate, std::vector<double>& boundary_heat) const {
   const auto& P = model.pairs();
   if (flux_.size() != P.pairs()) throw std::logic_error("HeatAdvection: one flux per pair expected");
   const bool limited = scheme_ == AdvectionScheme::limited;
-  if (limited && P.vector.size() != 2 * P.pairs())
-    throw std::logic_error("HeatAdvection: the limited scheme needs the pairs' vectors");
-  if (limited) gradients(model);
+  if (limited) particles::pair_gradient(P, model.temperature(), gradient_);
   const auto& T = model.temperature();
   const auto& boundary = model.boundary_ids();
   rate.assign(P.n_free, 0.0);

@@ -40,7 +40,10 @@ class HeatAdvection {
   HeatAdvection(double water_heat_capacity, std::vector<double> pair_flux,
                 AdvectionScheme scheme = AdvectionScheme::limited);
 
-  void set_pair_flux(std::vector<double> pair_flux) { flux_ = std::move(pair_flux); }
+  void set_pair_flux(std::vector<double> pair_flux) {
+    flux_ = std::move(pair_flux);
+    stable_ = -1.0;
+  }
   const std::vector<double>& pair_flux() const { return flux_; }
 
   // The largest explicit step that keeps the update monotone: for every
@@ -60,11 +63,11 @@ class HeatAdvection {
   std::vector<double> advance(ThermalModel& model, double t, double dt);
 
  private:
-  void gradients(const ThermalModel& model) const;
   double rho_c_w_;
   std::vector<double> flux_;
   AdvectionScheme scheme_;
-  mutable std::vector<double> gradient_;  // 2 per free particle
+  mutable std::vector<double> gradient_;  // of T, 2 per free particle
+  mutable double stable_ = -1.0;          // stable_step() for these fluxes (< 0: not yet found)
   std::vector<double> rate_, heat_, start_;
 };
 
