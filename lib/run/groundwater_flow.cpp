@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "porous_flow/darcy_velocity.hpp"
 #include "run/model.hpp"
 
 namespace frostwall::run {
@@ -61,6 +62,18 @@ std::vector<double> GroundwaterFlow::advance(thermal::ThermalModel& model, doubl
   const auto carried = heat_.advance(model, t + 0.5 * dt, 0.5 * dt);
   for (std::size_t b = 0; b < heat.size(); ++b) heat[b] += conducted[b] + carried[b];
   return heat;
+}
+
+void GroundwaterFlow::add_fields(io::PointCloudFrame& frame, const thermal::ThermalModel& model) const {
+  const std::size_t n = frame.points.size();
+  std::vector<double> flux(3 * n, 0.0), k(n, 1.0);
+  if (!darcy_.potential().empty()) {
+    const auto q = porous_flow::darcy_flux_at_particles(model.pairs(), darcy_.potential(), k_solved_);
+    for (std::size_t i = 0; i < q.size(); ++i) flux[3 * i] = q[i][0], flux[3 * i + 1] = q[i][1];
+    for (std::size_t i = 0; i < std::min(n, k_solved_.size()); ++i) k[i] = k_solved_[i];
+  }
+  frame.vectors.emplace_back("darcy_flux", std::move(flux));
+  frame.fields.emplace_back("relative_permeability", std::move(k));
 }
 
 }  // namespace frostwall::run

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "io/point_cloud_vtk.hpp"
 #include "porous_flow/darcy_cloud.hpp"
 #include "project/project.hpp"
 #include "thermal/heat_advection.hpp"
@@ -34,6 +35,9 @@ class GroundwaterFlow final : public thermal::Integrator {
   Integrator* wrapped() const override { return conduction_.get(); }
 
   int flow_solves() const { return solves_; }
+  // The VTU's flow fields at the last solve: "darcy_flux" (m/s, a vector;
+  // 0 on fixed particles) and "relative_permeability".
+  void add_fields(io::PointCloudFrame& frame, const thermal::ThermalModel& model) const;
 
  private:
   void solve_if_changed(const thermal::ThermalModel& model);

@@ -255,6 +255,7 @@ void run_project(const Project& p, const RunOptions& options) {
       auto frame = frame_of(particles, m);
       if (mechanics) add_mechanics(frame, *mechanics);
       if (frost) frost->add_fields(frame, m);
+      if (flow) flow->add_fields(frame, m);
       io::write_vtu(out / (stems[k] + ".vtu"), frame);
       pvd.push_back({t / unit, stems[k] + ".vtu"});
       if (write_ring) {
