@@ -64,6 +64,22 @@ TEST_CASE("Groundwater without flow is still water, and flowing water delays clo
   CHECK(fast["groundwater"]["permeability_law"] == "impedance");
   CHECK(fast["groundwater"]["flow_solves"].get<int>() > 1);  // solved again as the ground froze
   CHECK(fast["wedge"]["mirror_lines"] == 1);                 // only the line along the flow
+  // Closure per gap: a frozen straight bridge is one frozen path, so no gap
+  // closes before the wall (any path); in still water the one gap of the
+  // wedge closes within a few percent of it (particle level against the
+  // detector's sub-particle saddle). Under seepage the gap facing the flow
+  // closes last, and the wall with it.
+  const auto& calm_gap = zero["groundwater"]["last_gap"];
+  REQUIRE(calm_gap["closure_day"].is_number());
+  CHECK(calm_gap["closure_day"].get<double>() >= closure(zero));
+  CHECK(calm_gap["closure_day"].get<double>() == Approx(closure(zero)).epsilon(0.05));
+  const auto& last = fast["groundwater"]["last_gap"];
+  REQUIRE(fast["groundwater"]["gaps"].size() == 3);  // half of six pipes' ring: three gaps
+  REQUIRE(last["closure_day"].is_number());
+  CHECK(last["position"] == "upstream");
+  CHECK(last["closure_day"].get<double>() >= closure(fast));
+  for (const auto& gap : fast["groundwater"]["gaps"])
+    if (gap["position"] != "upstream") CHECK(gap["closure_day"].get<double>() < last["closure_day"].get<double>());
   for (const json* s : {&slow, &fast}) {
     const auto& balance = (*s)["heat_balance"];
     double brought = 0.0;

@@ -76,4 +76,35 @@ void GroundwaterFlow::add_fields(io::PointCloudFrame& frame, const thermal::Ther
   frame.fields.emplace_back("relative_permeability", std::move(k));
 }
 
+namespace {
+
+const char* side_of(const particles::Vec<2>& middle, const std::array<double, 2>& q) {
+  const double along = (middle[0] * q[0] + middle[1] * q[1]) / (middle.norm() * std::hypot(q[0], q[1]) + 1e-300);
+  return along < -0.5 ? "upstream" : (along > 0.5 ? "downstream" : "flank");
+}
+
+nlohmann::json gap_json(const post::Gap& gap, const std::array<double, 2>& q) {
+  return {{"between", gap.between},
+          {"closure_day", gap.closed ? nlohmann::json(*gap.closed / 86400.0) : nlohmann::json(nullptr)},
+          {"position", side_of(gap.middle, q)},
+          {"middle", {gap.middle[0], gap.middle[1]}}};
+}
+
+}  // namespace
+
+nlohmann::json groundwater_summary(const project::Groundwater& g, const GroundwaterFlow& flow, const post::GapClosure& gaps) {
+  nlohmann::json s = {
+      {"darcy_flux_m_per_day", {g.darcy_flux[0] * 86400.0, g.darcy_flux[1] * 86400.0}},
+      {"permeability_m2", g.permeability_m2()},
+      {"permeability_law", g.law.name()},
+      {"impedance", g.law.model == porous_flow::PermeabilityModel::impedance ? nlohmann::json(g.law.impedance) : nlohmann::json(nullptr)},
+      {"floor", g.law.floor},
+      {"flow_solves", flow.flow_solves()}};
+  s["gaps"] = nlohmann::json::array();
+  for (const auto& gap : gaps.gaps()) s["gaps"].push_back(gap_json(gap, g.darcy_flux));
+  const post::Gap* last = gaps.last();
+  s["last_gap"] = last ? gap_json(*last, g.darcy_flux) : nlohmann::json(nullptr);
+  return s;
+}
+
 }  // namespace frostwall::run

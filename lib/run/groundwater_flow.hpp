@@ -13,7 +13,10 @@
 #include <vector>
 
 #include "io/point_cloud_vtk.hpp"
+#include <nlohmann/json.hpp>
+
 #include "porous_flow/darcy_cloud.hpp"
+#include "post/gap_closure.hpp"
 #include "project/project.hpp"
 #include "thermal/heat_advection.hpp"
 #include "thermal/integrator.hpp"
@@ -52,5 +55,12 @@ class GroundwaterFlow final : public thermal::Integrator {
   // heat front crosses about one particle a step).
   double courant_ = 2.0;
 };
+
+// summary.json's "groundwater": the flow's inputs and solves, and closure
+// per gap (days; null while open) with each gap's side of the shaft
+// (upstream, downstream or flank: the gap's middle within 60 degrees of
+// against, along, or across the flow) and the last gap to close.
+nlohmann::json groundwater_summary(const project::Groundwater& water, const GroundwaterFlow& flow,
+                                   const post::GapClosure& gaps);
 
 }  // namespace frostwall::run

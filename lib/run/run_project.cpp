@@ -11,6 +11,7 @@
 #include <omp.h>
 
 #include "run/cfd_dem_run.hpp"
+#include "post/gap_closure.hpp"
 #include "run/closure_tracker.hpp"
 #include "run/model.hpp"
 #include "thermal/backward_euler.hpp"
@@ -180,7 +181,10 @@ void run_project(const Project& p, const RunOptions& options) {
   // Flowing groundwater: the conduction integrator wrapped with the flow
   // and the heat it carries.
   GroundwaterFlow* flow = nullptr;
+  std::optional<post::GapClosure> gaps;  // under seepage: closure per gap
+  std::vector<double> latent_left;
   if (p.groundwater) {
+    gaps.emplace(built.particles(), geometry::pipe_positions(std::get<project::ShaftSection>(p.geometry).layout));
     auto wrapped = std::make_unique<GroundwaterFlow>(*p.groundwater, built);
     flow = wrapped.get();
     built.integrator = std::move(wrapped);
@@ -214,6 +218,10 @@ void run_project(const Project& p, const RunOptions& options) {
   std::vector<double> f_before, T_before, f_at, T_at;
   observers.after_step = [&](const thermal::ThermalModel& m, double t) {
     if (closure) closure->after_step(m, t);
+    if (gaps) {
+      m.latent_left(latent_left);
+      gaps->observe(t, latent_left);
+    }
     if (frost) frost->after_step(m, t);
     if (mechanics) mechanics->update(m, t, false);
     if (!results) return;
@@ -326,15 +334,7 @@ void run_project(const Project& p, const RunOptions& options) {
   if (const auto* rkl2 = thermal::find_integrator<thermal::SuperTimeStepping>(built.integrator.get()))
     summary["run"]["stages"] = rkl2->statistics().stages;
   if (mechanics) summary["run"]["mechanics"] = mechanics->facts();
-  if (flow) {
-    const auto& g = *p.groundwater;
-    summary["groundwater"] = {{"darcy_flux_m_per_day", {g.darcy_flux[0] * 86400.0, g.darcy_flux[1] * 86400.0}},
-                              {"permeability_m2", g.permeability_m2()},
-                              {"permeability_law", g.law.name()},
-                              {"impedance", g.law.model == porous_flow::PermeabilityModel::impedance ? nlohmann::json(g.law.impedance) : nlohmann::json(nullptr)},
-                              {"floor", g.law.floor},
-                              {"flow_solves", flow->flow_solves()}};
-  }
+  if (flow) summary["groundwater"] = groundwater_summary(*p.groundwater, *flow, *gaps);
   io::write_text_file(out / "summary.json", summary.dump(2) + "\n");
   if (p.output.report) report::write_report(out);  // from the files just written
 }

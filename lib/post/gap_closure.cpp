@@ -1,0 +1,55 @@
+#include "post/gap_closure.hpp"
+
+#include <algorithm>
+#include <map>
+
+namespace frostwall::post {
+
+GapClosure::GapClosure(const particles::ParticleSet<2>& P, const std::vector<geometry::Pipe2>& pipes) {
+  // Neighbours: consecutive pipes of each ring, the last back to the first.
+  std::map<int, std::vector<const geometry::Pipe2*>> rings;
+  for (const auto& pipe : pipes)
+    if (pipe.ring >= 0) rings[pipe.ring].push_back(&pipe);
+  for (const auto& [ring, members] : rings) {
+    if (members.size() < 2) continue;
+    for (std::size_t k = 0; k < members.size(); ++k) {
+      if (members.size() == 2 && k == 1) break;  // two pipes: one gap
+      const auto& a = *members[k];
+      const auto& b = *members[(k + 1) % members.size()];
+      const particles::Vec<2> pa(a.x, a.y), pb(b.x, b.y), d = pb - pa;
+      Gap gap;
+      gap.between = a.label + " - " + b.label;
+      gap.middle = 0.5 * (pa + pb);
+      for (std::size_t i = 0; i < P.n_free; ++i) {
+        const double s = std::clamp((P.position[i] - pa).dot(d) / d.squaredNorm(), 0.0, 1.0);
+        if ((P.position[i] - (pa + s * d)).norm() <= 0.75 * P.spacing_of(i)) gap.along.push_back(std::uint32_t(i));
+      }
+      if (!gap.along.empty()) gaps_.push_back(std::move(gap));
+    }
+  }
+}
+
+void GapClosure::observe(double t, const std::vector<double>& g) {
+  for (auto& gap : gaps_) {
+    double worst = -1e300;
+    for (std::uint32_t i : gap.along) worst = std::max(worst, g[i]);
+    if (!gap.closed && worst <= 0.0)
+      gap.closed = gap.worst > 0.0 && t > last_t_ ? last_t_ + (t - last_t_) * gap.worst / (gap.worst - worst) : t;
+    gap.worst = worst;
+  }
+  last_t_ = t;
+}
+
+const Gap* GapClosure::last() const {
+  const Gap* last = nullptr;
+  auto later = [](const Gap& a, const Gap& b) {  // is a later (or more open) than b?
+    if (a.closed && b.closed) return *a.closed > *b.closed;
+    if (!a.closed && !b.closed) return a.worst > b.worst;
+    return !a.closed;
+  };
+  for (const auto& gap : gaps_)
+    if (!last || later(gap, *last)) last = &gap;
+  return last;
+}
+
+}  // namespace frostwall::post

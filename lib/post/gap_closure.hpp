@@ -1,0 +1,45 @@
+// Closure per gap (issue 17): the day the straight bridge between two
+// neighbouring pipes of a ring is fully frozen, i.e. the latent heat left
+// (H / H_latent, as the closure detector uses) is at or below 0 at every
+// free particle within 0.75 of its own spacing of the segment between the
+// pipe centres. A frozen straight bridge is one frozen path through the
+// gap, so the wall's closure (post/closure.hpp: any path) comes no later
+// than the last gap's day; where the columns meet off the line (a flow
+// bending them) the gap's day is the later, conservative one. The day is
+// interpolated between observations. Gaps outside the simulated wedge
+// (no particles near them) are left out: the mirror images of those in it.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "geometry/layout.hpp"
+#include "particles/particle_set.hpp"
+
+namespace frostwall::post {
+
+struct Gap {
+  std::string between;               // "outer 3 - outer 4"
+  particles::Vec<2> middle;          // the segment's midpoint (m)
+  std::vector<std::uint32_t> along;  // free particles on the segment
+  std::optional<double> closed;      // s
+  double worst = 1.0;                // the largest latent share left along it, last observed
+};
+
+class GapClosure {
+ public:
+  GapClosure(const particles::ParticleSet<2>& particles, const std::vector<geometry::Pipe2>& pipes);
+  // latent_left: H / H_latent per particle, at time t (s).
+  void observe(double t, const std::vector<double>& latent_left);
+  const std::vector<Gap>& gaps() const { return gaps_; }
+  // The gap that closed last (or is still open, the most open first); null
+  // without gaps.
+  const Gap* last() const;
+
+ private:
+  std::vector<Gap> gaps_;
+  double last_t_ = 0.0;
+};
+
+}  // namespace frostwall::post
