@@ -77,6 +77,9 @@ TEST_CASE("Groundwater without flow is still water, and flowing water delays clo
   REQUIRE(fast["groundwater"]["gaps"].size() == 3);  // half of six pipes' ring: three gaps
   REQUIRE(last["closure_day"].is_number());
   CHECK(last["position"] == "upstream");
+  const std::string verdict = fast["groundwater"]["verdict"];
+  CHECK(verdict.rfind(fmt::format("closed on day {:.1f}; the last gap, {} (upstream)", closure(fast),
+                                  last["between"].get<std::string>()), 0) == 0);
   CHECK(last["closure_day"].get<double>() >= closure(fast));
   for (const auto& gap : fast["groundwater"]["gaps"])
     if (gap["position"] != "upstream") CHECK(gap["closure_day"].get<double>() < last["closure_day"].get<double>());
@@ -128,4 +131,19 @@ TEST_CASE("Groundwater: the Darcy flux in the VTU is the regional flow away from
     CHECK(sum_x / far == Approx(regional).epsilon(0.02));
     CHECK(std::abs(sum_y / far) < 0.02 * regional);
   });
+}
+
+// Check 6's last clause on the scaled ring (long: about 80 s): at some rate
+// the wall stops closing. At 4 m/d no gap closes in 24 days and the frozen
+// area levels off, which the verdict says; closure stays null.
+TEST_CASE("Groundwater: at 4 m/d the scaled ring does not close and the verdict says the frozen area stopped growing", "[groundwater][cli][long]") {
+  json p = scaled_ring({4.0, 0.0});
+  p["time"] = {{"end", 24}, {"unit", "d"}, {"snapshots", {24}}};
+  const json s = run(p);
+  CHECK(s["closure_time_days"].is_null());
+  for (const auto& gap : s["groundwater"]["gaps"]) CHECK(gap["closure_day"].is_null());
+  const std::string verdict = s["groundwater"]["verdict"];
+  WARN(verdict);
+  CHECK(verdict.rfind("no closure: the frozen area stopped growing (steady state) by day ", 0) == 0);
+  CHECK(s["groundwater"]["frozen_area_growth_per_day"].get<double>() < 0.01 / (0.2 * 24));
 }

@@ -1,6 +1,7 @@
 #include "run/groundwater_flow.hpp"
 
 #include <cmath>
+#include <fmt/core.h>
 
 #include "porous_flow/darcy_velocity.hpp"
 #include "run/model.hpp"
@@ -92,7 +93,8 @@ nlohmann::json gap_json(const post::Gap& gap, const std::array<double, 2>& q) {
 
 }  // namespace
 
-nlohmann::json groundwater_summary(const project::Groundwater& g, const GroundwaterFlow& flow, const post::GapClosure& gaps) {
+nlohmann::json groundwater_summary(const project::Groundwater& g, const GroundwaterFlow& flow, const post::GapClosure& gaps,
+                                   const post::FrozenAreaTrend& frozen_area, std::optional<double> closure_time) {
   nlohmann::json s = {
       {"darcy_flux_m_per_day", {g.darcy_flux[0] * 86400.0, g.darcy_flux[1] * 86400.0}},
       {"permeability_m2", g.permeability_m2()},
@@ -104,6 +106,12 @@ nlohmann::json groundwater_summary(const project::Groundwater& g, const Groundwa
   for (const auto& gap : gaps.gaps()) s["gaps"].push_back(gap_json(gap, g.darcy_flux));
   const post::Gap* last = gaps.last();
   s["last_gap"] = last ? gap_json(*last, g.darcy_flux) : nlohmann::json(nullptr);
+  if (!closure_time) s["verdict"] = frozen_area.no_closure_verdict();
+  else if (last && last->closed)
+    s["verdict"] = fmt::format("closed on day {:.1f}; the last gap, {} ({}), on day {:.1f}", *closure_time / 86400.0,
+                               last->between, side_of(last->middle, g.darcy_flux), *last->closed / 86400.0);
+  else s["verdict"] = fmt::format("closed on day {:.1f}", *closure_time / 86400.0);
+  s["frozen_area_growth_per_day"] = frozen_area.recent_growth_per_day();
   return s;
 }
 

@@ -16,6 +16,7 @@
 #include <nlohmann/json.hpp>
 
 #include "porous_flow/darcy_cloud.hpp"
+#include "post/frozen_area_trend.hpp"
 #include "post/gap_closure.hpp"
 #include "project/project.hpp"
 #include "thermal/heat_advection.hpp"
@@ -59,8 +60,10 @@ class GroundwaterFlow final : public thermal::Integrator {
 // summary.json's "groundwater": the flow's inputs and solves, and closure
 // per gap (days; null while open) with each gap's side of the shaft
 // (upstream, downstream or flank: the gap's middle within 60 degrees of
-// against, along, or across the flow) and the last gap to close.
+// against, along, or across the flow) and the last gap to close; the
+// verdict: closed (the day, the last gap and its side), or why not.
 nlohmann::json groundwater_summary(const project::Groundwater& water, const GroundwaterFlow& flow,
-                                   const post::GapClosure& gaps);
+                                   const post::GapClosure& gaps, const post::FrozenAreaTrend& frozen_area,
+                                   std::optional<double> closure_time);
 
 }  // namespace frostwall::run

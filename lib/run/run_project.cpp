@@ -11,6 +11,7 @@
 #include <omp.h>
 
 #include "run/cfd_dem_run.hpp"
+#include "post/frozen_area_trend.hpp"
 #include "post/gap_closure.hpp"
 #include "run/closure_tracker.hpp"
 #include "run/model.hpp"
@@ -182,6 +183,7 @@ void run_project(const Project& p, const RunOptions& options) {
   // and the heat it carries.
   GroundwaterFlow* flow = nullptr;
   std::optional<post::GapClosure> gaps;  // under seepage: closure per gap
+  post::FrozenAreaTrend frozen_area;      // and whether an open wall still grows
   std::vector<double> latent_left;
   if (p.groundwater) {
     gaps.emplace(built.particles(), geometry::pipe_positions(std::get<project::ShaftSection>(p.geometry).layout));
@@ -221,6 +223,9 @@ void run_project(const Project& p, const RunOptions& options) {
     if (gaps) {
       m.latent_left(latent_left);
       gaps->observe(t, latent_left);
+      double area = 0.0;
+      for (std::size_t i = 0; i < m.free_count(); ++i) area += m.volume()[i] * (1.0 - m.liquid_fraction()[i]);
+      frozen_area.add(t / 86400.0, area);
     }
     if (frost) frost->after_step(m, t);
     if (mechanics) mechanics->update(m, t, false);
@@ -334,7 +339,7 @@ void run_project(const Project& p, const RunOptions& options) {
   if (const auto* rkl2 = thermal::find_integrator<thermal::SuperTimeStepping>(built.integrator.get()))
     summary["run"]["stages"] = rkl2->statistics().stages;
   if (mechanics) summary["run"]["mechanics"] = mechanics->facts();
-  if (flow) summary["groundwater"] = groundwater_summary(*p.groundwater, *flow, *gaps);
+  if (flow) summary["groundwater"] = groundwater_summary(*p.groundwater, *flow, *gaps, frozen_area, closure->closure_time());
   io::write_text_file(out / "summary.json", summary.dump(2) + "\n");
   if (p.output.report) report::write_report(out);  // from the files just written
 }
