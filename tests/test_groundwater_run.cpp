@@ -81,6 +81,16 @@ TEST_CASE("Groundwater without flow is still water, and flowing water delays clo
   CHECK(verdict.rfind(fmt::format("closed on day {:.1f}; the last gap, {} (upstream)", closure(fast),
                                   last["between"].get<std::string>()), 0) == 0);
   CHECK(last["closure_day"].get<double>() >= closure(fast));
+  // The wall facing the flow is the thinner (issue 17, check 6), and the
+  // thinnest ray overall is no thicker than either side's.
+  const auto& wall = fast["wall"].back();
+  WARN(fmt::format("day {}: wall upstream {:.3f} m, downstream {:.3f} m, thinnest {:.3f} m", wall["day"].get<double>(),
+                   wall["min_thickness_upstream"].get<double>(), wall["min_thickness_downstream"].get<double>(),
+                   wall["min_thickness"].get<double>()));
+  CHECK(wall["min_thickness_upstream"].get<double>() > 0.0);
+  CHECK(wall["min_thickness_upstream"].get<double>() < wall["min_thickness_downstream"].get<double>());
+  CHECK(wall["min_thickness"].get<double>() <= wall["min_thickness_upstream"].get<double>());
+  CHECK_FALSE(zero["wall"].back().contains("min_thickness_upstream"));  // no flow, no sides
   for (const auto& gap : fast["groundwater"]["gaps"])
     if (gap["position"] != "upstream") CHECK(gap["closure_day"].get<double>() < last["closure_day"].get<double>());
   for (const json* s : {&slow, &fast}) {

@@ -121,7 +121,18 @@ ShaftResults::Reading ShaftResults::read(double t, const std::vector<double>& li
                                          const std::vector<double>& temperature) const {
   const auto fan = fan_gauge_->measure(liquid_fraction, temperature);
   const auto planes = planes_gauge_->measure(liquid_fraction, temperature);
-  return {t / day, planes.extents.OA(), planes.extents.OB(), fan.extents.min_thickness, planes.mean_temperature_OB};
+  Reading r{t / day, planes.extents.OA(), planes.extents.OB(), fan.extents.min_thickness, planes.mean_temperature_OB, {}, {}};
+  if (project_.groundwater && project_.groundwater->speed() > 0.0) {
+    const auto& q = project_.groundwater->darcy_flux;
+    const double flow_angle = std::atan2(q[1], q[0]);
+    for (int k = 0; k < int(fan.extents.rays.size()); ++k) {
+      const double along = std::cos(fan_gauge_->fan().ray_angle(k) - flow_angle), thick = fan.extents.rays[k].thickness;
+      if (std::abs(along) <= 0.5) continue;  // a flank
+      auto& side = along < 0.0 ? r.upstream_thickness : r.downstream_thickness;
+      side = side ? std::min(*side, thick) : thick;
+    }
+  }
+  return r;
 }
 
 void ShaftResults::sample(double t, const std::vector<double>& liquid_fraction, const std::vector<double>& temperature) {
@@ -182,6 +193,11 @@ json ShaftResults::finish(const std::filesystem::path& out) const {
   for (const auto& r : snapshots_)
     wall.push_back({{"day", r.day}, {"OA", stretch_json(r.OA)}, {"OB", stretch_json(r.OB)},
                     {"min_thickness", r.min_thickness}, {"mean_temperature_OB", or_null(r.mean_temperature_OB)}});
+  if (project_.groundwater && project_.groundwater->speed() > 0.0)
+    for (std::size_t k = 0; k < snapshots_.size(); ++k) {
+      wall[k]["min_thickness_upstream"] = or_null(snapshots_[k].upstream_thickness);
+      wall[k]["min_thickness_downstream"] = or_null(snapshots_[k].downstream_thickness);
+    }
   result["wall"] = wall;
 
   // ---- design: the first time both targets hold, thickness interpolated

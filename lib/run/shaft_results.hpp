@@ -51,6 +51,9 @@ class ShaftResults {
     post::FrozenStretch OA, OB;
     double min_thickness;
     std::optional<double> mean_temperature_OB;
+    // Under seepage: the thinnest ray within 60 degrees of against (upstream)
+    // and along (downstream) the flow.
+    std::optional<double> upstream_thickness, downstream_thickness;
   };
   Reading read(double t, const std::vector<double>& liquid_fraction, const std::vector<double>& temperature) const;
 
