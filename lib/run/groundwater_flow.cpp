@@ -4,6 +4,7 @@
 #include <fmt/core.h>
 
 #include "porous_flow/darcy_velocity.hpp"
+#include "post/flow_side.hpp"
 #include "run/model.hpp"
 
 namespace frostwall::run {
@@ -80,8 +81,7 @@ void GroundwaterFlow::add_fields(io::PointCloudFrame& frame, const thermal::Ther
 namespace {
 
 const char* side_of(const particles::Vec<2>& middle, const std::array<double, 2>& q) {
-  const double along = (middle[0] * q[0] + middle[1] * q[1]) / (middle.norm() * std::hypot(q[0], q[1]) + 1e-300);
-  return along < -0.5 ? "upstream" : (along > 0.5 ? "downstream" : "flank");
+  return post::name(post::flow_side(middle, q));
 }
 
 nlohmann::json gap_json(const post::Gap& gap, const std::array<double, 2>& q) {

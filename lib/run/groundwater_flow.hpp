@@ -12,9 +12,9 @@
 #include <string>
 #include <vector>
 
-#include "io/point_cloud_vtk.hpp"
 #include <nlohmann/json.hpp>
 
+#include "io/point_cloud_vtk.hpp"
 #include "porous_flow/darcy_cloud.hpp"
 #include "post/frozen_area_trend.hpp"
 #include "post/gap_closure.hpp"

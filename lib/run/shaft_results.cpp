@@ -1,5 +1,6 @@
 #include "run/shaft_results.hpp"
 
+#include "post/flow_side.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -11,6 +12,7 @@
 #include "io/atomic_file.hpp"
 #include "io/polyline_vtk.hpp"
 #include "post/closure.hpp"
+#include "post/flow_side.hpp"
 #include "post/isoline.hpp"
 #include "sph/laplacian.hpp"
 #include "particles/symmetry_group.hpp"
@@ -123,13 +125,12 @@ ShaftResults::Reading ShaftResults::read(double t, const std::vector<double>& li
   const auto planes = planes_gauge_->measure(liquid_fraction, temperature);
   Reading r{t / day, planes.extents.OA(), planes.extents.OB(), fan.extents.min_thickness, planes.mean_temperature_OB, {}, {}};
   if (project_.groundwater && project_.groundwater->speed() > 0.0) {
-    const auto& q = project_.groundwater->darcy_flux;
-    const double flow_angle = std::atan2(q[1], q[0]);
     for (int k = 0; k < int(fan.extents.rays.size()); ++k) {
-      const double along = std::cos(fan_gauge_->fan().ray_angle(k) - flow_angle), thick = fan.extents.rays[k].thickness;
-      if (std::abs(along) <= 0.5) continue;  // a flank
-      auto& side = along < 0.0 ? r.upstream_thickness : r.downstream_thickness;
-      side = side ? std::min(*side, thick) : thick;
+      const double angle = fan_gauge_->fan().ray_angle(k), thick = fan.extents.rays[k].thickness;
+      const auto side = post::flow_side({std::cos(angle), std::sin(angle)}, project_.groundwater->darcy_flux);
+      if (side == post::FlowSide::flank) continue;
+      auto& thinnest = side == post::FlowSide::upstream ? r.upstream_thickness : r.downstream_thickness;
+      thinnest = thinnest ? std::min(*thinnest, thick) : thick;
     }
   }
   return r;
