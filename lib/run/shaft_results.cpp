@@ -1,7 +1,5 @@
 #include "run/shaft_results.hpp"
 
-#include "post/flow_side.hpp"
-
 #include <algorithm>
 #include <cmath>
 #include <map>
