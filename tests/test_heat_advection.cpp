@@ -76,16 +76,31 @@ double exact(double x, double q) {
 
 // Runs to steady state (Strang: half the water's heat, conduction, half);
 // returns the worst |T - exact| / (T1 - T0).
-double steady_error(double s, double q, thermal::AdvectionScheme scheme) {
+// `courant`: the water's step in upwind stable steps (0: the conduction's
+// step), conduction sub-stepped within it.
+double steady_error(double s, double q, thermal::AdvectionScheme scheme, double courant = 0.0) {
   Strip strip = make_strip(s, q, 0.5);
   auto& model = *strip.model;
   thermal::HeatAdvection water(rho_c_w, strip.darcy->pair_flux(), scheme);
   thermal::ExplicitEuler conduction(0.1, 1.3 * s);
-  const double dt = conduction.preferred_step(model), end = 6.0 * L * L * rho_c / lambda;
+  const double explicit_step = conduction.preferred_step(model), end = 6.0 * L * L * rho_c / lambda;
+  const double dt = courant > 0.0
+                        ? courant * thermal::HeatAdvection(rho_c_w, strip.darcy->pair_flux(), thermal::AdvectionScheme::upwind).stable_step(model)
+                        : explicit_step;
+  const int substeps = int(std::ceil(dt / explicit_step - 1e-9));
+  auto conduct = [&](thermal::ThermalModel& m, double t0, double h) {
+    std::vector<double> heat(2, 0.0);
+    for (int k = 0; k < substeps; ++k) {
+      const auto part = conduction.advance(m, t0 + k * h / substeps, h / substeps);
+      for (int b = 0; b < 2; ++b) heat[b] += part[b];
+      m.apply_boundaries(t0 + (k + 1) * h / substeps);
+    }
+    return heat;
+  };
   model.apply_boundaries(0.0);
   for (double t = 0.0; t < end; t += dt) {
     water.advance(model, t, 0.5 * dt);
-    conduction.advance(model, t, dt);
+    conduct(model, t, dt);
     water.advance(model, t + 0.5 * dt, 0.5 * dt);
     model.apply_boundaries(t + dt);
   }
@@ -112,22 +127,39 @@ TEST_CASE("Advection-conduction between two faces reaches the exponential profil
   CHECK(fine < 0.35 * coarse);
   CHECK(upwind_fine < 0.7 * upwind_coarse);
   CHECK(fine < 0.3 * upwind_fine);
+  // Implicit (screening), the water stepped at Courant 1 and 4: upwind, and
+  // split from the conduction at a long step, so its steady state moves
+  // with the step; it must come back as the step shrinks.
+  const double implicit_1 = steady_error(L / 20.0, q, thermal::AdvectionScheme::implicit, 1.0);
+  const double implicit_4 = steady_error(L / 20.0, q, thermal::AdvectionScheme::implicit, 4.0);
+  WARN(fmt::format("implicit: worst error {:.5f} at Courant 1, {:.5f} at 4 (upwind explicit {:.5f})", implicit_1, implicit_4, upwind_coarse));
+  CHECK(implicit_1 < 0.5 * implicit_4);
 }
 
 TEST_CASE("The water's heat: a sharp front makes no new extremum, and energy balances every step", "[groundwater][advection]") {
-  for (auto scheme : {thermal::AdvectionScheme::upwind, thermal::AdvectionScheme::limited}) {
+  // The implicit scheme at Courant 1, 4 and 10 (its step in upwind stable
+  // steps; the explicit ones at the conduction's step, within theirs).
+  using S = thermal::AdvectionScheme;
+  for (auto [scheme, courant] : {std::pair{S::upwind, 0.0}, {S::limited, 0.0}, {S::implicit, 1.0}, {S::implicit, 4.0}, {S::implicit, 10.0}}) {
     const double s = L / 40.0, q = 20.0 * lambda / (rho_c_w * L);  // Peclet 20: a sharp front
     Strip strip = make_strip(s, q, T1);  // warm ground, cold water entering
     auto& model = *strip.model;
     thermal::HeatAdvection water(rho_c_w, strip.darcy->pair_flux(), scheme);
     thermal::ExplicitEuler conduction(0.1, 1.3 * s);
-    const double dt = conduction.preferred_step(model);
+    const double dt = courant > 0.0 ? courant * thermal::HeatAdvection(rho_c_w, strip.darcy->pair_flux(), S::upwind).stable_step(model)
+                                    : conduction.preferred_step(model);
+    const int substeps = int(std::ceil(dt / conduction.preferred_step(model) - 1e-9));
     model.apply_boundaries(0.0);
     double stored = model.stored_heat(), worst_balance = 0.0, scale = 0.0;
     double lowest = 1e9, highest = -1e9;
-    for (int k = 0; k < 400; ++k) {
+    for (int k = 0; k < (courant > 0.0 ? 40 : 400); ++k) {
       const auto in_water = water.advance(model, k * dt, dt);
-      const auto in_conduction = conduction.advance(model, k * dt, dt);
+      std::vector<double> in_conduction(2, 0.0);
+      for (int m = 0; m < substeps; ++m) {
+        const auto part = conduction.advance(model, k * dt + m * dt / substeps, dt / substeps);
+        for (int b = 0; b < 2; ++b) in_conduction[b] += part[b];
+        if (m + 1 < substeps) model.apply_boundaries(k * dt + (m + 1) * dt / substeps);
+      }
       model.apply_boundaries((k + 1) * dt);
       const double now = model.stored_heat();
       const double brought = in_water[0] + in_water[1] + in_conduction[0] + in_conduction[1];
@@ -137,7 +169,7 @@ TEST_CASE("The water's heat: a sharp front makes no new extremum, and energy bal
       for (std::size_t i = 0; i < model.free_count(); ++i)
         lowest = std::min(lowest, model.temperature()[i]), highest = std::max(highest, model.temperature()[i]);
     }
-    INFO((scheme == thermal::AdvectionScheme::upwind ? "upwind" : "limited"));
+    INFO((scheme == S::upwind ? "upwind" : scheme == S::limited ? "limited" : "implicit") << " Courant " << courant);
     INFO(fmt::format("balance {:.3g} J of {:.3g} J a step; T in [{:.6f}, {:.6f}]", worst_balance, scale, lowest, highest));
     CHECK(worst_balance < 1e-9 * scale);
     CHECK(lowest >= T0 - 1e-9);  // the front has arrived: something below T1

@@ -12,6 +12,12 @@
 
 namespace frostwall::project {
 
+// How the heat the water carries is stepped (thermal/heat_advection.hpp):
+// explicit limited (the default) or upwind, held to the advective Courant
+// limit; or implicit upwind at the conduction's step (screening: fast, a
+// few percent late on closure).
+enum class Advection { limited, upwind, implicit };
+
 struct Groundwater {
   // One of the two, as given; the other follows from the water below
   // (K = k rho_w g / mu_w).
@@ -24,9 +30,11 @@ struct Groundwater {
   double water_density = 1000.0;
   double water_heat_capacity = 4200.0;  // J/(kg K)
   double water_viscosity = 1.5e-3;
-  // The flow is solved again when some particle's relative permeability has
-  // changed by this factor since the last solve (0.1: 10 %).
-  double resolve_tolerance = 0.1;
+  // The flow is solved again when the share of the water whose path ice
+  // has changed since the last solve exceeds this: each particle's
+  // throughflow weighted by its permeability's relative change (at most 1).
+  double resolve_tolerance = 3e-4;
+  Advection advection = Advection::limited;
 
   double speed() const;            // |q|, m/s
   double permeability_m2() const;  // k, m^2 (from K when K was given)

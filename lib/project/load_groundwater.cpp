@@ -17,7 +17,7 @@ namespace detail {
 Groundwater read_groundwater(const Node& n) {
   Groundwater g;
   n.object({"permeability", "hydraulic_conductivity", "porosity", "permeability_law", "darcy_flux", "unit", "water",
-            "resolve_tolerance"});
+            "resolve_tolerance", "advection"});
   g.permeability = n["permeability"].positive();
   g.hydraulic_conductivity = n["hydraulic_conductivity"].positive();
   if (n["permeability"].present() == n["hydraulic_conductivity"].present())
@@ -60,6 +60,9 @@ Groundwater read_groundwater(const Node& n) {
     g.water_viscosity = w["viscosity"].positive().value_or(g.water_viscosity);
   }
   if (const auto tol = n["resolve_tolerance"].positive()) g.resolve_tolerance = *tol;
+  if (const auto a = n["advection"].choice<Advection>(
+          "advection scheme", {{"implicit", Advection::implicit}, {"limited", Advection::limited}, {"upwind", Advection::upwind}}))
+    g.advection = *a;
   return g;
 }
 

@@ -1,5 +1,6 @@
 #include "run/groundwater_flow.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <fmt/core.h>
 
@@ -23,6 +24,15 @@ std::vector<double> fixed_potentials(const project::Groundwater& water, const Mo
   return fixed;
 }
 
+thermal::AdvectionScheme scheme_of(project::Advection a) {
+  switch (a) {
+    case project::Advection::limited: return thermal::AdvectionScheme::limited;
+    case project::Advection::upwind: return thermal::AdvectionScheme::upwind;
+    case project::Advection::implicit: return thermal::AdvectionScheme::implicit;
+    default: return thermal::AdvectionScheme::limited;
+  }
+}
+
 }  // namespace
 
 GroundwaterFlow::GroundwaterFlow(const project::Groundwater& water, Model& m)
@@ -30,7 +40,7 @@ GroundwaterFlow::GroundwaterFlow(const project::Groundwater& water, Model& m)
       conduction_(std::move(m.integrator)),
       name_(std::string(conduction_->name()) + "+groundwater"),
       darcy_(m.model->pairs(), m.particles().volume, fixed_potentials(water, m)),
-      heat_(water.water_density * water.water_heat_capacity, {}),
+      heat_(water.water_density * water.water_heat_capacity, {}, scheme_of(water.advection)),
       k_(m.particles().size(), 1.0) {
   solve_if_changed(*m.model);
 }
@@ -38,22 +48,34 @@ GroundwaterFlow::GroundwaterFlow(const project::Groundwater& water, Model& m)
 void GroundwaterFlow::solve_if_changed(const thermal::ThermalModel& model) {
   if (water_.speed() == 0.0 && solves_ > 0) return;  // still water: the potential stays 0
   const auto& f = model.liquid_fraction();
-  bool changed = k_solved_.empty();
-  for (std::size_t i = 0; i < model.free_count(); ++i) {
-    k_[i] = water_.law.relative(f[i]);
-    if (!changed && std::abs(std::log(k_[i] / k_solved_[i])) > std::log1p(water_.resolve_tolerance)) changed = true;
+  for (std::size_t i = 0; i < model.free_count(); ++i) k_[i] = water_.law.relative(f[i]);
+  if (!k_solved_.empty()) {
+    // The share of the water whose path has changed: each particle's
+    // throughflow weighted by its permeability's relative change (at most
+    // 1) since the last solve. Ice closing a gap changes few particles but
+    // those that carry the water; a particle frozen off long ago none.
+    double changed = 0.0, total = 0.0;
+    for (std::size_t i = 0; i < model.free_count(); ++i) {
+      total += throughflow_[i];
+      if (k_[i] != k_solved_[i]) changed += throughflow_[i] * std::min(1.0, std::abs(k_[i] / k_solved_[i] - 1.0));
+    }
+    if (changed <= water_.resolve_tolerance * total) return;
   }
-  if (!changed) return;
   darcy_.solve(k_);
   heat_.set_pair_flux(darcy_.pair_flux());
   k_solved_ = k_;
+  const auto& P = model.pairs();
+  const auto& Q = darcy_.pair_flux();
+  throughflow_.assign(model.free_count(), 0.0);
+  for (std::size_t i = 0; i < model.free_count(); ++i)
+    for (std::size_t e = P.row_start[i]; e < P.row_start[i + 1]; ++e) throughflow_[i] += 0.5 * std::abs(Q[e]);
   ++solves_;
 }
 
 double GroundwaterFlow::preferred_step(const thermal::ThermalModel& model) const {
   const double conduction = conduction_->preferred_step(model);
   if (water_.speed() == 0.0) return conduction;
-  return std::min(conduction, courant_ * heat_.stable_step(model));
+  return std::min(conduction, courant_ * heat_.stable_step(model));  // unbounded when implicit
 }
 
 std::vector<double> GroundwaterFlow::advance(thermal::ThermalModel& model, double t, double dt) {

@@ -2,8 +2,8 @@
 // steady Darcy flow on the run's own particle pairs, the heat it carries,
 // and the two alternated with the conduction (Strang: half the water's
 // heat, the conduction integrator's step, the other half). The flow is
-// solved again when ice has changed some particle's permeability by more
-// than groundwater.resolve_tolerance since the last solve. Pipes carry no
+// solved again when the share of the water whose path ice has changed since
+// the last solve exceeds groundwater.resolve_tolerance. Pipes carry no
 // flow; the far field holds the regional potential -q . x. An Integrator
 // itself, so the time loop, closure and energy balance see one step.
 #pragma once
@@ -50,7 +50,7 @@ class GroundwaterFlow final : public thermal::Integrator {
   std::string name_;
   porous_flow::DarcyCloud darcy_;
   thermal::HeatAdvection heat_;
-  std::vector<double> k_, k_solved_;
+  std::vector<double> k_, k_solved_, throughflow_;
   int solves_ = 0;
   // Steps of the limited scheme's stable step per splitting step (2: the
   // heat front crosses about one particle a step).

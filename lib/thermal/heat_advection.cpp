@@ -14,6 +14,7 @@ HeatAdvection::HeatAdvection(double water_heat_capacity, std::vector<double> pai
 
 double HeatAdvection::stable_step(const ThermalModel& model) const {
   if (stable_ >= 0.0) return stable_;  // fixed until the fluxes change
+  if (scheme_ == AdvectionScheme::implicit) return stable_ = std::numeric_limits<double>::infinity();
   const auto& P = model.pairs();
   double step = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < P.n_free; ++i) {
@@ -28,7 +29,7 @@ double HeatAdvection::stable_step(const ThermalModel& model) const {
 void HeatAdvection::rate(const ThermalModel& model, double t, std::vector<double>& rate, std::vector<double>& boundary_heat) const {
   const auto& P = model.pairs();
   if (flux_.size() != P.pairs()) throw std::logic_error("HeatAdvection: one flux per pair expected");
-  const bool limited = scheme_ == AdvectionScheme::limited;
+  const bool limited = scheme_ != AdvectionScheme::upwind && P.vector.size() == 2 * P.pairs();
   if (limited) particles::pair_gradient(P, model.temperature(), gradient_);
   const auto& T = model.temperature();
   const auto& boundary = model.boundary_ids();
@@ -64,6 +65,7 @@ void HeatAdvection::rate(const ThermalModel& model, double t, std::vector<double
 }
 
 std::vector<double> HeatAdvection::advance(ThermalModel& model, double t, double dt) {
+  if (scheme_ == AdvectionScheme::implicit) return advance_implicit(model, t, dt);
   std::vector<double> carried(model.boundaries().size(), 0.0);
   const double stable = stable_step(model);
   const long steps = std::isfinite(stable) ? std::max(1L, long(std::ceil(dt / stable - 1e-12))) : 1L;
