@@ -20,6 +20,8 @@ GapClosure::GapClosure(const particles::ParticleSet<2>& P, const std::vector<geo
       Gap gap;
       gap.between = a.label + " - " + b.label;
       gap.middle = 0.5 * (pa + pb);
+      gap.from = pa;
+      gap.to = pb;
       for (std::size_t i = 0; i < P.n_free; ++i) {
         const double s = std::clamp((P.position[i] - pa).dot(d) / d.squaredNorm(), 0.0, 1.0);
         if ((P.position[i] - (pa + s * d)).norm() <= 0.75 * P.spacing_of(i)) gap.along.push_back(std::uint32_t(i));
@@ -38,6 +40,43 @@ void GapClosure::observe(double t, const std::vector<double>& g) {
     gap.worst = worst;
   }
   last_t_ = t;
+}
+
+namespace {
+
+// Does the segment p -> q cross a -> b (p on the left of a -> b, q not)?
+// The sign of the crossing: +1 left to right, -1 right to left, 0 none.
+int crossing(const particles::Vec<2>& a, const particles::Vec<2>& b, const particles::Vec<2>& p, const particles::Vec<2>& q) {
+  auto side = [](const particles::Vec<2>& u, const particles::Vec<2>& v, const particles::Vec<2>& w) {
+    return (v[0] - u[0]) * (w[1] - u[1]) - (v[1] - u[1]) * (w[0] - u[0]);
+  };
+  const double sp = side(a, b, p), sq = side(a, b, q);
+  if ((sp > 0.0) == (sq > 0.0)) return 0;
+  const double sa = side(p, q, a), sb = side(p, q, b);
+  if ((sa > 0.0) == (sb > 0.0)) return 0;
+  return sp > 0.0 ? 1 : -1;
+}
+
+}  // namespace
+
+void GapClosure::observe_flow(double t, const particles::ParticleSet<2>& P, const particles::PairWeights& pairs,
+                              const std::vector<double>& Q) {
+  for (auto& gap : gaps_) {
+    // Only particles within reach of the segment can pair across it.
+    const particles::Vec<2> d = gap.to - gap.from;
+    const double reach = 0.5 * d.norm() + 4.0 * P.spacing_of(gap.along.front()) + 0.5;
+    double through = 0.0;
+    for (std::size_t i = 0; i < pairs.n_free; ++i) {
+      if ((P.position[i] - gap.middle).norm() > reach) continue;
+      for (std::size_t e = pairs.row_start[i]; e < pairs.row_start[i + 1]; ++e) {
+        if (Q[e] == 0.0) continue;
+        const particles::Vec<2> xj = P.position[i] + particles::Vec<2>(pairs.vector[2 * e], pairs.vector[2 * e + 1]);
+        // Each pair once, from its left end: its flux leaves i for j.
+        if (crossing(gap.from, gap.to, P.position[i], xj) == 1) through += Q[e];
+      }
+    }
+    gap.flow.emplace_back(t, std::abs(through));
+  }
 }
 
 const Gap* GapClosure::last() const {

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "geometry/layout.hpp"
+#include "particles/pair_weights.hpp"
 #include "particles/particle_set.hpp"
 
 namespace frostwall::post {
@@ -22,9 +23,13 @@ namespace frostwall::post {
 struct Gap {
   std::string between;               // "outer 3 - outer 4"
   particles::Vec<2> middle;          // the segment's midpoint (m)
+  particles::Vec<2> from, to;        // the pipe centres
   std::vector<std::uint32_t> along;  // free particles on the segment
   std::optional<double> closed;      // s
   double worst = 1.0;                // the largest latent share left along it, last observed
+  // The water through the gap at each flow solve: (s, m^2/s per metre of
+  // depth, the magnitude).
+  std::vector<std::pair<double, double>> flow;
 };
 
 class GapClosure {
@@ -32,6 +37,13 @@ class GapClosure {
   GapClosure(const particles::ParticleSet<2>& particles, const std::vector<geometry::Pipe2>& pipes);
   // latent_left: H / H_latent per particle, at time t (s).
   void observe(double t, const std::vector<double>& latent_left);
+  // The flow through each gap from the pair fluxes Q_e (porous_flow::
+  // DarcyCloud): the sum over the pairs whose segment crosses the one
+  // between the pipe centres, from one side to the other. The pair fluxes
+  // balance at every particle and pipes carry none, so this is the water
+  // passing between the two pipes. Needs the pairs' vectors.
+  void observe_flow(double t, const particles::ParticleSet<2>& particles, const particles::PairWeights& pairs,
+                    const std::vector<double>& pair_flux);
   const std::vector<Gap>& gaps() const { return gaps_; }
   // The gap that closed last (or is still open, the most open first); null
   // without gaps.

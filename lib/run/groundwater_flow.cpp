@@ -107,10 +107,13 @@ const char* side_of(const particles::Vec<2>& middle, const std::array<double, 2>
 }
 
 nlohmann::json gap_json(const post::Gap& gap, const std::array<double, 2>& q) {
+  nlohmann::json days = nlohmann::json::array(), flow = nlohmann::json::array();
+  for (const auto& [t, through] : gap.flow) days.push_back(t / 86400.0), flow.push_back(through * 86400.0);
   return {{"between", gap.between},
           {"closure_day", gap.closed ? nlohmann::json(*gap.closed / 86400.0) : nlohmann::json(nullptr)},
           {"position", side_of(gap.middle, q)},
-          {"middle", {gap.middle[0], gap.middle[1]}}};
+          {"middle", {gap.middle[0], gap.middle[1]}},
+          {"flow", {{"days", days}, {"m3_per_day_per_m", flow}}}};
 }
 
 }  // namespace

@@ -39,6 +39,8 @@ class GroundwaterFlow final : public thermal::Integrator {
   Integrator* wrapped() const override { return conduction_.get(); }
 
   int flow_solves() const { return solves_; }
+  // Q_e of every pair at the last solve (porous_flow::DarcyCloud).
+  const std::vector<double>& pair_flux() const { return darcy_.pair_flux(); }
   // The VTU's flow fields at the last solve: "darcy_flux" (m/s, a vector;
   // 0 on fixed particles) and "relative_permeability".
   void add_fields(io::PointCloudFrame& frame, const thermal::ThermalModel& model) const;

@@ -185,11 +185,14 @@ void run_project(const Project& p, const RunOptions& options) {
   std::optional<post::GapClosure> gaps;  // under seepage: closure per gap
   post::FrozenAreaTrend frozen_area;      // and whether an open wall still grows
   std::vector<double> latent_left;
+  int flow_observed = 0;
   if (p.groundwater) {
     gaps.emplace(built.particles(), geometry::pipe_positions(std::get<project::ShaftSection>(p.geometry).layout));
     auto wrapped = std::make_unique<GroundwaterFlow>(*p.groundwater, built);
     flow = wrapped.get();
     built.integrator = std::move(wrapped);
+    gaps->observe_flow(0.0, built.particles(), model.pairs(), flow->pair_flux());
+    flow_observed = flow->flow_solves();
   }
   // Closure of a shaft section (a fully frozen path) and the day the frozen
   // columns touch: checked 2000 times over the run while the gap is open,
@@ -223,6 +226,10 @@ void run_project(const Project& p, const RunOptions& options) {
     if (gaps) {
       m.latent_left(latent_left);
       gaps->observe(t, latent_left);
+      if (flow->flow_solves() != flow_observed) {  // the water through each gap, at every new flow
+        gaps->observe_flow(t, built.particles(), m.pairs(), flow->pair_flux());
+        flow_observed = flow->flow_solves();
+      }
       double area = 0.0;
       for (std::size_t i = 0; i < m.free_count(); ++i) area += m.volume()[i] * (1.0 - m.liquid_fraction()[i]);
       frozen_area.add(t / 86400.0, area);
