@@ -7,6 +7,7 @@
 #include <fmt/core.h>
 #include <fstream>
 #include <functional>
+#include <iterator>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <vtkDataArray.h>
@@ -128,7 +129,17 @@ TEST_CASE("Groundwater: the Darcy flux in the VTU is the regional flow away from
   json p = scaled_ring({1.0, 0.0});
   p["time"] = {{"end", 0.01}, {"unit", "d"}, {"snapshots", {0.01}}};
   p["output"]["vtk"] = true;
+  p["output"]["report"] = true;
   run(p, [](const fs::path& out) {
+    // The report under seepage: the groundwater section with each gap, the
+    // wall's sides and the gap flow chart, and arrows on the map.
+    std::ifstream in(out / "report.html");
+    const std::string html((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    CHECK(html.find("<h2>Groundwater</h2>") != std::string::npos);
+    for (const char* gap : {"outer 0 - outer 1", "outer 1 - outer 2", "outer 2 - outer 3"})
+      CHECK(html.find(std::string("<td>") + gap + "</td>") != std::string::npos);
+    CHECK(html.find("Water through each gap") != std::string::npos);
+    CHECK(html.find("white arrows: the groundwater") != std::string::npos);
     fs::path file;
     for (const auto& entry : fs::directory_iterator(out))
       if (entry.path().filename().string().rfind("field_", 0) == 0 && entry.path().extension() == ".vtu") file = entry.path();

@@ -454,8 +454,8 @@ Project read_project(const Node& root) {
       project.groundwater = detail::read_groundwater(water);
       project.warnings.push_back(
           "groundwater: the coupling is new (issue 17 in progress): beside frozen ground the flow is 7-9 % off, "
-          "not the 2 % asked, and a full-size run is slow "
-          "(hours: the step is held to the advective Courant limit)");
+          "not the 2 % asked, and a full-size run is slow (hours: the step is held to the advective Courant "
+          "limit; \"advection\": \"implicit\" screens faster and closes a few percent late)");
     }
   }
   detail::read_pore_settings(root, project);

@@ -236,6 +236,22 @@ std::string FieldMap::html(const RgbaImage& image, const std::string& what, cons
     o += fmt::format(R"(<path d="{0}" fill="none" stroke="#fff" stroke-width="2.6" stroke-opacity="0.7"/>)"
                      R"(<path d="{0}" fill="none" stroke="#000" stroke-width="1.1"/>)",
                      d);
+  if (!overlay.arrows.empty()) {  // shaft and a head of two strokes, under the pipes
+    std::string a;
+    for (const auto& arrow : overlay.arrows) {
+      const auto [x0, y0] = px(Vec2(arrow.x, arrow.y));
+      const auto [x1, y1] = px(Vec2(arrow.x + arrow.dx, arrow.y + arrow.dy));
+      const double len = std::hypot(x1 - x0, y1 - y0);
+      if (len < 1.0) continue;
+      const double ux = (x1 - x0) / len, uy = (y1 - y0) / len, head = std::min(4.0, 0.4 * len);
+      a += "M" + num(x0) + " " + num(y0) + "L" + num(x1) + " " + num(y1) + "M" + num(x1 - head * (ux - 0.5 * uy)) + " " +
+           num(y1 - head * (uy + 0.5 * ux)) + "L" + num(x1) + " " + num(y1) + "L" + num(x1 - head * (ux + 0.5 * uy)) + " " +
+           num(y1 - head * (uy - 0.5 * ux));
+    }
+    o += fmt::format(R"(<path d="{0}" fill="none" stroke="#000" stroke-width="2.2" stroke-opacity="0.5"/>)"
+                     R"(<path d="{0}" fill="none" stroke="#fff" stroke-width="1"/>)",
+                     a);
+  }
   o += R"(<g fill="#111" stroke="#fff" stroke-width="0.6">)";
   for (const auto& p : overlay.pipes) {
     const auto [x, y] = px(Vec2(p.x, p.y));

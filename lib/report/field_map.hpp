@@ -32,9 +32,15 @@ struct Circle {
   double x = 0.0, y = 0.0, r = 0.0;
 };
 
+// An arrow of the flow field from (x, y), (dx, dy) long (m on the map).
+struct Arrow {
+  double x = 0.0, y = 0.0, dx = 0.0, dy = 0.0;
+};
+
 // What is drawn on top of every map.
 struct MapOverlay {
   std::vector<Circle> pipes;
+  std::vector<Arrow> arrows;  // the groundwater's flow (white, thin)
   double excavation_radius = 0.0;  // 0 = none
   double domain_radius = 0.0;      // pixels beyond are left blank; 0 = no limit
 };

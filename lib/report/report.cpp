@@ -189,6 +189,7 @@ json report_view(const fs::path& dir) {
   detail::add_headline(run, view);
   detail::add_project(run, view);
   detail::add_maps(run, view);
+  detail::add_groundwater(run, view);
   detail::add_charts(run, view);
   detail::add_mechanics(run, view);
   detail::add_frost(run, view);

@@ -9,6 +9,7 @@
 
 #include "geometry/layout.hpp"
 #include "report/field_map.hpp"
+#include "report/flow_arrows.hpp"
 #include "report/nice_scale.hpp"
 #include "report/report_sections.hpp"
 #include "run/shaft_results.hpp"
@@ -139,8 +140,11 @@ void add_maps(const RunRecord& run, json& view) {
           break;
         }
     const std::string title = fmt::format("day {:g}", snapshots[k].time);
-    maps.push_back({{"html", map.html(fields[k].temperature, colours, curves, whole, overlay, title)},
-                    {"caption", fmt::format("Temperature on day {:g}; black line: frozen front (liquid fraction 0.5).", snapshots[k].time)}});
+    MapOverlay with_flow = overlay;
+    with_flow.arrows = flow_arrows(fields[k], symmetry, window, overlay.domain_radius);
+    maps.push_back({{"html", map.html(fields[k].temperature, colours, curves, whole, with_flow, title)},
+                    {"caption", fmt::format("Temperature on day {:g}; black line: frozen front (liquid fraction 0.5){}.", snapshots[k].time,
+                                            with_flow.arrows.empty() ? "" : "; white arrows: the groundwater's Darcy flux (length to scale on this map)")}});
   }
   view["maps"] = maps;
   view["has_maps"] = true;

@@ -32,6 +32,7 @@ void add_charts(const RunRecord& run, nlohmann::json& view);    // thickness, OB
 void add_mechanics(const RunRecord& run, nlohmann::json& view); // PD: displacement and damage maps
 void add_frost(const RunRecord& run, nlohmann::json& view);     // porous plate: maps, pore freezing, damage
 void add_run_facts(const RunRecord& run, nlohmann::json& view); // run table and file links
+void add_groundwater(const RunRecord& run, nlohmann::json& view); // seepage: verdict, gaps, sides, gap flow
 void add_cfd_dem(const RunRecord& run, nlohmann::json& view);   // CFD-DEM: bed, fluidisation, curves, run, files
 void add_erosion(const RunRecord& run, nlohmann::json& view);
 // A line chart with its titles (the CFD-DEM sections' charts).

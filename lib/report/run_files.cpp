@@ -100,6 +100,8 @@ FieldSnapshot read_field(const fs::path& file) {
     s.volume.push_back(V->GetTuple1(i));
     s.boundary.push_back(static_cast<int>(std::lround(B->GetTuple1(i))));
   }
+  if (vtkDataArray* q = grid->GetPointData()->GetArray("darcy_flux"))
+    for (vtkIdType i = 0; i < n; ++i) s.darcy_flux.emplace_back(q->GetTuple3(i)[0], q->GetTuple3(i)[1]);
   return s;
 }
 

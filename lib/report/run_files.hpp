@@ -32,6 +32,7 @@ struct FieldSnapshot {
   std::vector<double> volume;
   std::vector<int> boundary;  // -1 free
   std::vector<double> temperature;
+  std::vector<particles::Vec<2>> darcy_flux;  // m/s; empty without groundwater
 };
 FieldSnapshot read_field(const std::filesystem::path& file);
 
