@@ -187,3 +187,38 @@ TEST_CASE("Groundwater: at 4 m/d the scaled ring does not close and the verdict 
   CHECK(verdict.rfind("no closure: the frozen area stopped growing (steady state) by day ", 0) == 0);
   CHECK(s["groundwater"]["frozen_area_growth_per_day"].get<double>() < 0.01 / (0.2 * 24));
 }
+
+// The shipped seepage study (projects/study_seepage.json), its variants
+// kept, on the scaled ring for 8 days: closure comes later as the flow
+// grows, 2 and 4 m/d do not close by then, and study.html shows closure against the
+// seepage with a row per variant.
+TEST_CASE("The shipped seepage study, on the scaled ring, delays closure with the flow", "[groundwater][study][cli]") {
+  frostwall::test::TempDir dir;
+  json study = json::parse(std::ifstream((fs::path(FROSTWALL_SOURCE_DIR) / "projects") / "study_seepage.json"));
+  json patch = scaled_ring(nullptr);
+  for (const char* key : {"name", "output", "soil", "pipe"}) patch.erase(key);
+  patch["output"] = {{"vtk", false}, {"report", false}};
+  study["patch"] = patch;
+  study["base"] = ((fs::path(FROSTWALL_SOURCE_DIR) / "projects") / "single_ring_sand.json").string();
+  study["output"]["directory"] = "out";
+  std::ofstream(dir.path / "study.json") << study.dump(2);
+  const std::string line = "cd '" + dir.path.string() + "' && '" FROSTWALL_EXE "' study study.json > log.txt 2>&1";
+  const int status = std::system(line.c_str());
+  REQUIRE(WIFEXITED(status));
+  CHECK(WEXITSTATUS(status) == 0);
+  std::vector<double> closures;
+  for (const char* name : {"still", "seepage-0.5", "seepage-1", "seepage-2", "seepage-4"})
+    closures.push_back(closure(json::parse(std::ifstream(dir.path / "out" / name / "summary.json"))));
+  WARN(fmt::format("closure {:.3f} / {:.3f} / {:.3f} / {:.3g} / {:.3g} d (still, 0.5, 1, 2, 4 m/d; 1e9: open)", closures[0],
+                   closures[1], closures[2], closures[3], closures[4]));
+  for (std::size_t k = 1; k < closures.size(); ++k)
+    if (closures[k - 1] < 1e9) CHECK(closures[k] > closures[k - 1]);  // later, or not at all
+  CHECK(closures[2] < 1e9);                                              // 1 m/d closes within 8 days
+  CHECK(closures.back() == 1e9);  // open after 8 days
+  std::ifstream in(dir.path / "out" / "study.html");
+  const std::string html((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  CHECK(html.find("<h2>Closure against seepage</h2>") != std::string::npos);
+  CHECK(html.find("closure against the regional seepage") != std::string::npos);
+  for (const char* name : {"still", "seepage-0.5", "seepage-4"})
+    CHECK(html.find(fmt::format("<td class=\"nowrap\"><a href=\"{0}/report.html\">{0}</a></td>", name)) != std::string::npos);
+}

@@ -11,6 +11,7 @@
 #include "report/svg_chart.hpp"
 #include "report/templates.hpp"
 #include "study/study_erosion.hpp"
+#include "study/study_seepage.hpp"
 
 namespace frostwall::study {
 
@@ -181,6 +182,7 @@ json study_view(const Study& study, const StudyRun& run, const std::vector<Stand
   view["chart_svg"] = chart.series.empty() ? "" : report::render_svg(chart);
   view["has_erosion"] = false;
   add_erosion(run, view);
+  add_seepage(run, view);
   if (view["has_erosion"].get<bool>()) view["has_results"] = false;  // no frozen wall to rank
   return view;
 }

@@ -1,0 +1,72 @@
+#include "study/study_seepage.hpp"
+
+#include <cmath>
+#include <fmt/core.h>
+
+#include "report/nice_scale.hpp"
+#include "report/svg_chart.hpp"
+
+namespace frostwall::study {
+
+using nlohmann::json;
+
+namespace {
+
+std::string number(double v, int decimals) { return std::isfinite(v) ? report::tick_label(v, decimals) : "–"; }
+double get(const json& j, const char* key) { return j.contains(key) && j[key].is_number() ? j[key].get<double>() : NAN; }
+
+// |q| in m/d; 0 for still water.
+double seepage(const json& summary) {
+  if (!summary.contains("groundwater")) return 0.0;
+  const auto& q = summary["groundwater"]["darcy_flux_m_per_day"];
+  return std::hypot(q[0].get<double>(), q[1].get<double>());
+}
+
+}  // namespace
+
+bool has_seepage(const StudyRun& run) {
+  for (const auto& v : run.variants)
+    if (v.ok && v.summary.contains("groundwater")) return true;
+  return false;
+}
+
+void add_seepage(const StudyRun& run, json& view) {
+  view["has_seepage"] = has_seepage(run);
+  if (!view["has_seepage"].get<bool>()) return;
+  json rows = json::array();
+  report::Series closed{"closed", {}, {}, "", false, true, 1.8};
+  report::Series open{"no closure (at the run's end)", {}, {}, "#c0392b", true, true, 1.2};
+  double end = 0.0;
+  for (const auto& v : run.variants) {
+    if (!v.ok || !v.summary.contains("wall")) continue;
+    const double q = seepage(v.summary), closure = get(v.summary, "closure_time_days");
+    const json& walls = v.summary["wall"];
+    const json last_wall = walls.empty() ? json::object() : walls.back();
+    end = std::max(end, get(last_wall, "day"));
+    if (std::isfinite(closure)) closed.x.push_back(q), closed.y.push_back(closure);
+    else open.x.push_back(q), open.y.push_back(get(last_wall, "day"));
+    const json g = v.summary.value("groundwater", json::object());
+    const json gap = g.value("last_gap", json(nullptr));
+    rows.push_back({{"name", v.name},
+                    {"href", v.name + "/report.html"},
+                    {"flux", number(q, 2)},
+                    {"closure", number(closure, 2)},
+                    {"last_gap", gap.is_object() ? fmt::format("{} ({})", gap.value("between", ""), gap.value("position", "")) : "–"},
+                    {"upstream", number(get(last_wall, "min_thickness_upstream"), 2)},
+                    {"downstream", number(get(last_wall, "min_thickness_downstream"), 2)},
+                    {"day", number(get(last_wall, "day"), 1)},
+                    {"verdict", g.value("verdict", std::string("still water"))}});
+  }
+  report::Chart chart;
+  chart.title = "closure against the regional seepage";
+  chart.x_label = "regional Darcy flux (m/d)";
+  chart.y_label = "closure (day)";
+  chart.x_include = {0.0};
+  chart.y_include = {0.0};
+  chart.series.push_back(std::move(closed));
+  if (!open.x.empty()) chart.series.push_back(std::move(open));
+  view["seepage_rows"] = rows;
+  view["seepage_chart_svg"] = report::render_svg(chart);
+}
+
+}  // namespace frostwall::study
