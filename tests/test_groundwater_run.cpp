@@ -16,6 +16,10 @@
 #include <vtkUnstructuredGrid.h>
 #include <vtkXMLUnstructuredGridReader.h>
 
+#include "report/mustache_view.hpp"
+#include "report/report.hpp"
+#include "report/templates.hpp"
+#include "report_view_check.hpp"
 #include "temp_dir.hpp"
 
 namespace fs = std::filesystem;
@@ -140,6 +144,12 @@ TEST_CASE("Groundwater: the Darcy flux in the VTU is the regional flow away from
       CHECK(html.find(std::string("<td>") + gap + "</td>") != std::string::npos);
     CHECK(html.find("Water through each gap") != std::string::npos);
     CHECK(html.find("white arrows: the groundwater") != std::string::npos);
+    const json view = frostwall::report::report_view(out);
+    for (const auto& name :
+         frostwall::report::template_names(frostwall::test::split_section(frostwall::report::templates::report_html, "has_groundwater").first)) {
+      INFO(name);
+      CHECK(frostwall::test::has_key(view, name));
+    }
     fs::path file;
     for (const auto& entry : fs::directory_iterator(out))
       if (entry.path().filename().string().rfind("field_", 0) == 0 && entry.path().extension() == ".vtu") file = entry.path();

@@ -15,6 +15,7 @@
 
 #include "cli.hpp"
 #include "html_check.hpp"
+#include "report_view_check.hpp"
 #include "io/point_cloud_vtk.hpp"
 #include "report/base64.hpp"
 #include "report/colour_scale.hpp"
@@ -30,6 +31,8 @@
 #include "temp_dir.hpp"
 
 using namespace frostwall;
+using test::has_key;
+using test::split_section;
 namespace fs = std::filesystem;
 using nlohmann::json;
 
@@ -58,27 +61,6 @@ void coarse_main_job(const fs::path& out) {
   run::RunOptions options;
   options.project_text = j.dump(2);
   run::run_project(project::parse_project(options.project_text), options);
-}
-
-bool has_key(const json& j, const std::string& key) {
-  if (j.is_object()) {
-    if (j.contains(key)) return true;
-    for (const auto& [k, v] : j.items())
-      if (has_key(v, key)) return true;
-  } else if (j.is_array()) {
-    for (const auto& v : j)
-      if (has_key(v, key)) return true;
-  }
-  return false;
-}
-
-// The template split at a section {{#name}}...{{/name}}: (inside, the rest).
-std::pair<std::string, std::string> split_section(std::string_view t, const std::string& name) {
-  const std::string open = "{{#" + name + "}}", close = "{{/" + name + "}}";
-  const std::size_t a = t.find(open), b = t.find(close);
-  REQUIRE(a != std::string_view::npos);
-  REQUIRE(b != std::string_view::npos);
-  return {std::string(t.substr(a, b + close.size() - a)), std::string(t.substr(0, a)) + std::string(t.substr(b + close.size()))};
 }
 
 // The output directory of a porous plate's run, written by hand with the
@@ -169,7 +151,8 @@ TEST_CASE("The report of a shaft run fills every placeholder, loads nothing and 
   // empty); the frost damage section's own names are checked on a porous
   // plate's view.
   const json view = report::report_view(out);
-  const std::string thermal = split_section(split_section(report::templates::report_html, "has_frost").second, "has_cfd_dem").second;
+  const std::string thermal = split_section(
+      split_section(split_section(report::templates::report_html, "has_frost").second, "has_cfd_dem").second, "has_groundwater").second;
   for (const auto& name : report::template_names(thermal)) {
     INFO(name);
     CHECK(has_key(view, name));
