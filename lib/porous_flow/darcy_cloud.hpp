@@ -6,7 +6,8 @@
 // k_ij the pair's relative permeability (4 k_i k_j / (k_i + k_j): 2k for
 // equal k, the conduction operator's convention). V_i G_ij = V_j G_ji, so
 // the system is symmetric; it is factored (sparse LDL^T) rather than
-// iterated, because frozen ground makes k_r span six orders of magnitude.
+// iterated, because frozen ground makes k_r span six orders of magnitude
+// (Eigen's simplicial LDL^T, CHOLMOD's supernodal LL^T on large clouds).
 // Fixed particles either hold a potential (the far field: psi = -q_inf . x
 // for a regional flux q_inf) or carry no flow (pipes): their pairs drop out.
 //
