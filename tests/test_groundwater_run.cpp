@@ -125,6 +125,25 @@ TEST_CASE("Groundwater without flow is still water, and flowing water delays clo
   }
 }
 
+// The regional flow from the heads far from the shaft (the hydraulic
+// gradient measured by piezometers) is Darcy's q = K i: the same run as the
+// flux given, to the last digit.
+TEST_CASE("Groundwater: a hydraulic gradient is the flux K i", "[groundwater][cli]") {
+  json by_flux = scaled_ring({1.0, 0.0});
+  by_flux["time"] = {{"end", 1}, {"unit", "d"}, {"snapshots", {1}}};
+  json by_gradient = by_flux;
+  auto& g = by_gradient["groundwater"];
+  g.erase("darcy_flux");
+  g.erase("unit");
+  g["hydraulic_gradient"] = {1.0 / 86400.0 / 1e-4, 0.0};  // 1 m/d over K = 1e-4 m/s
+  const json a = run(by_flux), b = run(by_gradient);
+  CHECK(b["groundwater"]["darcy_flux_m_per_day"][0].get<double>() == Approx(1.0).epsilon(1e-12));
+  CHECK(b["groundwater"]["hydraulic_gradient"][0].get<double>() == Approx(0.115741).epsilon(1e-5));
+  CHECK(a["groundwater"]["hydraulic_gradient"].is_null());
+  CHECK(b["wall"].back()["min_thickness"] == a["wall"].back()["min_thickness"]);
+  CHECK(b["heat_balance"]["stored_change"].get<double>() == Approx(a["heat_balance"]["stored_change"].get<double>()).epsilon(1e-12));
+}
+
 // The Darcy flux written to the VTU, before the ground has frozen much
 // (0.01 d): beyond 1.5 m the six small pipes (6 cm radius, 0.8 m out)
 // disturb a uniform flow by under 1 % (a dipole, (a / d)^2), so the mean

@@ -24,8 +24,12 @@ struct Groundwater {
   std::optional<double> permeability;            // m^2
   std::optional<double> hydraulic_conductivity;  // m/s
   porous_flow::PermeabilityLaw law;              // its porosity is the soil's
-  // The regional Darcy flux far from the shaft, m/s (given in m/d or m/s).
+  // The regional Darcy flux far from the shaft, m/s (given in m/d or m/s,
+  // or from the hydraulic gradient: q = K i).
   std::array<double, 2> darcy_flux{0.0, 0.0};
+  // The head's fall per metre along x and y far from the shaft (from
+  // piezometers), when given instead of the flux.
+  std::optional<std::array<double, 2>> hydraulic_gradient;
   // Pore water (defaults near 5 degC): J/(m3 K) heat capacity per volume, Pa s.
   double water_density = 1000.0;
   double water_heat_capacity = 4200.0;  // J/(kg K)
@@ -38,6 +42,7 @@ struct Groundwater {
 
   double speed() const;            // |q|, m/s
   double permeability_m2() const;  // k, m^2 (from K when K was given)
+  double conductivity_m_per_s() const;  // K, m/s (from k when k was given)
 };
 
 }  // namespace frostwall::project

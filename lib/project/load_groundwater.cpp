@@ -12,11 +12,16 @@ double Groundwater::permeability_m2() const {
   return hydraulic_conductivity.value_or(0.0) * water_viscosity / (water_density * 9.81);
 }
 
+double Groundwater::conductivity_m_per_s() const {
+  if (hydraulic_conductivity) return *hydraulic_conductivity;
+  return permeability.value_or(0.0) * water_density * 9.81 / water_viscosity;
+}
+
 namespace detail {
 
 Groundwater read_groundwater(const Node& n) {
   Groundwater g;
-  n.object({"permeability", "hydraulic_conductivity", "porosity", "permeability_law", "darcy_flux", "unit", "water",
+  n.object({"permeability", "hydraulic_conductivity", "porosity", "permeability_law", "darcy_flux", "hydraulic_gradient", "unit", "water",
             "resolve_tolerance", "advection"});
   g.permeability = n["permeability"].positive();
   g.hydraulic_conductivity = n["hydraulic_conductivity"].positive();
@@ -48,7 +53,18 @@ Groundwater read_groundwater(const Node& n) {
   }
   double per_second = 1.0 / 86400.0;
   if (const auto unit = n["unit"].choice<double>("unit", {{"m/d", 1.0 / 86400.0}, {"m/s", 1.0}})) per_second = *unit;
-  if (const Node q = n["darcy_flux"].required(); q.given()) {
+  if (n["darcy_flux"].present() == n["hydraulic_gradient"].present())
+    n["darcy_flux"].problem(R"(give either "darcy_flux" (the regional flux) or "hydraulic_gradient" (the head's fall per metre))");
+  if (const Node i = n["hydraulic_gradient"]; i.present()) {
+    if (i.array() != std::size_t{2}) i.problem(fmt::format("must be [i_x, i_y], got {}", i.shown()));
+    else {
+      g.hydraulic_gradient.emplace();
+      for (std::size_t d = 0; d < 2; ++d)
+        if (const auto v = i[d].number()) (*g.hydraulic_gradient)[d] = *v;
+    }
+    if (n["unit"].present()) n["unit"].problem(R"(only used with "darcy_flux" (a gradient has no unit))");
+  }
+  if (const Node q = n["darcy_flux"]; q.present()) {
     if (q.array() != std::size_t{2}) q.problem(fmt::format("must be [q_x, q_y], got {}", q.shown()));
     else
       for (std::size_t d = 0; d < 2; ++d)
@@ -59,6 +75,9 @@ Groundwater read_groundwater(const Node& n) {
     g.water_heat_capacity = w["heat_capacity"].positive().value_or(g.water_heat_capacity);
     g.water_viscosity = w["viscosity"].positive().value_or(g.water_viscosity);
   }
+  // Darcy's law far from the shaft: q = K i, with the water given above.
+  if (g.hydraulic_gradient)
+    for (std::size_t d = 0; d < 2; ++d) g.darcy_flux[d] = g.conductivity_m_per_s() * (*g.hydraulic_gradient)[d];
   if (const auto tol = n["resolve_tolerance"].positive()) g.resolve_tolerance = *tol;
   if (const auto a = n["advection"].choice<Advection>(
           "advection scheme", {{"implicit", Advection::implicit}, {"limited", Advection::limited}, {"upwind", Advection::upwind}}))

@@ -122,6 +122,7 @@ nlohmann::json groundwater_summary(const project::Groundwater& g, const Groundwa
                                    const post::FrozenAreaTrend& frozen_area, std::optional<double> closure_time) {
   nlohmann::json s = {
       {"darcy_flux_m_per_day", {g.darcy_flux[0] * 86400.0, g.darcy_flux[1] * 86400.0}},
+      {"hydraulic_gradient", g.hydraulic_gradient ? nlohmann::json(*g.hydraulic_gradient) : nlohmann::json(nullptr)},
       {"permeability_m2", g.permeability_m2()},
       {"permeability_law", g.law.name()},
       {"impedance", g.law.model == porous_flow::PermeabilityModel::impedance ? nlohmann::json(g.law.impedance) : nlohmann::json(nullptr)},
