@@ -39,10 +39,12 @@ INDEPENDENT_CLOSURE = 13.85  # d: P1 FE and vertex-centred FV enthalpy models, c
 CONVERGENCE_SPACINGS = [0.04, 0.03, 0.02, 0.015, 0.01, 0.007]
 
 
-def run(numerics, threads, workdir, name, exe=EXE, time_settings=None):
-    """Runs the case with `numerics` (None: defaults); returns summary, peak RSS, wall and CPU time."""
+def run(numerics, threads, workdir, name, exe=EXE, time_settings=None, extra=None):
+    """Runs the case with `numerics` (None: defaults) and the top-level blocks of `extra`
+    set; returns summary, peak RSS, wall and CPU time."""
     with open(CASE) as f:
         project = json.load(f)
+    project.update(extra or {})
     if time_settings is not None:
         project["time"] = time_settings
     if numerics is None:
