@@ -29,7 +29,7 @@ double HeatAdvection::stable_step(const ThermalModel& model) const {
 void HeatAdvection::rate(const ThermalModel& model, double t, std::vector<double>& rate, std::vector<double>& boundary_heat) const {
   const auto& P = model.pairs();
   if (flux_.size() != P.pairs()) throw std::logic_error("HeatAdvection: one flux per pair expected");
-  const bool limited = scheme_ != AdvectionScheme::upwind && P.vector.size() == 2 * P.pairs();
+  const bool limited = scheme_ == AdvectionScheme::limited;  // the implicit scheme steps its own faces
   if (limited) particles::pair_gradient(P, model.temperature(), gradient_);
   const auto& T = model.temperature();
   const auto& boundary = model.boundary_ids();

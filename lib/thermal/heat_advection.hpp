@@ -57,8 +57,8 @@ class HeatAdvection {
   // unbounded for the implicit scheme.
   double stable_step(const ThermalModel& model) const;
 
-  // V_i dH_i/dt for the free particles (W per metre; the implicit scheme's
-  // is the limited one, which its steady state solves), and the heat the
+  // V_i dH_i/dt for the free particles (W per metre; upwind for the
+  // implicit scheme, whose steps do not use it), and the heat the
   // water carries into the ground from each boundary (W per metre; out is
   // negative).
   // (Wall temperatures at time t.)

@@ -86,8 +86,10 @@ std::vector<double> HeatAdvection::advance_implicit(ThermalModel& model, double 
   const auto& boundary = model.boundary_ids();
   std::vector<double> wall(model.boundaries().size()), carried(wall.size(), 0.0);
   for (std::size_t b = 0; b < wall.size(); ++b) wall[b] = model.boundaries()[b].temperature.at(t + dt);
-  start_.assign(H.begin(), H.begin() + long(n));  // the new enthalpies, filled in order
-  rate_.assign(n, 0.0);                           // the new temperatures
+  // Reused buffers: start_ holds the new enthalpies, rate_ the new
+  // temperatures, filled in downstream order.
+  start_.assign(H.begin(), H.begin() + long(n));
+  rate_.assign(n, 0.0);
   theta_.assign(n, 1.0);
   const double w = dt * rho_c_w_;
   for (const std::uint32_t i : order_) {
