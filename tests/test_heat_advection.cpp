@@ -16,6 +16,7 @@
 #include "sph/kernel.hpp"
 #include "sph/laplacian.hpp"
 #include "sph/wall_extrapolation.hpp"
+#include "thermal/backward_euler.hpp"
 #include "thermal/heat_advection.hpp"
 #include "thermal/integrator.hpp"
 #include "no_phase_change_soil.hpp"
@@ -110,7 +111,47 @@ double steady_error(double s, double q, thermal::AdvectionScheme scheme, double 
   return worst;
 }
 
+// The coupled scheme: water and conduction in one backward-Euler step of
+// `courant` upwind stable steps, to steady state. Returns the worst error
+// and adds the Newton iterations per step to `newton`.
+double coupled_steady_error(double s, double q, double courant, double* newton = nullptr) {
+  Strip strip = make_strip(s, q, 0.5);
+  auto& model = *strip.model;
+  thermal::HeatAdvection water(rho_c_w, strip.darcy->pair_flux(), thermal::AdvectionScheme::coupled);
+  thermal::BackwardEuler step({}, 1.0);
+  step.couple(&water);
+  const double dt = courant * thermal::HeatAdvection(rho_c_w, strip.darcy->pair_flux(), thermal::AdvectionScheme::upwind).stable_step(model);
+  const double end = 6.0 * L * L * rho_c / lambda;
+  model.apply_boundaries(0.0);
+  for (double t = 0.0; t < end; t += dt) step.advance(model, t, dt), model.apply_boundaries(t + dt);
+  if (newton) *newton = double(step.statistics().newton_iterations) / double(step.statistics().steps);
+  double worst = 0.0;
+  for (std::size_t i = 0; i < model.free_count(); ++i)
+    worst = std::max(worst, std::abs(model.temperature()[i] - exact(strip.cloud.position[i][0], q)) / (T1 - T0));
+  return worst;
+}
+
 }  // namespace
+
+TEST_CASE("Coupled water and conduction: the steady profile within 1 % at any step, second order", "[groundwater][advection]") {
+  // One backward-Euler system for both: its steady state is the discrete
+  // balance itself, so the step (Courant 1 to 100) must not move it; the
+  // limited faces keep second order (20 -> 40 particles across).
+  const double q = 3.0 * lambda / (rho_c_w * L);  // Peclet 3
+  double newton_1 = 0.0, newton_100 = 0.0;
+  const double at_1 = coupled_steady_error(L / 20.0, q, 1.0, &newton_1);
+  const double at_10 = coupled_steady_error(L / 20.0, q, 10.0);
+  const double at_100 = coupled_steady_error(L / 20.0, q, 100.0, &newton_100);
+  const double fine = coupled_steady_error(L / 40.0, q, 10.0);
+  const double explicit_limited = steady_error(L / 20.0, q, thermal::AdvectionScheme::limited);
+  INFO(fmt::format("worst error {:.5f} / {:.5f} / {:.5f} at Courant 1 / 10 / 100, {:.5f} at 40 across; explicit limited {:.5f}; "
+                   "Newton iterations a step {:.1f} at Courant 1, {:.1f} at 100",
+                   at_1, at_10, at_100, fine, explicit_limited, newton_1, newton_100));
+  CHECK(at_10 < 0.01);
+  CHECK(std::abs(at_100 - at_1) < 1e-4);
+  CHECK(std::abs(at_10 - explicit_limited) < 0.2 * explicit_limited);
+  CHECK(fine < 0.35 * at_10);
+}
 
 TEST_CASE("Advection-conduction between two faces reaches the exponential profile within 1 %", "[groundwater][advection]") {
   // Limited: second order (the error falls about fourfold from 20 to 40
@@ -140,15 +181,19 @@ TEST_CASE("The water's heat: a sharp front makes no new extremum, and energy bal
   // The implicit scheme at Courant 1, 4 and 10 (its step in upwind stable
   // steps; the explicit ones at the conduction's step, within theirs).
   using S = thermal::AdvectionScheme;
-  for (auto [scheme, courant] : {std::pair{S::upwind, 0.0}, {S::limited, 0.0}, {S::implicit, 1.0}, {S::implicit, 4.0}, {S::implicit, 10.0}}) {
+  for (auto [scheme, courant] : {std::pair{S::upwind, 0.0}, {S::limited, 0.0}, {S::implicit, 1.0}, {S::implicit, 4.0}, {S::implicit, 10.0},
+                                 {S::coupled, 1.0}, {S::coupled, 4.0}, {S::coupled, 10.0}}) {
     const double s = L / 40.0, q = 20.0 * lambda / (rho_c_w * L);  // Peclet 20: a sharp front
     Strip strip = make_strip(s, q, T1);  // warm ground, cold water entering
     auto& model = *strip.model;
     thermal::HeatAdvection water(rho_c_w, strip.darcy->pair_flux(), scheme);
-    thermal::ExplicitEuler conduction(0.1, 1.3 * s);
+    thermal::ExplicitEuler explicit_conduction(0.1, 1.3 * s);
+    thermal::BackwardEuler implicit_conduction({}, 1.0);  // the coupled scheme's step, water included
+    implicit_conduction.couple(&water);
+    thermal::Integrator& conduction = scheme == S::coupled ? static_cast<thermal::Integrator&>(implicit_conduction) : explicit_conduction;
     const double dt = courant > 0.0 ? courant * thermal::HeatAdvection(rho_c_w, strip.darcy->pair_flux(), S::upwind).stable_step(model)
-                                    : conduction.preferred_step(model);
-    const int substeps = int(std::ceil(dt / conduction.preferred_step(model) - 1e-9));
+                                    : explicit_conduction.preferred_step(model);
+    const int substeps = scheme == S::coupled ? 1 : int(std::ceil(dt / explicit_conduction.preferred_step(model) - 1e-9));
     model.apply_boundaries(0.0);
     double stored = model.stored_heat(), worst_balance = 0.0, scale = 0.0;
     double lowest = 1e9, highest = -1e9;
@@ -169,9 +214,16 @@ TEST_CASE("The water's heat: a sharp front makes no new extremum, and energy bal
       for (std::size_t i = 0; i < model.free_count(); ++i)
         lowest = std::min(lowest, model.temperature()[i]), highest = std::max(highest, model.temperature()[i]);
     }
-    INFO((scheme == S::upwind ? "upwind" : scheme == S::limited ? "limited" : "implicit") << " Courant " << courant);
+    INFO((scheme == S::upwind ? "upwind" : scheme == S::limited ? "limited" : scheme == S::implicit ? "implicit" : "coupled")
+         << " Courant " << courant);
     INFO(fmt::format("balance {:.3g} J of {:.3g} J a step; T in [{:.6f}, {:.6f}]", worst_balance, scale, lowest, highest));
-    CHECK(worst_balance < 1e-9 * scale);
+    // The coupled step balances to its Newton tolerance (each particle's
+    // residual below 1e-7 of the enthalpy scale over the step), the others
+    // to round-off.
+    double area = 0.0;
+    for (std::size_t i = 0; i < model.free_count(); ++i) area += model.volume()[i];
+    const double newton_bound = thermal::BackwardEulerSettings{}.newton_tolerance * thermal::ActivityStepControl::enthalpy_scale(model) * area;
+    CHECK(worst_balance < (scheme == S::coupled ? newton_bound : 1e-9 * scale));
     CHECK(lowest >= T0 - 1e-9);  // the front has arrived: something below T1
     CHECK(lowest < 0.5 * (T0 + T1));
     CHECK(highest <= T1 + 1e-9);

@@ -15,8 +15,9 @@ namespace frostwall::project {
 // How the heat the water carries is stepped (thermal/heat_advection.hpp):
 // explicit limited (the default) or upwind, held to the advective Courant
 // limit; or implicit upwind at the conduction's step (screening: fast, a
-// few percent late on closure).
-enum class Advection { limited, upwind, implicit };
+// few percent late on closure); or coupled: limited faces inside the
+// conduction's backward-Euler step (one system for both, any step).
+enum class Advection { limited, upwind, implicit, coupled };
 
 struct Groundwater {
   // One of the two, as given; the other follows from the water below

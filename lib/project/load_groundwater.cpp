@@ -80,7 +80,8 @@ Groundwater read_groundwater(const Node& n) {
     for (std::size_t d = 0; d < 2; ++d) g.darcy_flux[d] = g.conductivity_m_per_s() * (*g.hydraulic_gradient)[d];
   if (const auto tol = n["resolve_tolerance"].positive()) g.resolve_tolerance = *tol;
   if (const auto a = n["advection"].choice<Advection>(
-          "advection scheme", {{"implicit", Advection::implicit}, {"limited", Advection::limited}, {"upwind", Advection::upwind}}))
+          "advection scheme",
+          {{"coupled", Advection::coupled}, {"implicit", Advection::implicit}, {"limited", Advection::limited}, {"upwind", Advection::upwind}}))
     g.advection = *a;
   return g;
 }

@@ -452,6 +452,15 @@ Project read_project(const Node& root) {
     if (!shaft) water.problem(R"(only used with "shaft" sections in this version)");
     else {
       project.groundwater = detail::read_groundwater(water);
+      // The coupled scheme is part of the backward-Euler step: it brings that
+      // integrator (and its step change) unless another was asked for.
+      if (project.groundwater->advection == Advection::coupled) {
+        const Node numerics = root["numerics"];
+        if (numerics["integrator"].present() && project.numerics.integrator != IntegratorKind::implicit)
+          water["advection"].problem(R"("coupled" needs "numerics": {"integrator": "implicit"} (or no integrator))");
+        project.numerics.integrator = IntegratorKind::implicit;
+        if (!numerics["step_change"].present()) project.numerics.step_change = 0.25;
+      }
       project.warnings.push_back(
           "groundwater: the coupling is new (issue 17 in progress): beside frozen ground the flow is 7-9 % off, "
           "not the 2 % asked, and a full-size run is slow (hours: the step is held to the advective Courant "

@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <fmt/core.h>
 
 #include "porous_flow/darcy_velocity.hpp"
 #include "post/flow_side.hpp"
 #include "run/model.hpp"
+#include "thermal/backward_euler.hpp"
 
 namespace frostwall::run {
 
@@ -29,6 +31,7 @@ thermal::AdvectionScheme scheme_of(project::Advection a) {
     case project::Advection::limited: return thermal::AdvectionScheme::limited;
     case project::Advection::upwind: return thermal::AdvectionScheme::upwind;
     case project::Advection::implicit: return thermal::AdvectionScheme::implicit;
+    case project::Advection::coupled: return thermal::AdvectionScheme::coupled;
     default: return thermal::AdvectionScheme::limited;
   }
 }
@@ -42,6 +45,11 @@ GroundwaterFlow::GroundwaterFlow(const project::Groundwater& water, Model& m)
       darcy_(m.model->pairs(), m.particles().volume, fixed_potentials(water, m)),
       heat_(water.water_density * water.water_heat_capacity, {}, scheme_of(water.advection)),
       k_(m.particles().size(), 1.0) {
+  if (water.advection == project::Advection::coupled) {
+    auto* implicit = thermal::find_integrator<thermal::BackwardEuler>(conduction_.get());
+    if (!implicit) throw std::logic_error("GroundwaterFlow: the coupled scheme needs the backward-Euler integrator");
+    implicit->couple(&heat_);
+  }
   solve_if_changed(*m.model);
 }
 
@@ -81,6 +89,7 @@ double GroundwaterFlow::preferred_step(const thermal::ThermalModel& model) const
 std::vector<double> GroundwaterFlow::advance(thermal::ThermalModel& model, double t, double dt) {
   if (water_.speed() == 0.0) return conduction_->advance(model, t, dt);  // still water carries nothing
   solve_if_changed(model);
+  if (heat_.scheme() == thermal::AdvectionScheme::coupled) return conduction_->advance(model, t, dt);  // both in one step
   auto heat = heat_.advance(model, t, 0.5 * dt);
   const auto conducted = conduction_->advance(model, t, dt);
   const auto carried = heat_.advance(model, t + 0.5 * dt, 0.5 * dt);

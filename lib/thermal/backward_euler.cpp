@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "particles/parallel.hpp"
+#include "thermal/heat_advection.hpp"
 
 namespace frostwall::thermal {
 
@@ -72,9 +73,13 @@ struct BackwardEuler::LinearSystem {
   }
 
   // Writes the matrix for the current coefficients; slope[i] = dT/dH
-  // (0: pinned). Returns nothing: the values live in A.
+  // (0: pinned). With water, its upwind part: a particle's outflows on its
+  // diagonal, its inflows from free particles off it (w = rho_w c_w).
   void assemble(const ThermalModel& model, const std::vector<double>& a, const std::vector<double>& slope,
-                double dt) {
+                double dt, const HeatAdvection* water) {
+    const std::vector<double>* flux = water ? &water->pair_flux() : nullptr;
+    const double w = water ? water->water_heat_capacity() : 0.0;
+    const auto& V = model.volume();
     const auto& P = model.pairs();
     double* value = A.valuePtr();
     const int* outer = A.outerIndexPtr();
@@ -89,7 +94,14 @@ struct BackwardEuler::LinearSystem {
         diag += a[e];
         if (pair_entry[e] >= 0) value[pair_entry[e]] -= a[e];
       }
-      for (std::size_t w = wall_start[i]; w < wall_start[i + 1]; ++w) value[wall_entry[w]] += a[wall_pair[w]] * wall_weight[w];
+      for (std::size_t k = wall_start[i]; k < wall_start[i + 1]; ++k) value[wall_entry[k]] += a[wall_pair[k]] * wall_weight[k];
+      if (flux)
+        for (std::size_t e = P.row_start[i]; e < P.row_start[i + 1]; ++e) {
+          const double Q = (*flux)[e];
+          if (P.column[e] == i) continue;  // to its own image: no net heat
+          if (Q > 0.0) diag += w * Q / V[i];
+          else if (Q < 0.0 && pair_entry[e] >= 0) value[pair_entry[e]] += w * Q / V[i];
+        }
       value[diagonal[i]] += diag;
     });
   }
@@ -119,6 +131,7 @@ std::vector<double> BackwardEuler::advance(ThermalModel& model, double t, double
   ++stats_.steps;
   control_.adapt(model, dt);
   std::vector<double> heat = model.boundary_heat_rate();
+  for (std::size_t b = 0; b < heat.size() && water_; ++b) heat[b] += water_heat_[b];  // at the converged state
   for (double& q : heat) q *= dt;
   return heat;
 }
@@ -138,8 +151,10 @@ bool BackwardEuler::try_step(ThermalModel& model, double t, double dt) {
     const std::vector<double>& a_ = model.pair_coefficients();
     const auto& T = model.temperature();
     const auto& H = model.enthalpy();
+    const auto& V = model.volume();
+    if (water_) water_->rate(model, t + dt, water_rate_, water_heat_);
     const double worst = particles::max_over_particles(n, [&](std::size_t i) {
-      double flow = 0.0;
+      double flow = water_ ? water_rate_[i] / V[i] : 0.0;
       for (std::size_t e = P.row_start[i]; e < P.row_start[i + 1]; ++e) flow += a_[e] * (T[P.column[e]] - T[i]);
       residual_[i] = flow - (H[i] - H_old[i]) / dt;
       return std::abs(residual_[i]) * dt / scale;
@@ -152,7 +167,7 @@ bool BackwardEuler::try_step(ThermalModel& model, double t, double dt) {
       slope[i] = model.law_of(i).temperature_slope(H[i], residual_[i]);
       rhs[i] = slope[i] == 0.0 ? 0.0 : residual_[i];
     });
-    system_->assemble(model, a_, slope, dt);
+    system_->assemble(model, a_, slope, dt, water_);
     constexpr double linear_tol = 1e-8;
     system_->solver.setTolerance(linear_tol);
     system_->solver.compute(system_->A);
@@ -173,6 +188,8 @@ bool BackwardEuler::try_step(ThermalModel& model, double t, double dt) {
           else if (!W.row_start.empty())
             for (std::size_t m = W.row_start[j - n]; m < W.row_start[j - n + 1]; ++m) dTj -= W.weight[m] * x[W.column[m]];
           inflow += a_[e] * dTj;
+          if (water_ && j < n && j != i && water_->pair_flux()[e] < 0.0)
+            inflow -= water_->water_heat_capacity() * water_->pair_flux()[e] * dTj / V[i];
         }
         dH = dt * inflow;
       }

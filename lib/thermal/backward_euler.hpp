@@ -16,6 +16,12 @@
 // of a particle per step is held near `step_change` of the latent heat
 // (a particle takes a few steps to freeze, the front moves a fraction of a
 // spacing per step).
+//
+// Flowing groundwater (HeatAdvection's coupled scheme) joins the same
+// step: its rate, with limited faces at the iterate, is part of the
+// residual, and its upwind part of the Newton matrix (which is then not
+// symmetric; BiCGSTAB solves it). One system for both keeps their steady
+// balance independent of the step, which splitting does not.
 #pragma once
 
 #include <memory>
@@ -40,6 +46,8 @@ struct ImplicitStatistics {
   std::size_t steps = 0, newton_iterations = 0, linear_iterations = 0, halvings = 0;
 };
 
+class HeatAdvection;
+
 class BackwardEuler final : public Integrator {
  public:
   BackwardEuler(BackwardEulerSettings settings, double explicit_step);
@@ -48,6 +56,8 @@ class BackwardEuler final : public Integrator {
   std::vector<double> advance(ThermalModel& model, double t, double dt) override;
   const char* name() const override { return "implicit"; }
   const ImplicitStatistics& statistics() const { return stats_; }
+  // The water's heat stepped with the conduction (nullptr: conduction alone).
+  void couple(const HeatAdvection* water) { water_ = water; }
 
  private:
   bool try_step(ThermalModel& model, double t, double dt);
@@ -58,6 +68,8 @@ class BackwardEuler final : public Integrator {
   struct LinearSystem;  // the Newton matrix's fixed pattern and its solver
   std::unique_ptr<LinearSystem> system_;
   std::vector<double> residual_, next_H_;
+  const HeatAdvection* water_ = nullptr;
+  std::vector<double> water_rate_, water_heat_;  // at the iterate: W per metre
 };
 
 }  // namespace frostwall::thermal

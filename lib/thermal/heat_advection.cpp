@@ -14,7 +14,8 @@ HeatAdvection::HeatAdvection(double water_heat_capacity, std::vector<double> pai
 
 double HeatAdvection::stable_step(const ThermalModel& model) const {
   if (stable_ >= 0.0) return stable_;  // fixed until the fluxes change
-  if (scheme_ == AdvectionScheme::implicit) return stable_ = std::numeric_limits<double>::infinity();
+  if (scheme_ == AdvectionScheme::implicit || scheme_ == AdvectionScheme::coupled)
+    return stable_ = std::numeric_limits<double>::infinity();
   const auto& P = model.pairs();
   double step = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < P.n_free; ++i) {
@@ -29,7 +30,10 @@ double HeatAdvection::stable_step(const ThermalModel& model) const {
 void HeatAdvection::rate(const ThermalModel& model, double t, std::vector<double>& rate, std::vector<double>& boundary_heat) const {
   const auto& P = model.pairs();
   if (flux_.size() != P.pairs()) throw std::logic_error("HeatAdvection: one flux per pair expected");
-  const bool limited = scheme_ == AdvectionScheme::limited;  // the implicit scheme steps its own faces
+  // The implicit scheme steps its own faces; the coupled one leaves across
+  // a wall at the particle's temperature (upwind, so monotone at any step).
+  const bool limited = scheme_ == AdvectionScheme::limited || scheme_ == AdvectionScheme::coupled;
+  const bool leave_upwind = scheme_ == AdvectionScheme::coupled;
   if (limited) particles::pair_gradient(P, model.temperature(), gradient_);
   const auto& T = model.temperature();
   const auto& boundary = model.boundary_ids();
@@ -47,7 +51,7 @@ void HeatAdvection::rate(const ThermalModel& model, double t, std::vector<double
       if (fixed) {  // across the wall, at the wall's temperature
         if (Q == 0.0) continue;
         const std::size_t b = std::size_t(boundary[j]);
-        const double heat = rho_c_w_ * Q * wall[b];
+        const double heat = rho_c_w_ * Q * (Q > 0.0 && leave_upwind ? T[i] : wall[b]);
         rate[i] -= heat;
         boundary_heat[b] -= heat;
       } else if (Q > 0.0) {
@@ -66,6 +70,7 @@ void HeatAdvection::rate(const ThermalModel& model, double t, std::vector<double
 
 std::vector<double> HeatAdvection::advance(ThermalModel& model, double t, double dt) {
   if (scheme_ == AdvectionScheme::implicit) return advance_implicit(model, t, dt);
+  if (scheme_ == AdvectionScheme::coupled) return std::vector<double>(model.boundaries().size(), 0.0);
   std::vector<double> carried(model.boundaries().size(), 0.0);
   const double stable = stable_step(model);
   const long steps = std::isfinite(stable) ? std::max(1L, long(std::ceil(dt / stable - 1e-12))) : 1L;

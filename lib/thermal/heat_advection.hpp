@@ -22,6 +22,10 @@
 //    monotone at any step. Screening only: split from the conduction at
 //    long steps, its steady balance of the two moves with the step (the
 //    1-D test: 5 % off at Courant 1, 20 % at 10), and it is first order.
+//  - coupled: limited faces in the conduction's own backward-Euler step
+//    (thermal/backward_euler.hpp), one nonlinear system for both, so the
+//    balance of the two does not move with the step; water leaving across
+//    a wall carries the particle's temperature. advance() does nothing.
 // Because div q = 0, rho_w c_w q . grad T is the same term in advective form.
 #pragma once
 
@@ -32,7 +36,7 @@
 
 namespace frostwall::thermal {
 
-enum class AdvectionScheme { upwind, limited, implicit };
+enum class AdvectionScheme { upwind, limited, implicit, coupled };
 
 class HeatAdvection {
  public:
@@ -48,6 +52,7 @@ class HeatAdvection {
     order_.clear();
   }
   AdvectionScheme scheme() const { return scheme_; }
+  double water_heat_capacity() const { return rho_c_w_; }
   const std::vector<double>& pair_flux() const { return flux_; }
 
   // The largest explicit step that keeps the update monotone: for every
