@@ -133,6 +133,7 @@ TEST_CASE("Groundwater without flow is still water, and flowing water delays clo
 TEST_CASE("Groundwater: the coupled step closes with the explicit scheme as its step shrinks", "[groundwater][cli]") {
   json explicit_run = scaled_ring({1.0, 0.0});
   json coupled = explicit_run, fine = explicit_run;
+  explicit_run["groundwater"]["advection"] = "limited";
   coupled["groundwater"]["advection"] = "coupled";
   fine["groundwater"]["advection"] = "coupled";
   fine["numerics"]["step_change"] = 0.0625;

@@ -13,10 +13,10 @@
 namespace frostwall::project {
 
 // How the heat the water carries is stepped (thermal/heat_advection.hpp):
-// explicit limited (the default) or upwind, held to the advective Courant
-// limit; or implicit upwind at the conduction's step (screening: fast, a
-// few percent late on closure); or coupled: limited faces inside the
-// conduction's backward-Euler step (one system for both, any step).
+// coupled (the default): limited faces inside the conduction's backward-
+// Euler step, one system for both at any step; explicit limited or upwind,
+// held to the advective Courant limit (the reference; with an explicit
+// integrator); or implicit upwind split from the conduction (screening).
 enum class Advection { limited, upwind, implicit, coupled };
 
 struct Groundwater {
@@ -39,7 +39,7 @@ struct Groundwater {
   // has changed since the last solve exceeds this: each particle's
   // throughflow weighted by its permeability's relative change (at most 1).
   double resolve_tolerance = 3e-4;
-  Advection advection = Advection::limited;
+  Advection advection = Advection::coupled;
 
   double speed() const;            // |q|, m/s
   double permeability_m2() const;  // k, m^2 (from K when K was given)

@@ -452,12 +452,19 @@ Project read_project(const Node& root) {
     if (!shaft) water.problem(R"(only used with "shaft" sections in this version)");
     else {
       project.groundwater = detail::read_groundwater(water);
-      // The coupled scheme is part of the backward-Euler step: it brings that
-      // integrator (and its step change) unless another was asked for.
-      if (project.groundwater->advection == Advection::coupled) {
-        const Node numerics = root["numerics"];
-        if (numerics["integrator"].present() && project.numerics.integrator != IntegratorKind::implicit)
+      // The coupled scheme (the default) is part of the backward-Euler step:
+      // flowing water brings that integrator and its step change. An
+      // explicit integrator asked for keeps the explicit limited scheme;
+      // still water keeps the still-water run.
+      auto& g = *project.groundwater;
+      const Node numerics = root["numerics"];
+      const bool other_integrator = numerics["integrator"].present() && project.numerics.integrator != IntegratorKind::implicit;
+      if (g.advection == Advection::coupled && other_integrator) {
+        if (water["advection"].present())
           water["advection"].problem(R"("coupled" needs "numerics": {"integrator": "implicit"} (or no integrator))");
+        g.advection = Advection::limited;
+      }
+      if (g.advection == Advection::coupled && g.speed() > 0.0) {
         project.numerics.integrator = IntegratorKind::implicit;
         if (!numerics["step_change"].present()) project.numerics.step_change = 0.25;
       }

@@ -1,6 +1,7 @@
 // Groundwater flowing through a freezing shaft section (issue 17): the
-// steady Darcy flow on the run's own particle pairs, the heat it carries,
-// and the two alternated with the conduction (Strang: half the water's
+// steady Darcy flow on the run's own particle pairs and the heat it
+// carries, either inside the conduction's backward-Euler step (coupled,
+// the default) or alternated with the conduction (Strang: half the water's
 // heat, the conduction integrator's step, the other half). The flow is
 // solved again when the share of the water whose path ice has changed since
 // the last solve exceeds groundwater.resolve_tolerance. Pipes carry no
