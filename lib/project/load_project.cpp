@@ -470,8 +470,8 @@ Project read_project(const Node& root) {
       }
       project.warnings.push_back(
           "groundwater: the coupling is new (issue 17 in progress): beside frozen ground the flow is 7-9 % off, "
-          "not the 2 % asked, and a full-size run is slow (hours: the step is held to the advective Courant "
-          "limit; \"advection\": \"implicit\" screens faster and closes a few percent late)");
+          "not the 2 % asked, and a full-size run takes more than an hour (the coupled step's Newton "
+          "iterations on the half section the flow leaves)");
     }
   }
   detail::read_pore_settings(root, project);
