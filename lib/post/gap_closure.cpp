@@ -20,8 +20,17 @@ GapClosure::GapClosure(const particles::ParticleSet<2>& P, const std::vector<geo
       Gap gap;
       gap.between = a.label + " - " + b.label;
       gap.middle = 0.5 * (pa + pb);
-      gap.from = pa;
-      gap.to = pb;
+      gap.from = gap.inside_from = pa;
+      gap.to = gap.inside_to = pb;
+      // A mirror line through the gap (the flow between two pipes): keep the
+      // part inside the section; the water through the other is its image.
+      for (const auto& m : P.mirrors) {
+        const double sa = (pa - m.point).dot(m.normal), sb = (pb - m.point).dot(m.normal);
+        if ((sa < 0.0) == (sb < 0.0)) continue;
+        const particles::Vec<2> cut = pa + sa / (sa - sb) * d;
+        (sa < 0.0 ? gap.inside_from : gap.inside_to) = cut;
+        gap.copies = 2.0;
+      }
       for (std::size_t i = 0; i < P.n_free; ++i) {
         const double s = std::clamp((P.position[i] - pa).dot(d) / d.squaredNorm(), 0.0, 1.0);
         if ((P.position[i] - (pa + s * d)).norm() <= 0.75 * P.spacing_of(i)) gap.along.push_back(std::uint32_t(i));
@@ -70,12 +79,18 @@ void GapClosure::observe_flow(double t, const particles::ParticleSet<2>& P, cons
       if ((P.position[i] - gap.middle).norm() > reach) continue;
       for (std::size_t e = pairs.row_start[i]; e < pairs.row_start[i + 1]; ++e) {
         if (Q[e] == 0.0) continue;
+        const std::uint32_t j = pairs.column[e];
         const particles::Vec<2> xj = P.position[i] + particles::Vec<2>(pairs.vector[2 * e], pairs.vector[2 * e + 1]);
-        // Each pair once, from its left end: its flux leaves i for j.
-        if (crossing(gap.from, gap.to, P.position[i], xj) == 1) through += Q[e];
+        const int sign = crossing(gap.inside_from, gap.inside_to, P.position[i], xj);
+        if (sign == 0) continue;
+        // A pair between two particles of the section is stored in both
+        // rows (the halves add up to its flux); a pair to a mirror image
+        // in one (its other row is the image of the crossing, elsewhere).
+        const bool image = (xj - P.position[j]).squaredNorm() > 1e-12 * P.spacing_of(i) * P.spacing_of(i);
+        through += sign * Q[e] * (image ? 1.0 : 0.5);
       }
     }
-    gap.flow.emplace_back(t, std::abs(through));
+    gap.flow.emplace_back(t, gap.copies * std::abs(through));
   }
 }
 

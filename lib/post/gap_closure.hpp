@@ -24,6 +24,10 @@ struct Gap {
   std::string between;               // "outer 3 - outer 4"
   particles::Vec<2> middle;          // the segment's midpoint (m)
   particles::Vec<2> from, to;        // the pipe centres
+  // The part of the segment inside the simulated section, and how many
+  // such parts the whole gap has (2 when a mirror line cuts it).
+  particles::Vec<2> inside_from, inside_to;
+  double copies = 1.0;
   std::vector<std::uint32_t> along;  // free particles on the segment
   std::optional<double> closed;      // s
   double worst = 1.0;                // the largest latent share left along it, last observed
@@ -41,7 +45,8 @@ class GapClosure {
   // DarcyCloud): the sum over the pairs whose segment crosses the one
   // between the pipe centres, from one side to the other. The pair fluxes
   // balance at every particle and pipes carry none, so this is the water
-  // passing between the two pipes. Needs the pairs' vectors.
+  // passing between the two pipes. A gap that a mirror line cuts carries
+  // twice what crosses its half in the section. Needs the pairs' vectors.
   void observe_flow(double t, const particles::ParticleSet<2>& particles, const particles::PairWeights& pairs,
                     const std::vector<double>& pair_flux);
   const std::vector<Gap>& gaps() const { return gaps_; }
