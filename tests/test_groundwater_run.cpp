@@ -300,3 +300,38 @@ TEST_CASE("The shipped seepage study, on the scaled ring, delays closure with th
   for (const char* name : {"still", "seepage-0.5", "seepage-4"})
     CHECK(html.find(fmt::format("<td class=\"nowrap\"><a href=\"{0}/report.html\">{0}</a></td>", name)) != std::string::npos);
 }
+
+// Check 6 at full size, coarsened: the shipped seepage study on the single
+// ring in sand (120 days, the coupled step) with the particle spacing
+// doubled (45 000 particles on the half section instead of 174 000): about
+// 40 minutes on 2 cores, so a long test. Closure must come later as the
+// seepage grows, the wall facing the flow must be the thinner, and at some
+// rate the wall must stop closing.
+TEST_CASE("Seepage sweep on the single ring in sand: later closure, thinner upstream wall, no closure at some rate", "[groundwater][study][cli][long]") {
+  frostwall::test::TempDir dir;
+  json study = json::parse(std::ifstream((fs::path(FROSTWALL_SOURCE_DIR) / "projects") / "study_seepage.json"));
+  study["patch"] = {{"numerics", {{"spacing", 0.04}}}, {"output", {{"vtk", false}, {"report", false}}}};
+  study["base"] = ((fs::path(FROSTWALL_SOURCE_DIR) / "projects") / "single_ring_sand.json").string();
+  study["output"]["directory"] = "out";
+  std::ofstream(dir.path / "study.json") << study.dump(2);
+  const std::string line = "cd '" + dir.path.string() + "' && '" FROSTWALL_EXE "' study study.json > log.txt 2>&1";
+  const int status = std::system(line.c_str());
+  REQUIRE(WIFEXITED(status));
+  REQUIRE(WEXITSTATUS(status) == 0);
+  std::vector<double> closures;
+  for (const char* name : {"still", "seepage-0.5", "seepage-1", "seepage-2", "seepage-4"}) {
+    const json s = json::parse(std::ifstream(dir.path / "out" / name / "summary.json"));
+    closures.push_back(closure(s));
+    if (std::string(name) == "still") continue;
+    const auto& wall = s["wall"].back();
+    INFO(name << ": " << s["groundwater"]["verdict"].get<std::string>());
+    CHECK(wall["min_thickness_upstream"].get<double>() < wall["min_thickness_downstream"].get<double>());
+    CHECK(s["groundwater"]["last_gap"]["position"] == "upstream");
+  }
+  WARN(fmt::format("closure {:.2f} / {:.2f} / {:.3g} / {:.3g} / {:.3g} d (still, 0.5, 1, 2, 4 m/d; 1e9: open)", closures[0],
+                   closures[1], closures[2], closures[3], closures[4]));
+  for (std::size_t k = 1; k < closures.size(); ++k)
+    if (closures[k - 1] < 1e9) CHECK(closures[k] > closures[k - 1]);  // later, or not at all
+  CHECK(closures[0] < 1e9);
+  CHECK(closures.back() == 1e9);  // at 4 m/d the wall does not close
+}
