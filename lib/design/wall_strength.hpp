@@ -1,0 +1,69 @@
+// The thickness a frozen shaft wall needs to carry the lateral ground
+// pressure (issue 18), from the classical thick-cylinder formulas, with a
+// the excavation radius, P the lateral pressure at the layer's depth and s
+// the allowable strength of the frozen soil at the wall's mean temperature
+// (allowable factor times the uniaxial compressive strength):
+//  - Lame, elastic, Tresca:     E = a (sqrt(s / (s - 2 P)) - 1),        s > 2 P
+//  - Lame, elastic, von Mises:  E = a (sqrt(s / (s - sqrt(3) P)) - 1),  s > sqrt(3) P
+//    (the inner face of an elastic thick cylinder under outer pressure
+//    reaches the criterion: sigma_theta(a) = 2 P b^2 / (b^2 - a^2), sigma_r
+//    = 0; von Mises in plane strain with sigma_z the mean of the two, so
+//    sqrt(3)/2 sigma_theta = s);
+//  - Domke:                     E = a (0.29 (P / s) + 2.3 (P / s)^2)
+//    (an empirical fit of elasto-plastic wall design, Domke 1915, as used in
+//    German shaft-sinking practice);
+//  - plastic limit, Tresca:     E = a (exp(P / s) - 1)
+//    (the whole wall yielding: d sigma_r / dr = s / r, sigma_r(a) = 0);
+//  - plastic limit, Mohr-Coulomb, with cohesion c and friction angle phi:
+//    sigma_theta = sigma_c + N sigma_r, N = (1 + sin phi) / (1 - sin phi),
+//    sigma_c = 2 c cos phi / (1 - sin phi) (the allowable factor on c), so
+//    E = a ((1 + (N - 1) P / sigma_c)^(1 / (N - 1)) - 1); it tends to the
+//    Tresca limit with s = 2 c as phi -> 0.
+// An invalid formula (the Lame forms past their limit: the elastic wall
+// cannot carry P at any thickness) gives nullopt.
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+namespace frostwall::design {
+
+enum class Formula { lame_tresca, lame_mises, domke, plastic_tresca, plastic_mohr_coulomb };
+inline constexpr std::array<Formula, 5> all_formulas = {Formula::lame_tresca, Formula::lame_mises, Formula::domke,
+                                                        Formula::plastic_tresca, Formula::plastic_mohr_coulomb};
+std::string_view name(Formula f);
+
+// Mohr-Coulomb parameters of the frozen soil (the cohesion at the wall's
+// mean temperature, MPa, already times the allowable factor).
+struct MohrCoulomb {
+  double cohesion = 0.0;        // MPa
+  double friction_angle = 0.0;  // degrees
+};
+
+// m; a in m, P and s in MPa. plastic_mohr_coulomb needs `mc` (nullopt without).
+std::optional<double> required_thickness(Formula f, double a, double P, double s, const MohrCoulomb* mc = nullptr);
+
+// The frozen soil's uniaxial compressive strength against temperature, MPa
+// (T in degC, below 0): a table interpolated linearly (held at its ends),
+// a + b |T|, or sigma_0 + k |T|^m.
+class StrengthLaw {
+ public:
+  static StrengthLaw table(std::vector<std::pair<double, double>> points);  // [T, sigma_c], any order
+  static StrengthLaw linear(double a, double b);
+  static StrengthLaw power(double sigma_0, double k, double m);
+  double at(double T) const;
+
+ private:
+  enum class Kind { table, linear, power } kind_ = Kind::linear;
+  std::vector<std::pair<double, double>> points_;  // by rising T
+  double p0_ = 0.0, p1_ = 0.0, p2_ = 1.0;
+};
+
+// Why a strength table is not usable (empty when it is): the strength
+// must not fall as the soil gets colder, and every value must be positive.
+std::string table_problem(const std::vector<std::pair<double, double>>& points);
+
+}  // namespace frostwall::design
