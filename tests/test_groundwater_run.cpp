@@ -20,6 +20,7 @@
 #include "report/report.hpp"
 #include "report/templates.hpp"
 #include "report_view_check.hpp"
+#include "run_project_cli.hpp"
 #include "temp_dir.hpp"
 
 namespace fs = std::filesystem;
@@ -43,15 +44,7 @@ json scaled_ring(const json& flux) {
 }
 
 json run(const json& project, const std::function<void(const fs::path&)>& inspect = {}) {
-  frostwall::test::TempDir dir;
-  std::ofstream(dir.path / "p.json") << project.dump(2);
-  const std::string line = "cd '" + dir.path.string() + "' && '" FROSTWALL_EXE "' run p.json > log.txt 2>&1";
-  const int status = std::system(line.c_str());
-  REQUIRE(WIFEXITED(status));
-  REQUIRE(WEXITSTATUS(status) == 0);
-  std::ifstream in(dir.path / "out" / "summary.json");
-  if (inspect) inspect(dir.path / "out");
-  return json::parse(in);
+  return frostwall::test::run_project(project, inspect);
 }
 
 double closure(const json& s) { return s["closure_time_days"].is_null() ? 1e9 : s["closure_time_days"].get<double>(); }

@@ -201,6 +201,15 @@ WallReading WallGauge::measure(const std::vector<double>& liquid_fraction,
   std::vector<double> T(n, std::numeric_limits<double>::quiet_NaN());
   for (std::size_t i = read[OB].first; i <= read[OB].second && i < n; ++i) T[i] = fan_probe_.at(OB * n + i, temperature);
   reading.mean_temperature_OB = mean_over_frozen(radii_, fan_.on_ray(f, OB), T, reading.extents.OB());
+  const int thinnest = reading.extents.thinnest_ray;
+  if (thinnest == OB) {
+    reading.mean_temperature_thinnest = reading.mean_temperature_OB;
+  } else {
+    std::fill(T.begin(), T.end(), std::numeric_limits<double>::quiet_NaN());
+    for (std::size_t i = read[thinnest].first; i <= read[thinnest].second && i < n; ++i) T[i] = fan_probe_.at(thinnest * n + i, temperature);
+    reading.mean_temperature_thinnest =
+        mean_over_frozen(radii_, fan_.on_ray(f, thinnest), T, reading.extents.rays[std::size_t(thinnest)]);
+  }
   return reading;
 }
 

@@ -90,6 +90,7 @@ WallExtents wall_extents(const RayFan& fan, const std::vector<double>& liquid_fr
 struct WallReading {
   WallExtents extents;
   std::optional<double> mean_temperature_OB;
+  std::optional<double> mean_temperature_thinnest;  // over the thinnest ray's stretch
 };
 
 // A fan whose sample weights are computed once, then read at every snapshot.

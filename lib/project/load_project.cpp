@@ -476,6 +476,12 @@ Project read_project(const Node& root) {
   }
   detail::read_pore_settings(root, project);
   project.design = read_design(root["design"]);
+  if (project.design.strength) {
+    const auto* section = std::get_if<ShaftSection>(&project.geometry);
+    if (!section) root["design"]["strength"].problem("only used with shaft sections (the wall round an excavation)");
+    else if (!section->shaft.excavation_radius)
+      root["design"]["strength"].problem(R"(needs "shaft": {"excavation_radius"} (the formulas' a))");
+  }
   project.monitoring = read_monitoring(root["monitoring"]);
   check_sensors_inside(project, root["monitoring"]);
   project.output = read_output(root["output"].required());

@@ -9,11 +9,100 @@
 
 namespace frostwall::project::detail {
 
+namespace {
+
+// [[T, sigma_c], ...], {"a", "b"} (a + b|T|) or {"sigma_0", "k", "m"}.
+std::optional<design::StrengthLaw> read_strength(const Node& n) {
+  if (!n.present()) return std::nullopt;
+  if (n.type() == "array") {
+    const std::size_t size = n.array().value_or(0);
+    std::vector<std::pair<double, double>> points;
+    for (std::size_t k = 0; k < size; ++k) {
+      const Node point = n[k];
+      if (point.array() != std::size_t{2}) {
+        point.problem(fmt::format("must be [T, sigma_c], got {}", point.shown()));
+        continue;
+      }
+      const auto T = point[0].number(), sigma = point[1].number();
+      if (T && sigma) points.emplace_back(*T, *sigma);
+    }
+    if (points.size() != size) return std::nullopt;
+    if (const std::string why = design::table_problem(points); !why.empty()) {
+      n.problem(why);
+      return std::nullopt;
+    }
+    return design::StrengthLaw::table(points);
+  }
+  if (n.type() != "object") {
+    n.problem(R"(must be a table [[T, sigma_c], ...], {"a", "b"} or {"sigma_0", "k", "m"})");
+    return std::nullopt;
+  }
+  if (!n.object({"a", "b", "sigma_0", "k", "m"})) return std::nullopt;
+  if (n["a"].present() || n["b"].present()) {
+    const auto a = n["a"].required().positive(), b = n["b"].required().non_negative();
+    if (a && b) return design::StrengthLaw::linear(*a, *b);
+    return std::nullopt;
+  }
+  const auto s0 = n["sigma_0"].required().non_negative(), k = n["k"].required().positive(), m = n["m"].required().positive();
+  if (s0 && k && m) return design::StrengthLaw::power(*s0, *k, *m);
+  return std::nullopt;
+}
+
+// {"gradient_MPa_per_m"} (times the depth), {"value_MPa"}, or
+// {"unit_weight_kN_per_m3", "earth_pressure_coefficient"} (gamma z K).
+std::optional<double> read_pressure(const Node& n, std::optional<double> depth, const Node& depth_node) {
+  if (!n.object({"gradient_MPa_per_m", "value_MPa", "unit_weight_kN_per_m3", "earth_pressure_coefficient"})) return std::nullopt;
+  const int given = int(n["gradient_MPa_per_m"].present()) + int(n["value_MPa"].present()) + int(n["unit_weight_kN_per_m3"].present());
+  if (given != 1) {
+    n.problem(R"(give one of "gradient_MPa_per_m", "value_MPa" or "unit_weight_kN_per_m3" (with "earth_pressure_coefficient"))");
+    return std::nullopt;
+  }
+  if (const auto value = n["value_MPa"].non_negative()) return value;
+  if (!depth) {
+    depth_node.required();  // a pressure growing with depth needs the depth
+    return std::nullopt;
+  }
+  if (const auto g = n["gradient_MPa_per_m"].positive()) return *g * *depth;
+  const auto gamma = n["unit_weight_kN_per_m3"].positive(), K = n["earth_pressure_coefficient"].required().positive();
+  if (gamma && K) return *gamma * *depth * *K / 1000.0;
+  return std::nullopt;
+}
+
+}  // namespace
+
 Design read_design(const Node& n) {
   Design design;
-  if (!n.object({"required_thickness", "max_mean_temperature"})) return design;
+  if (!n.object({"required_thickness", "max_mean_temperature", "strength", "allowable_factor", "depth", "pressure", "formula",
+                 "friction_angle"}))
+    return design;
   design.required_thickness = n["required_thickness"].positive();
   design.max_mean_temperature = n["max_mean_temperature"].number();
+  design.strength = read_strength(n["strength"]);
+  if (const auto f = n["allowable_factor"].number()) {
+    if (*f <= 0.0 || *f > 1.0) n["allowable_factor"].problem(fmt::format("must be in (0, 1], got {}", *f));
+    else design.allowable_factor = *f;
+  }
+  if (const auto z = n["depth"].number()) {
+    if (*z < 0.0) n["depth"].problem(fmt::format("must not be negative (metres below the surface), got {}", *z));
+    else design.depth = z;
+  }
+  design.pressure = read_pressure(n["pressure"], design.depth, n["depth"]);
+  design.formula = n["formula"].choice<design::Formula>(
+                                 "formula", {{"domke", design::Formula::domke},
+                                             {"lame_mises", design::Formula::lame_mises},
+                                             {"lame_tresca", design::Formula::lame_tresca},
+                                             {"plastic_mohr_coulomb", design::Formula::plastic_mohr_coulomb},
+                                             {"plastic_tresca", design::Formula::plastic_tresca}})
+                       .value_or(design.formula);
+  if (const Node phi = n["friction_angle"]; phi.present())
+    if (const auto v = phi.non_negative()) {
+      if (*v >= 90.0) phi.problem(fmt::format("must be below 90 degrees, got {}", *v));
+      else design.friction_angle = v;
+    }
+  if (design.formula == design::Formula::plastic_mohr_coulomb && !design.friction_angle)
+    n["friction_angle"].problem(R"(needed with "formula": "plastic_mohr_coulomb")");
+  if (n["strength"].present() != n["pressure"].present())
+    (n["strength"].present() ? n["pressure"] : n["strength"]).problem(R"(the wall check needs both "strength" and "pressure")");
   return design;
 }
 

@@ -3,6 +3,8 @@
 // (seconds, metres) except temperatures, which stay in degrees Celsius.
 #pragma once
 
+#include "design/wall_strength.hpp"
+
 #include <array>
 #include <optional>
 #include <stdexcept>
@@ -195,9 +197,19 @@ struct Numerics {
   std::optional<double> max_particles;
 };
 
+// The wall check (issue 18): a target thickness typed in, or the thickness
+// the ground pressure needs from the frozen soil's strength at the wall's
+// mean temperature (design/wall_strength.hpp).
 struct Design {
   std::optional<double> required_thickness;    // m
   std::optional<double> max_mean_temperature;  // degC
+  std::optional<design::StrengthLaw> strength;  // uniaxial compressive, MPa
+  double allowable_factor = 0.5;
+  std::optional<double> depth;                 // m
+  std::optional<double> pressure;              // lateral, MPa, at the depth
+  design::Formula formula = design::Formula::domke;  // the governing one
+  std::optional<double> friction_angle;        // degrees: Mohr-Coulomb's plastic limit
+  bool checks_strength() const { return strength && pressure; }
 };
 
 struct Sensor {

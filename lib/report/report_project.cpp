@@ -170,6 +170,13 @@ void add_design_and_sensors(const project::Project& p, json& view) {
   json rows = json::array();
   rows.push_back(row("required wall thickness", p.design.required_thickness ? number(*p.design.required_thickness, 2) + " m (weakest ray)" : "none"));
   rows.push_back(row("max. mean wall temperature", p.design.max_mean_temperature ? number(*p.design.max_mean_temperature, 1) + " °C (on OB)" : "none"));
+  if (p.design.checks_strength()) {
+    std::string where = p.design.depth ? " at " + number(*p.design.depth, 1) + " m depth" : "";
+    rows.push_back(row("wall check", fmt::format("{} with the lateral pressure {} MPa{}, allowable {} of the frozen soil's strength at "
+                                                 "the thinnest wall's mean temperature",
+                                                 design::name(p.design.formula), number(*p.design.pressure, 3), where,
+                                                 number(p.design.allowable_factor, 2))));
+  }
   view["design_rows"] = rows;
   json sensors = json::array();
   for (const auto& s : p.monitoring)

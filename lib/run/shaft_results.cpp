@@ -12,6 +12,7 @@
 #include "post/closure.hpp"
 #include "post/flow_side.hpp"
 #include "post/isoline.hpp"
+#include "run/design_check.hpp"
 #include "sph/laplacian.hpp"
 #include "particles/symmetry_group.hpp"
 
@@ -121,7 +122,8 @@ ShaftResults::Reading ShaftResults::read(double t, const std::vector<double>& li
                                          const std::vector<double>& temperature) const {
   const auto fan = fan_gauge_->measure(liquid_fraction, temperature);
   const auto planes = planes_gauge_->measure(liquid_fraction, temperature);
-  Reading r{t / day, planes.extents.OA(), planes.extents.OB(), fan.extents.min_thickness, planes.mean_temperature_OB, {}, {}};
+  Reading r{t / day, planes.extents.OA(), planes.extents.OB(), fan.extents.min_thickness, planes.mean_temperature_OB,
+            fan.mean_temperature_thinnest, {}, {}};
   if (project_.groundwater && project_.groundwater->speed() > 0.0) {
     for (int k = 0; k < int(fan.extents.rays.size()); ++k) {
       const double angle = fan_gauge_->fan().ray_angle(k), thick = fan.extents.rays[k].thickness;
@@ -197,11 +199,29 @@ json ShaftResults::finish(const std::filesystem::path& out) const {
       wall[k]["min_thickness_upstream"] = or_null(snapshots_[k].upstream_thickness);
       wall[k]["min_thickness_downstream"] = or_null(snapshots_[k].downstream_thickness);
     }
+  // The wall check from the ground pressure and the frozen soil's strength.
+  const auto& design = project_.design;
+  std::optional<DesignMet> met;
+  if (design.checks_strength()) {
+    const double a = std::get<project::ShaftSection>(project_.geometry).shaft.excavation_radius.value_or(0.0);
+    std::vector<double> days;
+    std::vector<WallCheck> checks;
+    for (std::size_t k = 0; k < snapshots_.size(); ++k) {
+      const auto& r = snapshots_[k];
+      checks.push_back(check_wall(design, a, r.min_thickness, r.mean_temperature_thinnest));
+      days.push_back(r.day);
+      wall[k]["mean_temperature_thinnest"] = or_null(r.mean_temperature_thinnest);
+      wall[k]["allowable_strength"] = or_null(checks.back().allowable);
+      wall[k]["required_thickness"] = or_null(checks.back().required);
+      wall[k]["required_by"] = checks.back().required_by;
+      wall[k]["utilisation"] = or_null(checks.back().utilisation);
+    }
+    met = design_met(days, checks);
+  }
   result["wall"] = wall;
 
   // ---- design: the first time both targets hold, thickness interpolated
-  const auto& design = project_.design;
-  if (design.required_thickness || design.max_mean_temperature) {
+  if (design.required_thickness || design.max_mean_temperature || met) {
     auto meets = [&](const Reading& r) {
       const bool thick = !design.required_thickness || r.min_thickness >= *design.required_thickness;
       const bool cold = !design.max_mean_temperature ||
@@ -227,6 +247,16 @@ json ShaftResults::finish(const std::filesystem::path& out) const {
                         {"max_mean_temperature", or_null(design.max_mean_temperature)},
                         {"reached_day", or_null(reached)},
                         {"pass", reached.has_value()}};
+    if (met) {
+      if (!design.required_thickness && !design.max_mean_temperature)  // the strength check is the only target
+        result["design"]["reached_day"] = or_null(met->day), result["design"]["pass"] = met->day.has_value();
+      result["design"]["met_day"] = or_null(met->day);
+      result["design"]["stays_met"] = met->stays;
+      result["design"]["formula"] = std::string(design::name(design.formula));
+      result["design"]["pressure_MPa"] = *design.pressure;
+      result["design"]["allowable_factor"] = design.allowable_factor;
+      result["design"]["depth"] = or_null(design.depth);
+    }
   }
 
   // ---- monitoring

@@ -51,6 +51,7 @@ class ShaftResults {
     post::FrozenStretch OA, OB;
     double min_thickness;
     std::optional<double> mean_temperature_OB;
+    std::optional<double> mean_temperature_thinnest;  // the thinnest ray's frozen stretch
     // Under seepage: the thinnest ray within 60 degrees of against (upstream)
     // and along (downstream) the flow.
     std::optional<double> upstream_thickness, downstream_thickness;

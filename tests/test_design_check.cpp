@@ -1,0 +1,88 @@
+// Issue 18's wall check through the command line (run/design_check.hpp): a
+// scaled ring with the frozen soil's strength and the ground pressure.
+// Every snapshot's allowable strength, the Domke thickness and the
+// utilisation are recomputed here by hand from the summary's own mean
+// temperature and thinnest wall; the design is met on the first snapshot
+// with utilisation at or below 1; a stronger soil needs less.
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fmt/core.h>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sys/wait.h>
+
+#include "run_project_cli.hpp"
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+json ring_with_design(double strength_slope) {
+  return {{"name", "scaled ring with a wall check"},
+          {"layout", {{"pattern", "single"}, {"outer_ring", {{"radius", 0.8}, {"count", 6}, {"start_angle_deg", 0.0}}}}},
+          {"shaft", {{"excavation_radius", 0.5}}},
+          {"pipe", {{"diameter", 0.127}, {"temperature", -20.0}}},
+          {"soil", "sand"},
+          {"domain", {{"outer_radius", 2.5}, {"initial_temperature", 10.0}, {"far_field", {{"temperature", 10.0}}}}},
+          {"time", {{"end", 12}, {"unit", "d"}, {"snapshots", {4, 6, 8, 10, 12}}}},
+          {"numerics", {{"placement", "lattice"}, {"spacing", 0.05}}},
+          {"design", {{"strength", {{"a", 1.0}, {"b", strength_slope}}},  // illustrative: sigma_c = 1 + b |T| MPa
+                      {"depth", 80.0},
+                      {"pressure", {{"gradient_MPa_per_m", 0.013}}},
+                      {"friction_angle", 10.0}}},
+          {"output", {{"directory", "out"}, {"vtk", false}, {"report", false}}}};
+}
+
+json run(const json& project) { return frostwall::test::run_project(project); }
+
+}  // namespace
+
+TEST_CASE("The wall check: required thickness from pressure and strength, utilisation, the day it is met", "[design][cli]") {
+  const json weak = run(ring_with_design(0.3)), strong = run(ring_with_design(0.6));
+  const double a = 0.5, P = 0.013 * 80.0;
+  CHECK(weak["design"]["pressure_MPa"].get<double>() == Approx(P).epsilon(1e-12));
+  CHECK(weak["design"]["formula"] == "domke");
+  std::optional<double> first_met;
+  bool stays = false;
+  for (const auto& w : weak["wall"]) {
+    INFO("day " << w["day"].get<double>());
+    REQUIRE(w["required_by"].size() == 5);
+    if (w["mean_temperature_thinnest"].is_null()) {
+      CHECK(w["utilisation"].is_null());
+      stays = false;
+      continue;
+    }
+    const double T = w["mean_temperature_thinnest"].get<double>();
+    CHECK(T < 0.0);
+    const double s = 0.5 * (1.0 + 0.3 * std::abs(T));  // allowable factor 0.5 by default
+    CHECK(w["allowable_strength"].get<double>() == Approx(s).epsilon(1e-12));
+    const double domke = a * (0.29 * P / s + 2.3 * (P / s) * (P / s));
+    CHECK(w["required_thickness"].get<double>() == Approx(domke).epsilon(1e-12));
+    CHECK(w["required_by"]["plastic_tresca"].get<double>() == Approx(a * std::expm1(P / s)).epsilon(1e-12));
+    // Mohr-Coulomb with a little friction asks less than Tresca's plastic limit.
+    CHECK(w["required_by"]["plastic_mohr_coulomb"].get<double>() < w["required_by"]["plastic_tresca"].get<double>());
+    const double thinnest = w["min_thickness"].get<double>();
+    if (thinnest > 0.0) {
+      const double u = w["utilisation"].get<double>();
+      CHECK(u == Approx(domke / thinnest).epsilon(1e-12));
+      if (u <= 1.0 && !first_met) first_met = w["day"].get<double>(), stays = true;
+      if (u > 1.0) stays = false;
+    }
+  }
+  WARN(fmt::format("met on day {} (weak soil), day {} (strong soil); the weak wall's last utilisation {:.3f}",
+                   weak["design"]["met_day"].dump(), strong["design"]["met_day"].dump(),
+                   weak["wall"].back()["utilisation"].get<double>()));
+  REQUIRE(first_met.has_value());
+  CHECK(weak["design"]["met_day"].get<double>() == *first_met);
+  CHECK(weak["design"]["stays_met"].get<bool>() == stays);
+  CHECK(weak["design"]["pass"].get<bool>());
+  // A stronger soil at the same temperatures needs less, and is met no later.
+  const auto& w_last = weak["wall"].back();
+  const auto& s_last = strong["wall"].back();
+  CHECK(s_last["required_thickness"].get<double>() < w_last["required_thickness"].get<double>());
+  REQUIRE(strong["design"]["met_day"].is_number());
+  CHECK(strong["design"]["met_day"].get<double>() <= weak["design"]["met_day"].get<double>());
+}
