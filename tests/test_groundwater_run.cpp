@@ -318,7 +318,9 @@ TEST_CASE("Seepage sweep on the single ring in sand: later closure, thinner upst
     if (std::string(name) == "still") continue;
     const auto& wall = s["wall"].back();
     INFO(name << ": " << s["groundwater"]["verdict"].get<std::string>());
-    CHECK(wall["min_thickness_upstream"].get<double>() < wall["min_thickness_downstream"].get<double>());
+    // A wall that never closed has no thickness on either side.
+    if (closures.back() < 1e9) CHECK(wall["min_thickness_upstream"].get<double>() < wall["min_thickness_downstream"].get<double>());
+    else CHECK(wall["min_thickness_upstream"].get<double>() <= wall["min_thickness_downstream"].get<double>());
     CHECK(s["groundwater"]["last_gap"]["position"] == "upstream");
   }
   WARN(fmt::format("closure {:.2f} / {:.2f} / {:.3g} / {:.3g} / {:.3g} d (still, 0.5, 1, 2, 4 m/d; 1e9: open)", closures[0],
