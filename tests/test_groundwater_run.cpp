@@ -296,8 +296,8 @@ TEST_CASE("The shipped seepage study, on the scaled ring, delays closure with th
 
 // Check 6 at full size, coarsened: the shipped seepage study on the single
 // ring in sand (120 days, the coupled step) with the particle spacing
-// doubled (45 000 particles on the half section instead of 174 000): about
-// 40 minutes on 2 cores, so a long test. Closure must come later as the
+// doubled (45 000 particles on the half section instead of 174 000): 52
+// minutes on one core of a shared machine (README: the table), so a long test. Closure must come later as the
 // seepage grows, the wall facing the flow must be the thinner, and at some
 // rate the wall must stop closing.
 TEST_CASE("Seepage sweep on the single ring in sand: later closure, thinner upstream wall, no closure at some rate", "[groundwater][study][cli][long]") {
