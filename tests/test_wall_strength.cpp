@@ -71,7 +71,7 @@ TEST_CASE("Mohr-Coulomb's plastic limit: Tresca without friction, thinner with i
   CHECK(sigma_c / (N - 1.0) * (std::pow(b / a, N - 1.0) - 1.0) == Approx(P).epsilon(1e-12));
 }
 
-TEST_CASE("Strength laws: table, linear and power; a table must not weaken as it gets colder", "[design]") {
+TEST_CASE("Strength laws: table, linear and power, and a table must not weaken as it gets colder", "[design]") {
   const auto table = StrengthLaw::table({{-20.0, 9.0}, {-2.0, 2.0}, {-10.0, 6.0}});
   CHECK(table.at(-10.0) == Approx(6.0));
   CHECK(table.at(-6.0) == Approx(4.0));    // halfway between -10 and -2
