@@ -49,6 +49,20 @@ json run(const json& project, const std::function<void(const fs::path&)>& inspec
 
 double closure(const json& s) { return s["closure_time_days"].is_null() ? 1e9 : s["closure_time_days"].get<double>(); }
 
+// Runs the shipped seepage study (projects/study_seepage.json) on the
+// single ring in sand with `patch` over every variant, into dir/out.
+void run_shipped_seepage_study(const json& patch, const fs::path& dir) {
+  json study = json::parse(std::ifstream((fs::path(FROSTWALL_SOURCE_DIR) / "projects") / "study_seepage.json"));
+  study["patch"] = patch;
+  study["base"] = ((fs::path(FROSTWALL_SOURCE_DIR) / "projects") / "single_ring_sand.json").string();
+  study["output"]["directory"] = "out";
+  std::ofstream(dir / "study.json") << study.dump(2);
+  const std::string line = "cd '" + dir.string() + "' && '" FROSTWALL_EXE "' study study.json > log.txt 2>&1";
+  const int status = std::system(line.c_str());
+  REQUIRE(WIFEXITED(status));
+  REQUIRE(WEXITSTATUS(status) == 0);
+}
+
 }  // namespace
 
 TEST_CASE("Groundwater without flow is still water, and flowing water delays closure", "[groundwater][cli]") {
@@ -265,18 +279,10 @@ TEST_CASE("Groundwater: at 4 m/d the scaled ring does not close and the verdict 
 // seepage with a row per variant.
 TEST_CASE("The shipped seepage study, on the scaled ring, delays closure with the flow", "[groundwater][study][cli]") {
   frostwall::test::TempDir dir;
-  json study = json::parse(std::ifstream((fs::path(FROSTWALL_SOURCE_DIR) / "projects") / "study_seepage.json"));
   json patch = scaled_ring(nullptr);
   for (const char* key : {"name", "output", "soil", "pipe"}) patch.erase(key);
   patch["output"] = {{"vtk", false}, {"report", false}};
-  study["patch"] = patch;
-  study["base"] = ((fs::path(FROSTWALL_SOURCE_DIR) / "projects") / "single_ring_sand.json").string();
-  study["output"]["directory"] = "out";
-  std::ofstream(dir.path / "study.json") << study.dump(2);
-  const std::string line = "cd '" + dir.path.string() + "' && '" FROSTWALL_EXE "' study study.json > log.txt 2>&1";
-  const int status = std::system(line.c_str());
-  REQUIRE(WIFEXITED(status));
-  CHECK(WEXITSTATUS(status) == 0);
+  run_shipped_seepage_study(patch, dir.path);
   std::vector<double> closures;
   for (const char* name : {"still", "seepage-0.5", "seepage-1", "seepage-2", "seepage-4"})
     closures.push_back(closure(json::parse(std::ifstream(dir.path / "out" / name / "summary.json"))));
@@ -302,15 +308,7 @@ TEST_CASE("The shipped seepage study, on the scaled ring, delays closure with th
 // rate the wall must stop closing.
 TEST_CASE("Seepage sweep on the single ring in sand: later closure, thinner upstream wall, no closure at some rate", "[groundwater][study][cli][long]") {
   frostwall::test::TempDir dir;
-  json study = json::parse(std::ifstream((fs::path(FROSTWALL_SOURCE_DIR) / "projects") / "study_seepage.json"));
-  study["patch"] = {{"numerics", {{"spacing", 0.04}}}, {"output", {{"vtk", false}, {"report", false}}}};
-  study["base"] = ((fs::path(FROSTWALL_SOURCE_DIR) / "projects") / "single_ring_sand.json").string();
-  study["output"]["directory"] = "out";
-  std::ofstream(dir.path / "study.json") << study.dump(2);
-  const std::string line = "cd '" + dir.path.string() + "' && '" FROSTWALL_EXE "' study study.json > log.txt 2>&1";
-  const int status = std::system(line.c_str());
-  REQUIRE(WIFEXITED(status));
-  REQUIRE(WEXITSTATUS(status) == 0);
+  run_shipped_seepage_study({{"numerics", {{"spacing", 0.04}}}, {"output", {{"vtk", false}, {"report", false}}}}, dir.path);
   std::vector<double> closures;
   for (const char* name : {"still", "seepage-0.5", "seepage-1", "seepage-2", "seepage-4"}) {
     const json s = json::parse(std::ifstream(dir.path / "out" / name / "summary.json"));
