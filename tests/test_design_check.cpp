@@ -86,3 +86,65 @@ TEST_CASE("The wall check: required thickness from pressure and strength, utilis
   REQUIRE(strong["design"]["met_day"].is_number());
   CHECK(strong["design"]["met_day"].get<double>() <= weak["design"]["met_day"].get<double>());
 }
+
+TEST_CASE("The wall on a design isotherm: thinner than the frozen wall, the same at the front's temperature, and the check uses it",
+          "[design][cli]") {
+  // The sand, freezing over 2 K below 0 degC: the liquid fraction is then
+  // linear in temperature through the band of freezing particles, 0.5 at
+  // -1 degC (with no range, T = 0 across the whole band and the 0 degC wall
+  // takes in all of it, tens of centimetres wider than the 0.5 front).
+  const json sand_with_range = {{"name", "sand freezing over 2 K"},
+                                {"density", 2090},
+                                {"unfrozen", {{"conductivity", 1.86}, {"heat_capacity", 1465.1}}},
+                                {"frozen", {{"conductivity", 2.56}, {"heat_capacity", 1088.4}}},
+                                {"latent_heat", 52875.8},
+                                {"freezing_point", 0.0},
+                                {"freezing_range", 2.0}};
+  auto with_isotherm = [&](std::optional<double> isotherm) {
+    json p = ring_with_design(0.3);
+    p["soil"] = sand_with_range;
+    if (isotherm) p["design"]["isotherm"] = *isotherm;
+    return run(p);
+  };
+  const json cold = with_isotherm(-8.0), colder = with_isotherm(-12.0), front = with_isotherm(-1.0);
+  CHECK(cold["design"]["isotherm"].get<double>() == -8.0);
+  const double spacing = 0.05, a = 0.5, P = 0.013 * 80.0;
+  int compared = 0;
+  for (std::size_t k = 0; k < cold["wall"].size(); ++k) {
+    const auto &w = cold["wall"][k], &w12 = colder["wall"][k], &w0 = front["wall"][k];
+    INFO("day " << w["day"].get<double>());
+    const double frozen = w["min_thickness"].get<double>(), iso = w["isotherm_thickness"].get<double>();
+    // The same run but for the isotherm: the frozen wall is the same.
+    CHECK(w0["min_thickness"].get<double>() == frozen);
+    if (frozen == 0.0) {
+      CHECK(iso == 0.0);
+      continue;
+    }
+    ++compared;
+    CHECK(iso < frozen);
+    CHECK(w12["isotherm_thickness"].get<double>() <= iso);
+    // On the front's own temperature the two walls are one (to the
+    // sampling: fields interpolated from particles on both sides of the band).
+    CHECK(std::abs(w0["isotherm_thickness"].get<double>() - frozen) <= 0.25 * spacing);
+    if (iso > 0.0) {
+      const double T = w["isotherm_mean_temperature"].get<double>();
+      CHECK(T <= -8.0);
+      CHECK(T < w["mean_temperature_thinnest"].get<double>());
+      // The check is on the isotherm wall: strength at its mean temperature.
+      const double s = 0.5 * (1.0 + 0.3 * std::abs(T));
+      const double domke = a * (0.29 * P / s + 2.3 * (P / s) * (P / s));
+      CHECK(w["required_thickness"].get<double>() == Approx(domke).epsilon(1e-12));
+      CHECK(w["utilisation"].get<double>() == Approx(domke / iso).epsilon(1e-12));
+    }
+  }
+  CHECK(compared >= 3);
+  WARN(fmt::format("last day: frozen wall {:.3f} m, -8 degC wall {:.3f} m, -12 degC wall {:.3f} m, -1 degC wall {:.3f} m",
+                   cold["wall"].back()["min_thickness"].get<double>(), cold["wall"].back()["isotherm_thickness"].get<double>(),
+                   colder["wall"].back()["isotherm_thickness"].get<double>(), front["wall"].back()["isotherm_thickness"].get<double>()));
+  // Measured on a colder wall the design is met no earlier.
+  if (cold["design"]["met_day"].is_number()) {
+    const json plain = with_isotherm(std::nullopt);
+    REQUIRE(plain["design"]["met_day"].is_number());
+    CHECK(cold["design"]["met_day"].get<double>() >= plain["design"]["met_day"].get<double>());
+  }
+}

@@ -42,17 +42,22 @@ double interpolate(const Samples& s, double x) {
   return s.v[k - 1] + t * (s.v[k] - s.v[k - 1]);
 }
 
-// Where the segment from (ra, fa) to (rb, fb) crosses the frozen level
-// (one end frozen, the other not).
-double crossing(double ra, double fa, double rb, double fb) {
-  return ra + (frozen_level - fa) / (fb - fa) * (rb - ra);
+// Where the segment from (ra, fa) to (rb, fb) crosses the level (one end
+// at or below it, the other above).
+double crossing(double ra, double fa, double rb, double fb, double level) {
+  return ra + (level - fa) / (fb - fa) * (rb - ra);
 }
 
 }  // namespace
 
 FrozenStretch frozen_stretch(const std::vector<double>& r, const std::vector<double>& liquid_fraction,
                              double ring_radius) {
-  Samples s = finite_samples(r, liquid_fraction, "frozen_stretch");
+  return stretch_at_or_below(r, liquid_fraction, frozen_level, ring_radius);
+}
+
+FrozenStretch stretch_at_or_below(const std::vector<double>& r, const std::vector<double>& values, double level,
+                                  double ring_radius) {
+  Samples s = finite_samples(r, values, "frozen_stretch");
   FrozenStretch none;
   if (s.r.empty() || !(ring_radius >= s.r.front() && ring_radius <= s.r.back())) return none;
   // Put the ring radius in as a sample: the interpolant is unchanged, and the
@@ -63,18 +68,18 @@ FrozenStretch frozen_stretch(const std::vector<double>& r, const std::vector<dou
     s.r.insert(s.r.begin() + m, ring_radius);
     s.v.insert(s.v.begin() + m, f_ring);
   }
-  if (s.v[m] > frozen_level) return none;
+  if (s.v[m] > level) return none;
 
   double inner = s.r.front();
   for (std::size_t i = m; i > 0; --i)
-    if (s.v[i - 1] > frozen_level) {
-      inner = crossing(s.r[i - 1], s.v[i - 1], s.r[i], s.v[i]);
+    if (s.v[i - 1] > level) {
+      inner = crossing(s.r[i - 1], s.v[i - 1], s.r[i], s.v[i], level);
       break;
     }
   double outer = s.r.back();
   for (std::size_t i = m; i + 1 < s.r.size(); ++i)
-    if (s.v[i + 1] > frozen_level) {
-      outer = crossing(s.r[i], s.v[i], s.r[i + 1], s.v[i + 1]);
+    if (s.v[i + 1] > level) {
+      outer = crossing(s.r[i], s.v[i], s.r[i + 1], s.v[i + 1], level);
       break;
     }
   return {inner, outer, outer - inner};
@@ -82,9 +87,14 @@ FrozenStretch frozen_stretch(const std::vector<double>& r, const std::vector<dou
 
 FrozenStretch frozen_stretch(const std::vector<double>& r, const std::vector<double>& liquid_fraction,
                              const std::vector<double>& ring_radii) {
+  return stretch_at_or_below(r, liquid_fraction, frozen_level, ring_radii);
+}
+
+FrozenStretch stretch_at_or_below(const std::vector<double>& r, const std::vector<double>& values, double level,
+                                  const std::vector<double>& ring_radii) {
   FrozenStretch longest;
   for (double ring : ring_radii)
-    if (const auto s = frozen_stretch(r, liquid_fraction, ring); s.frozen() && (!longest.frozen() || s.thickness > longest.thickness))
+    if (const auto s = stretch_at_or_below(r, values, level, ring); s.frozen() && (!longest.frozen() || s.thickness > longest.thickness))
       longest = s;
   return longest;
 }
@@ -166,8 +176,40 @@ WallExtents wall_extents(const RayFan& fan, const std::vector<double>& liquid_fr
   return w;
 }
 
-WallGauge::WallGauge(const FieldSampler& sampler, RayFan fan, std::vector<double> ring_radii)
-    : fan_(fan), ring_radii_(std::move(ring_radii)), radii_(fan.radii()), fan_probe_(sampler, fan.points()) {}
+WallGauge::WallGauge(const FieldSampler& sampler, RayFan fan, std::vector<double> ring_radii, std::optional<double> isotherm)
+    : fan_(fan), ring_radii_(std::move(ring_radii)), radii_(fan.radii()), fan_probe_(sampler, fan.points()), isotherm_(isotherm) {}
+
+void WallGauge::measure_isotherm(const std::vector<double>& temperature, WallReading& reading) const {
+  // As for the frozen stretch: each ray read from the rings outward to the
+  // first sample warmer than the isotherm; the rest stays NaN.
+  const std::size_t n = radii_.size();
+  const double level = *isotherm_;
+  std::vector<double> T(n * fan_.rays, std::numeric_limits<double>::quiet_NaN());
+  particles::for_each_item(fan_.rays, [&](std::size_t k) {
+    double* ray = T.data() + k * n;
+    auto warmer_at = [&](std::size_t i) {
+      if (std::isnan(ray[i])) ray[i] = fan_probe_.at(k * n + i, temperature);
+      return ray[i] > level;
+    };
+    for (double ring : ring_radii_) {
+      const std::size_t m = std::lower_bound(radii_.begin(), radii_.end(), ring) - radii_.begin();
+      for (std::size_t i = m; i-- > 0;)
+        if (warmer_at(i)) break;
+      for (std::size_t i = m; i < n; ++i)
+        if (warmer_at(i)) break;
+    }
+  });
+  WallExtents& w = reading.isotherm;
+  for (int k = 0; k < fan_.rays; ++k) {
+    w.rays.push_back(stretch_at_or_below(radii_, fan_.on_ray(T, k), level, ring_radii_));
+    if (k == 0 || w.rays.back().thickness < w.min_thickness) {
+      w.min_thickness = w.rays.back().thickness;
+      w.thinnest_ray = k;
+    }
+  }
+  const std::vector<double> ray = fan_.on_ray(T, w.thinnest_ray);
+  reading.isotherm_mean_temperature = mean_over_frozen(radii_, ray, ray, w.rays[std::size_t(w.thinnest_ray)]);
+}
 
 WallReading WallGauge::measure(const std::vector<double>& liquid_fraction,
                                const std::vector<double>& temperature) const {
@@ -210,6 +252,7 @@ WallReading WallGauge::measure(const std::vector<double>& liquid_fraction,
     reading.mean_temperature_thinnest =
         mean_over_frozen(radii_, fan_.on_ray(f, thinnest), T, reading.extents.rays[std::size_t(thinnest)]);
   }
+  if (isotherm_) measure_isotherm(temperature, reading);
   return reading;
 }
 

@@ -32,6 +32,13 @@ struct FrozenStretch {
 // sizes or radii not ascending.
 FrozenStretch frozen_stretch(const std::vector<double>& r, const std::vector<double>& liquid_fraction,
                              double ring_radius);
+// The same for any field and level: the stretch at or below `level` that
+// contains the ring radius (the wall on a design isotherm: temperatures
+// and the isotherm). frozen_stretch is this with the liquid fraction and 0.5.
+FrozenStretch stretch_at_or_below(const std::vector<double>& r, const std::vector<double>& values, double level,
+                                  double ring_radius);
+FrozenStretch stretch_at_or_below(const std::vector<double>& r, const std::vector<double>& values, double level,
+                                  const std::vector<double>& ring_radii);
 // Double rings: the longest of the stretches that contain a ring radius
 // (the inner ring's alone, or both rings once their stretches merge), so a
 // wall that closed on its inner ring has a thickness from that day on.
@@ -91,12 +98,18 @@ struct WallReading {
   WallExtents extents;
   std::optional<double> mean_temperature_OB;
   std::optional<double> mean_temperature_thinnest;  // over the thinnest ray's stretch
+  // With a design isotherm: the stretches colder than it on every ray, and
+  // the mean temperature over the thinnest one (empty rays without one).
+  WallExtents isotherm;
+  std::optional<double> isotherm_mean_temperature;
 };
 
 // A fan whose sample weights are computed once, then read at every snapshot.
 class WallGauge {
  public:
-  WallGauge(const FieldSampler& sampler, RayFan fan, std::vector<double> ring_radii);
+  // isotherm (degC): also measure the wall colder than it.
+  WallGauge(const FieldSampler& sampler, RayFan fan, std::vector<double> ring_radii,
+            std::optional<double> isotherm = std::nullopt);
   const RayFan& fan() const { return fan_; }
   // Fields over all particles (free then fixed).
   WallReading measure(const std::vector<double>& liquid_fraction, const std::vector<double>& temperature) const;
@@ -106,6 +119,8 @@ class WallGauge {
   std::vector<double> ring_radii_;
   std::vector<double> radii_;
   PointProbe fan_probe_;  // OB is its last ray
+  std::optional<double> isotherm_;
+  void measure_isotherm(const std::vector<double>& temperature, WallReading& reading) const;
 };
 
 }  // namespace frostwall::post

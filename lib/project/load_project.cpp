@@ -17,6 +17,7 @@
 #include "project/load_cfd_dem.hpp"
 #include "project/load_pores.hpp"
 #include "project/load_reports.hpp"
+#include "project/load_shaft.hpp"
 #include "project/project.hpp"
 
 namespace frostwall::project {
@@ -28,6 +29,9 @@ using detail::read_design;
 using detail::read_monitoring;
 using detail::read_output;
 using detail::read_time;
+using detail::read_schedule;
+using detail::read_soil;
+using detail::read_pipe;
 
 TimeSettings detail::read_time(const Node& n) {
   TimeSettings time;
@@ -72,8 +76,10 @@ std::string join(const std::vector<std::string>& lines) {
   return text;
 }
 
+}  // namespace
+
 // A wall temperature: a number, or [[day, degC], ...] with days ascending.
-TemperatureSchedule read_schedule(const Node& n) {
+TemperatureSchedule detail::read_schedule(const Node& n) {
   TemperatureSchedule schedule = TemperatureSchedule::fixed(0.0);
   if (!n.given()) return schedule;
   if (n.json().is_number()) return TemperatureSchedule::fixed(n.json().get<double>());
@@ -104,6 +110,8 @@ TemperatureSchedule read_schedule(const Node& n) {
   if (schedule.points.empty()) schedule = TemperatureSchedule::fixed(0.0);
   return schedule;
 }
+
+namespace {
 
 // A boundary is "adiabatic" or {"temperature": T}: returns the node of T, or
 // nullopt for adiabatic (and for a bad value, which is reported).
@@ -145,7 +153,9 @@ std::array<double, 2> read_conductivity(const Node& n) {
   return {k, k};
 }
 
-Soil read_soil(const Node& n, std::vector<std::string>& warnings) {
+}  // namespace
+
+Soil detail::read_soil(const Node& n, std::vector<std::string>& warnings) {
   Soil soil;
   if (!n.given()) return soil;
   if (n.json().is_string()) {
@@ -179,6 +189,8 @@ Soil read_soil(const Node& n, std::vector<std::string>& warnings) {
         n["latent_heat"].path(), soil.latent_heat, soil.latent_heat / 10));
   return soil;
 }
+
+namespace {
 
 // A ring of the layout; the angle of its first pipe is `angle_key`.
 Ring read_ring(const Node& n, std::string_view angle_key) {
@@ -251,27 +263,6 @@ double outermost_pipe_radius(const Layout& layout) {
   for (const auto& ring : layout.rings) r = std::max(r, ring.radius);
   for (const auto& p : layout.pipes) r = std::max(r, std::hypot(p.x, p.y));
   return r;
-}
-
-Pipe read_pipe(const Node& n) {
-  Pipe pipe;
-  if (!n.object({"diameter", "temperature", "model"})) return pipe;
-  pipe.diameter = n["diameter"].required().positive().value_or(0.0);
-  pipe.temperature = read_schedule(n["temperature"].required());
-  pipe.model = n["model"].choice<PipeModel>("pipe model", {{"disc", PipeModel::disc}, {"point", PipeModel::point}})
-                   .value_or(PipeModel::disc);
-  return pipe;
-}
-
-// Computable, but such a pipe cannot freeze anything: most likely a sign slip.
-void warn_warm_pipe(const Node& temperature, const TemperatureSchedule& schedule, double freezing_point,
-                    std::vector<std::string>& warnings) {
-  const bool is_schedule = temperature.json().is_array();
-  for (std::size_t i = 0; i < schedule.points.size(); ++i)
-    if (const double t = schedule.points[i].second; t > freezing_point)
-      warnings.push_back(fmt::format("{}: {} degC is above the soil's freezing point ({} degC); "
-                                     "a pipe this warm cannot freeze the ground",
-                                     is_schedule ? temperature[i].path() : temperature.path(), t, freezing_point));
 }
 
 Rectangle read_rectangle(const Node& n) {
@@ -375,7 +366,7 @@ Project read_project(const Node& root) {
     return project;
   }
   root.object({"name", "description", "physics", "layout", "shaft", "geometry", "pipe", "soil", "domain", "time",
-               "numerics", "design", "monitoring", "output", "mechanics", "pore_fluid", "groundwater"});
+               "numerics", "design", "monitoring", "output", "mechanics", "pore_fluid", "groundwater", "layers"});
   project.name = root["name"].required().string().value_or("");
   project.description = root["description"].string(true).value_or("");
 
@@ -398,9 +389,8 @@ Project read_project(const Node& root) {
   }
 
   project.soil = read_soil(root["soil"].required(), project.warnings);
-  if (shaft && root["pipe"]["temperature"].present())
-    warn_warm_pipe(root["pipe"]["temperature"], section.pipe.temperature, project.soil.freezing_point,
-                   project.warnings);
+  if (shaft && root["pipe"].present())
+    detail::warn_warm_pipe(root["pipe"], section.pipe, project.soil.freezing_point, project.warnings);
 
   const Node domain = root["domain"].required();
   if (domain.object({"outer_radius", "initial_temperature", "far_field"})) {
@@ -481,6 +471,15 @@ Project read_project(const Node& root) {
     if (!section) root["design"]["strength"].problem("only used with shaft sections (the wall round an excavation)");
     else if (!section->shaft.excavation_radius)
       root["design"]["strength"].problem(R"(needs "shaft": {"excavation_radius"} (the formulas' a))");
+  }
+  project.layers = detail::read_layers(root["layers"], root, project);
+  // The design isotherm lies in frozen ground (colder than freezing).
+  if (const auto iso = project.design.isotherm) {
+    double coldest_freezing = project.soil.freezing_point;
+    for (const auto& layer : project.layers) coldest_freezing = std::min(coldest_freezing, layer.soil.freezing_point);
+    if (*iso > coldest_freezing)
+      root["design"]["isotherm"].problem(
+          fmt::format("must be at or below the soil's freezing point ({} degC), got {}", coldest_freezing, *iso));
   }
   project.monitoring = read_monitoring(root["monitoring"]);
   check_sensors_inside(project, root["monitoring"]);

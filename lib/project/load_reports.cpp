@@ -9,8 +9,6 @@
 
 namespace frostwall::project::detail {
 
-namespace {
-
 // [[T, sigma_c], ...], {"a", "b"} (a + b|T|) or {"sigma_0", "k", "m"}.
 std::optional<design::StrengthLaw> read_strength(const Node& n) {
   if (!n.present()) return std::nullopt;
@@ -68,16 +66,15 @@ std::optional<double> read_pressure(const Node& n, std::optional<double> depth, 
   return std::nullopt;
 }
 
-}  // namespace
-
 Design read_design(const Node& n) {
   Design design;
   if (!n.object({"required_thickness", "max_mean_temperature", "strength", "allowable_factor", "depth", "pressure", "formula",
-                 "friction_angle"}))
+                 "friction_angle", "isotherm"}))
     return design;
   design.required_thickness = n["required_thickness"].positive();
   design.max_mean_temperature = n["max_mean_temperature"].number();
   design.strength = read_strength(n["strength"]);
+  design.isotherm = n["isotherm"].number();
   if (const auto f = n["allowable_factor"].number()) {
     if (*f <= 0.0 || *f > 1.0) n["allowable_factor"].problem(fmt::format("must be in (0, 1], got {}", *f));
     else design.allowable_factor = *f;

@@ -117,10 +117,17 @@ struct Layout {
 
 enum class PipeModel { disc, point };
 
+// What holds the pipe wall: a fixed temperature (the wall at the schedule),
+// or brine behind a film (Robin: the heat the ground gives up at the wall
+// is q = h (T_wall - T_brine) per m2, the schedule being the brine's).
+enum class PipeBoundary { fixed, brine };
+
 struct Pipe {
   double diameter = 0.0;  // outer diameter, m
-  TemperatureSchedule temperature;
+  TemperatureSchedule temperature;  // the wall's (fixed) or the brine's (brine)
   PipeModel model = PipeModel::disc;
+  PipeBoundary boundary = PipeBoundary::fixed;
+  double heat_transfer_coefficient = 0.0;  // h, W/(m2 K), brine only
 };
 
 struct Shaft {
@@ -209,7 +216,23 @@ struct Design {
   std::optional<double> pressure;              // lateral, MPa, at the depth
   design::Formula formula = design::Formula::domke;  // the governing one
   std::optional<double> friction_angle;        // degrees: Mohr-Coulomb's plastic limit
+  // The design isotherm (degC): the wall is also measured on the part of
+  // each ray colder than this, and the check then uses that wall.
+  std::optional<double> isotherm;
   bool checks_strength() const { return strength && pressure; }
+};
+
+// One layer of the ground the shaft passes (issue 18): a cross-section of
+// its own at its depth, with its soil, pressure and strength. The JSON of
+// its soil and design entries is kept as given, so that the layer's run
+// records the project file it ran (project.json) like any other run.
+struct Layer {
+  std::string name;
+  double depth = 0.0;  // m
+  Soil soil;
+  std::optional<design::StrengthLaw> strength;
+  double pressure = 0.0;  // MPa, lateral, at the depth
+  std::string patch;      // the layer as a JSON merge patch of the project file
 };
 
 struct Sensor {
@@ -246,6 +269,8 @@ struct Project {
   std::optional<Mechanics> mechanics;  // plain geometries: PD thermo-mechanics
   std::optional<Groundwater> groundwater;  // shafts: water flowing through the ground (none: still water)
   PoreFluid pore_fluid;                // what fills Rectangle::pores (default water/ice)
+  // Shafts through several layers: one run per layer (empty: one run).
+  std::vector<Layer> layers;
   // "physics": "cfd-dem": grains and pore water; then only name,
   // description, time and output above are read.
   std::optional<CfdDem> cfd_dem;

@@ -63,7 +63,7 @@ ShaftResults::ShaftResults(const project::Project& p, const Model& m)
   // with just OA and OB gives their extents and OB's mean temperature.
   post::RayFan fan{shaft.wedge.start_angle, shaft.wedge.angle,
                    post::RayFan::rays_needed(shaft.wedge.angle, planes_.ring_radius, dx), 0.0, R, 0.5 * dx};
-  fan_gauge_ = std::make_unique<post::WallGauge>(sampler_, fan, planes_.ring_radii);
+  fan_gauge_ = std::make_unique<post::WallGauge>(sampler_, fan, planes_.ring_radii, p.design.isotherm);
   planes_gauge_ = std::make_unique<post::WallGauge>(
       sampler_, post::RayFan{planes_.OA, planes_.OB - planes_.OA, 2, 0.0, R, 0.5 * dx}, planes_.ring_radii);
 
@@ -123,7 +123,11 @@ ShaftResults::Reading ShaftResults::read(double t, const std::vector<double>& li
   const auto fan = fan_gauge_->measure(liquid_fraction, temperature);
   const auto planes = planes_gauge_->measure(liquid_fraction, temperature);
   Reading r{t / day, planes.extents.OA(), planes.extents.OB(), fan.extents.min_thickness, planes.mean_temperature_OB,
-            fan.mean_temperature_thinnest, {}, {}};
+            fan.mean_temperature_thinnest, {}, {}, {}, {}};
+  if (project_.design.isotherm) {
+    r.isotherm_thickness = fan.isotherm.min_thickness;
+    r.isotherm_mean_temperature = fan.isotherm_mean_temperature;
+  }
   if (project_.groundwater && project_.groundwater->speed() > 0.0) {
     for (int k = 0; k < int(fan.extents.rays.size()); ++k) {
       const double angle = fan_gauge_->fan().ray_angle(k), thick = fan.extents.rays[k].thickness;
@@ -194,6 +198,11 @@ json ShaftResults::finish(const std::filesystem::path& out) const {
   for (const auto& r : snapshots_)
     wall.push_back({{"day", r.day}, {"OA", stretch_json(r.OA)}, {"OB", stretch_json(r.OB)},
                     {"min_thickness", r.min_thickness}, {"mean_temperature_OB", or_null(r.mean_temperature_OB)}});
+  if (project_.design.isotherm)
+    for (std::size_t k = 0; k < snapshots_.size(); ++k) {
+      wall[k]["isotherm_thickness"] = or_null(snapshots_[k].isotherm_thickness);
+      wall[k]["isotherm_mean_temperature"] = or_null(snapshots_[k].isotherm_mean_temperature);
+    }
   if (project_.groundwater && project_.groundwater->speed() > 0.0)
     for (std::size_t k = 0; k < snapshots_.size(); ++k) {
       wall[k]["min_thickness_upstream"] = or_null(snapshots_[k].upstream_thickness);
@@ -208,7 +217,9 @@ json ShaftResults::finish(const std::filesystem::path& out) const {
     std::vector<WallCheck> checks;
     for (std::size_t k = 0; k < snapshots_.size(); ++k) {
       const auto& r = snapshots_[k];
-      checks.push_back(check_wall(design, a, r.min_thickness, r.mean_temperature_thinnest));
+      // Measured on the design isotherm when there is one, else on the frozen front.
+      checks.push_back(design.isotherm ? check_wall(design, a, r.isotherm_thickness.value_or(0.0), r.isotherm_mean_temperature)
+                                       : check_wall(design, a, r.min_thickness, r.mean_temperature_thinnest));
       days.push_back(r.day);
       wall[k]["mean_temperature_thinnest"] = or_null(r.mean_temperature_thinnest);
       wall[k]["allowable_strength"] = or_null(checks.back().allowable);
@@ -256,6 +267,9 @@ json ShaftResults::finish(const std::filesystem::path& out) const {
       result["design"]["pressure_MPa"] = *design.pressure;
       result["design"]["allowable_factor"] = design.allowable_factor;
       result["design"]["depth"] = or_null(design.depth);
+      result["design"]["isotherm"] = or_null(design.isotherm);
+      result["design"]["measured_on"] = design.isotherm ? fmt::format("the {:g} degC isotherm", *design.isotherm)
+                                                        : std::string("the frozen front (liquid fraction 0.5)");
     }
   }
 

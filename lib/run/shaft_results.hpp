@@ -52,6 +52,8 @@ class ShaftResults {
     double min_thickness;
     std::optional<double> mean_temperature_OB;
     std::optional<double> mean_temperature_thinnest;  // the thinnest ray's frozen stretch
+    // With a design isotherm: the thinnest wall colder than it, and its mean temperature.
+    std::optional<double> isotherm_thickness, isotherm_mean_temperature;
     // Under seepage: the thinnest ray within 60 degrees of against (upstream)
     // and along (downstream) the flow.
     std::optional<double> upstream_thickness, downstream_thickness;

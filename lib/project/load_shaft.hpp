@@ -1,0 +1,32 @@
+// Readers shared by the shaft section's blocks: temperature schedules, the
+// soil, the freeze pipe (fixed wall or brine) and the layers of the ground
+// (issue 18). Internal to lib/project; problems go to the Node.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "project/json_reader.hpp"
+#include "project/project.hpp"
+
+namespace frostwall::project::detail {
+
+// A number, or [[day, degC], ...] with days ascending.
+TemperatureSchedule read_schedule(const Node& n);
+// A built-in soil's name or a soil object.
+Soil read_soil(const Node& n, std::vector<std::string>& warnings);
+
+// "pipe": {"diameter", "temperature", "model"} with the wall held at the
+// temperature, or {"boundary": "brine", "brine_temperature",
+// "heat_transfer_coefficient"} with brine behind a film. A pipe (or brine)
+// warmer than the soil's freezing point is computable but freezes nothing:
+// a warning, not an error.
+Pipe read_pipe(const Node& n);
+void warn_warm_pipe(const Node& pipe, const Pipe& read, double freezing_point, std::vector<std::string>& warnings);
+
+// "layers": [{"name", "depth", "soil", "pressure", "strength"}, ...]; soil,
+// pressure and strength default to the project's ("pressure" then taken at
+// the layer's depth). The design must be a strength check.
+std::vector<Layer> read_layers(const Node& layers, const Node& root, const Project& project);
+
+}  // namespace frostwall::project::detail
