@@ -325,6 +325,16 @@ TEST_CASE("implausible but computable input loads with warnings", "[project]") {
                                 "pipe.temperature: 0.75 degC is above the soil's freezing point (-0.25 degC); a "
                                 "pipe this warm cannot freeze the ground"});
   }
+  SECTION("brine warmer than the freezing point (issue 18)") {
+    const Project p = load_edited("single_ring_sand.json",
+                                  {{"pipe", {{"temperature", nullptr}, {"boundary", "brine"}, {"brine_temperature", 2.0},
+                                             {"heat_transfer_coefficient", 300}}}});
+    CHECK(std::get<ShaftSection>(p.geometry).pipe.boundary == PipeBoundary::brine);
+    CHECK(std::get<ShaftSection>(p.geometry).pipe.heat_transfer_coefficient == 300);
+    CHECK(p.warnings == std::vector<std::string>{
+                            "pipe.brine_temperature: 2 degC is above the soil's freezing point (0 degC); a brine this "
+                            "warm cannot freeze the ground"});
+  }
   SECTION("one schedule point above the freezing point") {
     const Project p = load_edited("three_hole_clay.json",
                                   {{"pipe", {{"temperature", {{0, 1.0}, {3, -28.0}, {60, -20.0}}}}}});

@@ -465,7 +465,7 @@ Project read_project(const Node& root) {
     }
   }
   detail::read_pore_settings(root, project);
-  project.design = read_design(root["design"]);
+  project.design = read_design(root["design"], root["layers"].present());
   if (project.design.strength) {
     const auto* section = std::get_if<ShaftSection>(&project.geometry);
     if (!section) root["design"]["strength"].problem("only used with shaft sections (the wall round an excavation)");
@@ -473,6 +473,9 @@ Project read_project(const Node& root) {
       root["design"]["strength"].problem(R"(needs "shaft": {"excavation_radius"} (the formulas' a))");
   }
   project.layers = detail::read_layers(root["layers"], root, project);
+  if (const auto* section = std::get_if<ShaftSection>(&project.geometry);
+      section && !project.layers.empty() && !section->shaft.excavation_radius)
+    root["layers"].problem(R"(the layers' wall checks need "shaft": {"excavation_radius"} (the formulas' a))");
   // The design isotherm lies in frozen ground (colder than freezing).
   if (const auto iso = project.design.isotherm) {
     double coldest_freezing = project.soil.freezing_point;

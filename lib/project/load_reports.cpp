@@ -55,9 +55,9 @@ std::optional<double> read_pressure(const Node& n, std::optional<double> depth, 
     n.problem(R"(give one of "gradient_MPa_per_m", "value_MPa" or "unit_weight_kN_per_m3" (with "earth_pressure_coefficient"))");
     return std::nullopt;
   }
-  if (const auto value = n["value_MPa"].non_negative()) return value;
+  if (n["value_MPa"].present()) return n["value_MPa"].non_negative();
   if (!depth) {
-    depth_node.required();  // a pressure growing with depth needs the depth
+    depth_node.required().given();  // a pressure growing with depth needs the depth
     return std::nullopt;
   }
   if (const auto g = n["gradient_MPa_per_m"].positive()) return *g * *depth;
@@ -66,7 +66,7 @@ std::optional<double> read_pressure(const Node& n, std::optional<double> depth, 
   return std::nullopt;
 }
 
-Design read_design(const Node& n) {
+Design read_design(const Node& n, bool layered) {
   Design design;
   if (!n.object({"required_thickness", "max_mean_temperature", "strength", "allowable_factor", "depth", "pressure", "formula",
                  "friction_angle", "isotherm"}))
@@ -83,7 +83,9 @@ Design read_design(const Node& n) {
     if (*z < 0.0) n["depth"].problem(fmt::format("must not be negative (metres below the surface), got {}", *z));
     else design.depth = z;
   }
-  design.pressure = read_pressure(n["pressure"], design.depth, n["depth"]);
+  // With layers, each layer's depth serves; the design's own may be left out.
+  if (!layered || design.depth || n["pressure"]["value_MPa"].present())
+    design.pressure = read_pressure(n["pressure"], design.depth, n["depth"]);
   design.formula = n["formula"].choice<design::Formula>(
                                  "formula", {{"domke", design::Formula::domke},
                                              {"lame_mises", design::Formula::lame_mises},
@@ -98,7 +100,7 @@ Design read_design(const Node& n) {
     }
   if (design.formula == design::Formula::plastic_mohr_coulomb && !design.friction_angle)
     n["friction_angle"].problem(R"(needed with "formula": "plastic_mohr_coulomb")");
-  if (n["strength"].present() != n["pressure"].present())
+  if (!layered && n["strength"].present() != n["pressure"].present())
     (n["strength"].present() ? n["pressure"] : n["strength"]).problem(R"(the wall check needs both "strength" and "pressure")");
   return design;
 }

@@ -11,7 +11,8 @@
 
 namespace frostwall::project::detail {
 
-Design read_design(const Node& n);
+// layered: the project has layers, whose depths stand in for the design's.
+Design read_design(const Node& n, bool layered = false);
 // Frozen-soil strength: [[T, sigma_c], ...], {"a", "b"} or {"sigma_0", "k", "m"}.
 std::optional<design::StrengthLaw> read_strength(const Node& n);
 // Lateral pressure (MPa): a value, a gradient times the depth, or gamma z K;

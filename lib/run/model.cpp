@@ -54,6 +54,36 @@ geometry::Wedge symmetry_wedge(const project::ShaftSection& section) {
   return geometry::find_symmetry_wedge(pipes, start);
 }
 
+// Brine behind a film at the pipe walls: each pipe's wall particles form a
+// group (the nearest pipe centre), with the length of its wall inside the
+// simulated section (a pipe on a mirror line has half of it there).
+namespace {
+void attach_brine(const project::Pipe& pipe, geometry::ShaftScene& scene) {
+  if (pipe.boundary != project::PipeBoundary::brine) return;
+  const auto& P = scene.particles;
+  thermal::FilmWall film;
+  film.heat_transfer_coefficient = pipe.heat_transfer_coefficient;
+  film.group.assign(P.size() - P.n_free, -1);
+  for (std::size_t i = P.n_free; i < P.size(); ++i) {
+    if (P.boundary[i] != scene.pipe_boundary) continue;
+    double nearest = std::numeric_limits<double>::infinity();
+    for (std::size_t q = 0; q < scene.pipes.size(); ++q)
+      if (const double d = (P.position[i] - particles::Vec<2>(scene.pipes[q].x, scene.pipes[q].y)).norm(); d < nearest)
+        nearest = d, film.group[i - P.n_free] = int(q);
+  }
+  constexpr int samples = 3600;
+  for (const auto& q : scene.pipes) {
+    int inside = 0;
+    for (int k = 0; k < samples; ++k) {
+      const double phi = 2.0 * M_PI * (k + 0.5) / samples;
+      inside += geometry::inside_wedge(scene.wedge, {q.x + scene.pipe_radius * std::cos(phi), q.y + scene.pipe_radius * std::sin(phi)});
+    }
+    film.perimeter.push_back(2.0 * M_PI * scene.pipe_radius * inside / samples);
+  }
+  scene.boundaries[scene.pipe_boundary].film = std::move(film);
+}
+}  // namespace
+
 Model build_model(const project::Project& p) {
   check_capacity(p);
   Model m;
@@ -95,6 +125,7 @@ Model build_model(const project::Project& p) {
       geometry::unfold_to_full_ring(*scene);
       scene->notes.push_back("symmetry: off (numerics.symmetry): the wedge's particles mirrored around the full ring");
     }
+    attach_brine(section.pipe, *scene);
     m.shaft = scene.get();
     m.scene = std::move(scene);
   }

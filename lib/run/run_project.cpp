@@ -21,6 +21,7 @@
 #include "run/groundwater_flow.hpp"
 #include "run/mechanics_run.hpp"
 #include "run/plain_results.hpp"
+#include "run/brine_log.hpp"
 #include "run/shaft_results.hpp"
 #include "particles/symmetry_group.hpp"
 #include "io/atomic_file.hpp"
@@ -215,6 +216,9 @@ void run_project(const Project& p, const RunOptions& options) {
     if (mechanics) mechanics->after_equilibrium = [&](double t) { frost->after_equilibrium(t); };
   }
   const double heat_before = model.stored_heat();
+  std::unique_ptr<BrineLog> brine;
+  if (built.shaft && built.model->boundaries()[built.shaft->pipe_boundary].film)
+    brine = std::make_unique<BrineLog>(std::get<project::ShaftSection>(p.geometry).pipe, model, built.shaft->pipe_boundary, series);
 
   thermal::TimeLoopObservers observers;
   observers.progress = options.progress;
@@ -235,6 +239,7 @@ void run_project(const Project& p, const RunOptions& options) {
       frozen_area.add(t / 86400.0, area);
     }
     if (frost) frost->after_step(m, t);
+    if (brine) brine->after_step(m, t);
     if (mechanics) mechanics->update(m, t, false);
     if (!results) return;
     const auto& f = m.liquid_fraction();
@@ -304,6 +309,7 @@ void run_project(const Project& p, const RunOptions& options) {
     const nlohmann::json parts = results->finish(out);
     for (const char* key : {"wall", "design", "monitoring", "interface"})
       if (parts.contains(key)) summary[key] = parts[key];
+    if (brine) summary["brine"] = brine->finish(out);
     const auto& w = built.shaft->wedge;
     summary["wedge"] = {{"mirror_lines", w.mirror_count}, {"start_deg", w.start_angle * 180 / M_PI}, {"angle_deg", w.angle * 180 / M_PI}};
   } else {

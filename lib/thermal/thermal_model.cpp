@@ -41,6 +41,9 @@ ThermalModel::ThermalModel(std::vector<double> volume, std::vector<int> boundary
   for (std::size_t i = 0; i < pairs_.n_free; ++i)
     for (std::size_t e = pairs_.row_start[i]; e < pairs_.row_start[i + 1]; ++e)
       if (pairs_.column[e] >= pairs_.n_free) boundary_pairs_.emplace_back(static_cast<std::uint32_t>(i), e);
+  film_wall_T_.resize(boundaries_.size());
+  for (std::size_t b = 0; b < boundaries_.size(); ++b)
+    if (boundaries_[b].film) film_wall_T_[b].assign(boundaries_[b].film->perimeter.size(), initial_temperature);
   apply_boundaries(0.0);
 }
 
@@ -49,10 +52,39 @@ void ThermalModel::apply_boundaries(double t) {
   for (std::size_t b = 0; b < boundaries_.size(); ++b) T_wall[b] = boundaries_[b].temperature.at(t);
   const std::size_t n = pairs_.n_free;
   const bool extend = !beyond_wall_.row_start.empty();
+  // The field's extension beyond the walls, E_j (on the wall: unused).
+  std::vector<double> extension(size() - n, 0.0);
+  for (std::size_t i = n; i < size(); ++i)
+    if (extend && !beyond_wall_.on_wall(i - n)) extension[i - n] = beyond_wall_.value(i - n, T_);
+  for (std::size_t b = 0; b < boundaries_.size(); ++b)
+    if (boundaries_[b].film) solve_film(b, T_wall[b], extension);
   for (std::size_t i = n; i < size(); ++i) {
-    const double Tw = T_wall[boundary_id_[i]];
-    const double T = !extend || beyond_wall_.on_wall(i - n) ? Tw : 2.0 * Tw - beyond_wall_.value(i - n, T_);
+    const int b = boundary_id_[i];
+    const auto& film = boundaries_[b].film;
+    const double Tw = film ? film_wall_T_[b][film->group[i - n]] : T_wall[b];
+    const double T = !extend || beyond_wall_.on_wall(i - n) ? Tw : 2.0 * Tw - extension[i - n];
     set_state(i, laws_[0].enthalpy(T));
+  }
+}
+
+void ThermalModel::solve_film(std::size_t b, double T_fluid, const std::vector<double>& extension) {
+  const FilmWall& film = *boundaries_[b].film;
+  const std::size_t n = pairs_.n_free;
+  const bool extend = !beyond_wall_.row_start.empty();
+  std::vector<double> A(film.perimeter.size(), 0.0), B(film.perimeter.size(), 0.0);
+  const std::vector<double>& a = pair_coefficients();
+  for (const auto& [i, e] : boundary_pairs_) {
+    const std::uint32_t j = pairs_.column[e];
+    if (boundary_id_[j] != int(b)) continue;
+    const int g = film.group[j - n];
+    const bool on_wall = !extend || beyond_wall_.on_wall(j - n);
+    const double w = volume_[i] * a[e];
+    A[g] += w * ((on_wall ? 0.0 : -extension[j - n]) - T_[i]);
+    B[g] += w * (on_wall ? 1.0 : 2.0);
+  }
+  for (std::size_t g = 0; g < A.size(); ++g) {
+    const double hP = film.heat_transfer_coefficient * film.perimeter[g];
+    film_wall_T_[b][g] = B[g] + hP > 0.0 ? (hP * T_fluid - A[g]) / (B[g] + hP) : T_fluid;
   }
 }
 

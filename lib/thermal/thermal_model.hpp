@@ -74,7 +74,11 @@ class ThermalModel {
 
   // Fixed particles take their boundary's temperature at time t (on the
   // wall), or its antisymmetric extension of the current field (beyond).
+  // A wall behind a film first finds its temperature from the heat balance
+  // with the current field (boundary.hpp).
   void apply_boundaries(double t);
+  // A film wall's temperature per group as last applied (empty: not a film wall).
+  const std::vector<double>& wall_temperatures(std::size_t boundary) const { return film_wall_T_[boundary]; }
   // rate[i] = dH_i/dt for free particles (rate is resized to free_count()).
   void conduction_rate(std::vector<double>& rate) const;
   // a[e] = G_ij k_ij for every stored pair e (i, j) at the current state,
@@ -116,6 +120,10 @@ class ThermalModel {
 
  private:
   void set_state(std::size_t i, double H);
+  // The wall temperature of each group of a film wall at fluid temperature
+  // T_fluid: the heat into the free particles is affine in it (on the wall
+  // T_j = T_w, beyond it 2 T_w - E_j), Q = A + B T_w, and -Q = h P (T_w - T_fluid).
+  void solve_film(std::size_t boundary, double T_fluid, const std::vector<double>& extension);
   StateView state_view() { return {H_.data(), T_.data(), f_.data(), k_.data(), k_changed_.data()}; }
   // a[e] of one pair, from the conductivities now.
   double coefficient(std::size_t i, std::size_t j, std::size_t e) const;
@@ -148,6 +156,7 @@ class ThermalModel {
   std::vector<std::size_t> incoming_pair_;
   // Pairs whose neighbour is a fixed particle: (row, pair index).
   std::vector<std::pair<std::uint32_t, std::size_t>> boundary_pairs_;
+  std::vector<std::vector<double>> film_wall_T_;  // per boundary, per group
 };
 
 inline void ThermalModel::set_state(std::size_t i, double H) { state_view().set(law_of(i), i, H); }
