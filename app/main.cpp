@@ -16,6 +16,7 @@
 #include "project/project.hpp"
 #include "report/report.hpp"
 #include "run/run_project.hpp"
+#include "study/run_layers.hpp"
 #include "study/study_report.hpp"
 
 namespace {
@@ -60,7 +61,15 @@ int run_command(const std::string& file) {
   options.progress = progress_printer(p.time);
   options.note = [](const std::string& s) { std::cerr << s << "\n"; };
   try {
-    run::run_project(p, options);
+    if (!p.layers.empty()) {
+      // One cross-section per layer, side by side as a study runs its variants.
+      study::StudyOptions layered;
+      layered.note = options.note;
+      std::cerr << "layers: " << p.layers.size() << " cross-sections into " << p.output.directory << "\n";
+      study::run_layers(p, options.project_text, layered);
+    } else {
+      run::run_project(p, options);
+    }
   } catch (const project::ProjectError& e) {
     for (const auto& line : e.problems()) std::cerr << line << "\n";
     return 2;

@@ -16,11 +16,13 @@
 
 namespace frostwall::test {
 
+// options: extra command-line options, e.g. "--threads 1".
 inline nlohmann::json run_project(const nlohmann::json& project,
-                                  const std::function<void(const std::filesystem::path&)>& inspect = {}) {
+                                  const std::function<void(const std::filesystem::path&)>& inspect = {},
+                                  const std::string& options = "") {
   TempDir dir;
   std::ofstream(dir.path / "p.json") << project.dump(2);
-  const std::string line = "cd '" + dir.path.string() + "' && '" FROSTWALL_EXE "' run p.json > log.txt 2>&1";
+  const std::string line = "cd '" + dir.path.string() + "' && '" FROSTWALL_EXE "' " + options + " run p.json > log.txt 2>&1";
   const int status = std::system(line.c_str());
   REQUIRE(WIFEXITED(status));
   REQUIRE(WEXITSTATUS(status) == 0);

@@ -46,6 +46,7 @@ TEST_CASE("The wall check: required thickness from pressure and strength, utilis
   CHECK(weak["design"]["pressure_MPa"].get<double>() == Approx(P).epsilon(1e-12));
   CHECK(weak["design"]["formula"] == "domke");
   std::optional<double> first_met;
+  double last_unmet = 0.0;  // the last snapshot before first_met with utilisation above 1
   bool stays = false;
   for (const auto& w : weak["wall"]) {
     INFO("day " << w["day"].get<double>());
@@ -70,14 +71,18 @@ TEST_CASE("The wall check: required thickness from pressure and strength, utilis
       CHECK(u == Approx(domke / thinnest).epsilon(1e-12));
       if (u <= 1.0 && !first_met) first_met = w["day"].get<double>(), stays = true;
       if (u > 1.0) stays = false;
+      if (u > 1.0 && !first_met) last_unmet = w["day"].get<double>();
     }
   }
   WARN(fmt::format("met on day {} (weak soil), day {} (strong soil); the weak wall's last utilisation {:.3f}",
                    weak["design"]["met_day"].dump(), strong["design"]["met_day"].dump(),
                    weak["wall"].back()["utilisation"].get<double>()));
   REQUIRE(first_met.has_value());
-  CHECK(weak["design"]["met_day"].get<double>() == *first_met);
-  CHECK(weak["design"]["stays_met"].get<bool>() == stays);
+  // The met day comes from every output interval, so it lies between the
+  // last snapshot that fails and the first that passes.
+  CHECK(weak["design"]["met_day"].get<double>() <= *first_met);
+  CHECK(weak["design"]["met_day"].get<double>() > last_unmet);
+  if (!stays) CHECK_FALSE(weak["design"]["stays_met"].get<bool>());
   CHECK(weak["design"]["pass"].get<bool>());
   // A stronger soil at the same temperatures needs less, and is met no later.
   const auto& w_last = weak["wall"].back();

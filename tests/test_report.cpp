@@ -151,8 +151,10 @@ TEST_CASE("The report of a shaft run fills every placeholder, loads nothing and 
   // empty); the frost damage section's own names are checked on a porous
   // plate's view.
   const json view = report::report_view(out);
-  const std::string thermal = split_section(
-      split_section(split_section(report::templates::report_html, "has_frost").second, "has_cfd_dem").second, "has_groundwater").second;
+  // (The wall check and brine sections' names: tests/test_layers.cpp.)
+  std::string thermal(report::templates::report_html);
+  for (const char* section : {"has_frost", "has_cfd_dem", "has_groundwater", "has_wall_check", "has_brine"})
+    thermal = split_section(thermal, section).second;
   for (const auto& name : report::template_names(thermal)) {
     INFO(name);
     CHECK(has_key(view, name));

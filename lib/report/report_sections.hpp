@@ -35,6 +35,9 @@ void add_run_facts(const RunRecord& run, nlohmann::json& view); // run table and
 void add_groundwater(const RunRecord& run, nlohmann::json& view); // seepage: verdict, gaps, sides, gap flow
 void add_cfd_dem(const RunRecord& run, nlohmann::json& view);   // CFD-DEM: bed, fluidisation, curves, run, files
 void add_erosion(const RunRecord& run, nlohmann::json& view);
+void add_design(const RunRecord& run, nlohmann::json& view);    // wall check: verdict, formulas, required vs achieved, layers, brine
+// "design met on day 47 in clay at 200 m; utilisation 0.93 on day 120"
+std::string design_verdict(const nlohmann::json& summary);
 // A line chart with its titles (the CFD-DEM sections' charts).
 Chart line_chart(const std::string& title, const std::string& x_label, const std::string& y_label, std::vector<Series> series);   // CFD-DEM over a cavity: losses, settlement, section maps
 

@@ -153,6 +153,8 @@ void run_project(const Project& p, const RunOptions& options) {
     if (options.note) options.note(s);
   };
   check_output_directory(p.output.directory);
+  if (!p.layers.empty())  // study::run_layers runs them, one project per layer
+    throw project::ProjectError({"layers: a layered project runs with `frostwall run`, one cross-section per layer"});
   Model built = build_model(p);
   for (const auto& n : built.scene->notes) note(n);
   const auto& particles = built.particles();

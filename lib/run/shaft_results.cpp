@@ -213,20 +213,25 @@ json ShaftResults::finish(const std::filesystem::path& out) const {
   std::optional<DesignMet> met;
   if (design.checks_strength()) {
     const double a = std::get<project::ShaftSection>(project_.geometry).shaft.excavation_radius.value_or(0.0);
-    std::vector<double> days;
-    std::vector<WallCheck> checks;
+    // Measured on the design isotherm when there is one, else on the frozen front.
+    auto check = [&](const Reading& r) {
+      return design.isotherm ? check_wall(design, a, r.isotherm_thickness.value_or(0.0), r.isotherm_mean_temperature)
+                             : check_wall(design, a, r.min_thickness, r.mean_temperature_thinnest);
+    };
     for (std::size_t k = 0; k < snapshots_.size(); ++k) {
       const auto& r = snapshots_[k];
-      // Measured on the design isotherm when there is one, else on the frozen front.
-      checks.push_back(design.isotherm ? check_wall(design, a, r.isotherm_thickness.value_or(0.0), r.isotherm_mean_temperature)
-                                       : check_wall(design, a, r.min_thickness, r.mean_temperature_thinnest));
-      days.push_back(r.day);
+      const WallCheck c = check(r);
       wall[k]["mean_temperature_thinnest"] = or_null(r.mean_temperature_thinnest);
-      wall[k]["allowable_strength"] = or_null(checks.back().allowable);
-      wall[k]["required_thickness"] = or_null(checks.back().required);
-      wall[k]["required_by"] = checks.back().required_by;
-      wall[k]["utilisation"] = or_null(checks.back().utilisation);
+      wall[k]["allowable_strength"] = or_null(c.allowable);
+      wall[k]["required_thickness"] = or_null(c.required);
+      wall[k]["required_by"] = c.required_by;
+      wall[k]["utilisation"] = or_null(c.utilisation);
     }
+    // The day it is met: on the time series (every output interval), not
+    // only at the snapshots.
+    std::vector<double> days;
+    std::vector<WallCheck> checks;
+    for (const auto& r : series_) days.push_back(r.day), checks.push_back(check(r));
     met = design_met(days, checks);
   }
   result["wall"] = wall;

@@ -1,0 +1,149 @@
+// The wall check's section of the report (issue 18): the verdict in words,
+// every formula's thickness on the last snapshot with its validity, required
+// against achieved thickness over time (per layer for a layered shaft), the
+// table by layer, and the brine pipes' wall temperature and heat.
+#include <cmath>
+#include <fmt/core.h>
+
+#include "report/report_sections.hpp"
+
+namespace frostwall::report::detail {
+
+using nlohmann::json;
+
+namespace {
+
+struct FormulaText {
+  const char* key;
+  const char* label;
+  const char* valid_when;
+};
+constexpr FormulaText formulas[] = {
+    {"lame_tresca", "Lamé, elastic, Tresca", "s > 2P"},
+    {"lame_mises", "Lamé, elastic, von Mises", "s > √3 P"},
+    {"domke", "Domke", "always"},
+    {"plastic_tresca", "plastic limit, Tresca", "always"},
+    {"plastic_mohr_coulomb", "plastic limit, Mohr-Coulomb", "with a friction angle"},
+};
+
+// The wall the check measured: on the isotherm when there is one.
+json achieved(const json& w) { return w.contains("isotherm_thickness") ? w["isotherm_thickness"] : w["min_thickness"]; }
+
+// "design met on day 47 in clay at 200 m; utilisation 0.93 on day 120"
+std::string verdict(const json& summary, const std::string& where) {
+  const json d = summary.value("design", json::object());
+  const json wall = summary.value("wall", json::array());
+  const std::string last_day = wall.empty() ? "the end" : number(wall.back()["day"], 0);
+  const std::string u = wall.empty() ? "–" : number(wall.back().value("utilisation", json()), 2);
+  const std::string met = d.value("met_day", json()).is_number()
+                              ? fmt::format("design met on day {}{}", number(d["met_day"], 0), where)
+                              : fmt::format("design not met by day {}{}", last_day, where);
+  return fmt::format("{}; utilisation {} on day {}", met, u, last_day);
+}
+
+std::string layer_place(const json& layer) {
+  return layer.is_object() ? fmt::format(" in {} at {} m", layer.value("name", ""), number(layer["depth"], 0)) : "";
+}
+
+}  // namespace
+
+std::string design_verdict(const json& summary) {
+  std::string where;
+  if (summary.contains("governing_layer"))
+    for (const auto& l : summary["layers"])
+      if (l["layer"].value("governing", false)) where = layer_place(l["layer"]);
+  return verdict(summary, where);
+}
+
+void add_design(const RunRecord& run, json& view) {
+  const json& s = run.summary;
+  const json d = s.value("design", json::object());
+  view["has_wall_check"] = d.contains("met_day");
+  for (const char* key : {"wall_check_note", "wall_check_svg", "brine_svg", "brine_heat_svg", "brine_note"}) view[key] = "";
+  view["formula_rows"] = json::array();
+  view["layer_rows"] = json::array();
+  view["has_layers"] = s.contains("layers");
+  view["has_brine"] = s.contains("brine");
+  if (d.contains("met_day")) {
+    const json wall = s.value("wall", json::array());
+    view["wall_check_note"] = fmt::format(
+        "{}. The governing formula is {}; the lateral pressure {} MPa; the allowable strength is {} of the frozen soil's "
+        "strength at the mean temperature of the wall on {}. Utilisation = required ÷ achieved thickness.",
+        design_verdict(s), d.value("formula", ""), number(d["pressure_MPa"], 3), number(d["allowable_factor"], 2),
+        d.value("measured_on", std::string("the thinnest ray")));
+    if (!wall.empty()) {
+      const json last = wall.back();
+      const std::string governing = d.value("formula", "");
+      for (const auto& f : formulas) {
+        const json E = last["required_by"].value(f.key, json());
+        view["formula_rows"].push_back({{"formula", std::string(f.label) + (f.key == governing ? " (governing)" : "")},
+                                        {"required", E.is_number() ? number(E, 2) + " m" : std::string("invalid")},
+                                        {"valid_when", f.valid_when}});
+      }
+    }
+    // Required against achieved over time: each layer, or the one run.
+    std::vector<Series> series;
+    auto add = [&](const json& summary, const std::string& name, std::size_t k) {
+      Series req, got;
+      for (const auto& w : summary.value("wall", json::array())) {
+        const double day = w["day"].get<double>();
+        req.x.push_back(day), got.x.push_back(day);
+        req.y.push_back(w.value("required_thickness", json()).is_number() ? w["required_thickness"].get<double>() : NAN);
+        got.y.push_back(achieved(w).is_number() ? achieved(w).get<double>() : NAN);
+      }
+      req.label = name + " required", got.label = name + " achieved";
+      req.colour = got.colour = categorical_colours()[k % categorical_colours().size()];
+      req.dashed = true, req.markers = got.markers = true;
+      series.push_back(std::move(got));
+      series.push_back(std::move(req));
+    };
+    if (s.contains("layers")) {
+      std::size_t k = 0;
+      for (const auto& l : s["layers"]) add(l, l["layer"].value("name", ""), k++);
+    } else {
+      add(s, "wall", 0);
+    }
+    Chart chart = line_chart("Required and achieved wall thickness", "time (d)", "thickness (m)", std::move(series));
+    chart.y_include = {0.0};
+    view["wall_check_svg"] = render_svg(chart);
+  }
+  for (const auto& l : s.value("layers", json::array())) {
+    const json wall = l.value("wall", json::array());
+    const json last = wall.empty() ? json::object() : wall.back();
+    const json& layer = l["layer"];
+    const json ld = l.value("design", json::object());
+    const json T = last.contains("isotherm_mean_temperature") ? last["isotherm_mean_temperature"] : last.value("mean_temperature_thinnest", json());
+    view["layer_rows"].push_back({{"name", layer.value("name", "")},
+                                  {"governing", layer.value("governing", false) ? "governs" : ""},
+                                  {"depth", number(layer["depth"], 0)},
+                                  {"soil", layer.value("soil", "")},
+                                  {"pressure", number(layer["pressure_MPa"], 2)},
+                                  {"closure", number(l.value("closure_time_days", json()), 1)},
+                                  {"thinnest", number(achieved(last), 2)},
+                                  {"mean_temperature", number(T, 1)},
+                                  {"required", number(last.value("required_thickness", json()), 2)},
+                                  {"utilisation", number(last.value("utilisation", json()), 2)},
+                                  {"met_day", ld.value("met_day", json()).is_number() ? number(ld["met_day"], 0) : std::string("not met")},
+                                  {"verdict", verdict(l, "")},
+                                  {"report", layer.value("directory", "") + "/report.html"}});
+  }
+  if (s.contains("brine")) {
+    const json& b = s["brine"];
+    Series wall_T, heat;
+    for (const auto& row : b.value("series", json::array())) {
+      wall_T.x.push_back(row[0].get<double>()), wall_T.y.push_back(row[1].get<double>());
+      heat.x.push_back(row[0].get<double>()), heat.y.push_back(row[2].get<double>());
+    }
+    wall_T.label = "pipe wall", heat.label = "heat extracted";
+    view["brine_note"] = fmt::format(
+        "Brine behind a film with h = {} W/(m² K): the pipe wall runs warmer than the brine by the heat it passes, "
+        "q = h (T_wall − T_brine). Brine.csv has the series.",
+        number(b["heat_transfer_coefficient"], 0));
+    view["brine_svg"] = render_svg(line_chart("Pipe wall temperature", "time (d)", "temperature (°C)", {wall_T}));
+    Chart q = line_chart("Heat extracted per metre of pipe", "time (d)", "heat (W/m)", {heat});
+    q.y_include = {0.0};
+    view["brine_heat_svg"] = render_svg(q);
+  }
+}
+
+}  // namespace frostwall::report::detail

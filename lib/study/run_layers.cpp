@@ -1,0 +1,83 @@
+#include "study/run_layers.hpp"
+
+#include <cctype>
+#include <fmt/core.h>
+#include <limits>
+
+#include "io/atomic_file.hpp"
+#include "report/report.hpp"
+#include "run/run_project.hpp"
+
+namespace frostwall::study {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+std::string layer_folder(const std::string& name) {
+  std::string folder;
+  for (char c : name)
+    folder += std::isalnum(static_cast<unsigned char>(c)) || std::string_view("._-+=").find(c) != std::string_view::npos ? c : '_';
+  if (folder.empty() || folder.front() == '.') folder.insert(folder.begin(), 'L');
+  return folder;
+}
+
+std::size_t governing_layer(const std::vector<json>& summaries) {
+  std::size_t governing = 0;
+  double latest = -1.0, worst = -1.0;
+  for (std::size_t k = 0; k < summaries.size(); ++k) {
+    const json design = summaries[k].value("design", json::object());
+    const json met = design.value("met_day", json());
+    const double day = met.is_number() ? met.get<double>() : std::numeric_limits<double>::infinity();
+    const json wall = summaries[k].value("wall", json::array());
+    const json u = wall.empty() ? json() : wall.back().value("utilisation", json());
+    const double utilisation = u.is_number() ? u.get<double>() : std::numeric_limits<double>::infinity();
+    if (day > latest || (day == latest && utilisation > worst)) governing = k, latest = day, worst = utilisation;
+  }
+  return governing;
+}
+
+StudyRun run_layers(const project::Project& p, const std::string& project_text, const StudyOptions& options) {
+  run::check_output_directory(p.output.directory);
+  const fs::path out = p.output.directory;
+  const json base = json::parse(project_text);
+  Study study;
+  study.name = p.name;
+  study.output_directory = out;
+  for (const auto& layer : p.layers) {
+    json doc = base;
+    doc.merge_patch(json::parse(layer.patch));
+    doc["output"]["directory"] = (out / layer_folder(layer.name)).string();
+    project::parse_project(doc.dump(), "layers: " + layer.name);  // every layer loads before any runs
+    study.variants.push_back({layer_folder(layer.name), layer.name, doc});
+  }
+  StudyRun run = run_study(study, options);
+  std::vector<json> summaries;
+  for (std::size_t k = 0; k < run.variants.size(); ++k) {
+    const auto& v = run.variants[k];
+    if (!v.ok)
+      throw std::runtime_error(fmt::format("layer '{}': {}", p.layers[k].name, v.errors.empty() ? "failed" : v.errors.front()));
+    summaries.push_back(v.summary);
+  }
+  // The layered summary: the governing layer's, with every layer's beside it.
+  const std::size_t g = governing_layer(summaries);
+  json summary = summaries[g];
+  summary["project"] = p.name;
+  summary["governing_layer"] = p.layers[g].name;
+  summary["layers"] = json::array();
+  for (std::size_t k = 0; k < summaries.size(); ++k) {
+    json entry = summaries[k];
+    entry["layer"] = {{"name", p.layers[k].name},
+                      {"depth", p.layers[k].depth},
+                      {"soil", p.layers[k].soil.name},
+                      {"pressure_MPa", p.layers[k].pressure},
+                      {"directory", layer_folder(p.layers[k].name)},
+                      {"governing", k == g}};
+    summary["layers"].push_back(std::move(entry));
+  }
+  io::write_text_file(out / "project.json", project_text);
+  io::write_text_file(out / "summary.json", summary.dump(2) + "\n");
+  if (p.output.report) report::write_report(out);
+  return run;
+}
+
+}  // namespace frostwall::study
