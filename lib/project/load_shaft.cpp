@@ -8,9 +8,35 @@
 
 namespace frostwall::project::detail {
 
+namespace {
+
+// {"inner_diameter", "outer_diameter", "flow_m3_per_h", "brine": {"density",
+// "viscosity", "conductivity", "heat_capacity"}}; nullopt on any problem.
+std::optional<design::Annulus> read_annulus(const Node& n, double pipe_diameter) {
+  if (!n.object({"inner_diameter", "outer_diameter", "flow_m3_per_h", "brine"})) return std::nullopt;
+  design::Annulus a;
+  const auto di = n["inner_diameter"].required().positive(), d_o = n["outer_diameter"].required().positive();
+  const auto flow = n["flow_m3_per_h"].required().positive();
+  const Node b = n["brine"].required();
+  bool ok = di && d_o && flow;
+  if (d_o && *d_o >= pipe_diameter)
+    n["outer_diameter"].problem(fmt::format("must be below the pipe's diameter {} (the freeze pipe's inner diameter), got {}", pipe_diameter, *d_o)), ok = false;
+  if (di && d_o && *di >= *d_o)
+    n["inner_diameter"].problem(fmt::format("must be below outer_diameter {} (the supply pipe inside the freeze pipe), got {}", *d_o, *di)), ok = false;
+  if (!b.object({"density", "viscosity", "conductivity", "heat_capacity"})) return std::nullopt;
+  const auto rho = b["density"].required().positive(), mu = b["viscosity"].required().positive();
+  const auto k = b["conductivity"].required().positive(), cp = b["heat_capacity"].required().positive();
+  if (!ok || !rho || !mu || !k || !cp) return std::nullopt;
+  a.inner_diameter = *di, a.outer_diameter = *d_o, a.flow = *flow / 3600.0;
+  a.brine = {*rho, *mu, *k, *cp};
+  return a;
+}
+
+}  // namespace
+
 Pipe read_pipe(const Node& n) {
   Pipe pipe;
-  if (!n.object({"diameter", "temperature", "model", "boundary", "brine_temperature", "heat_transfer_coefficient"}))
+  if (!n.object({"diameter", "temperature", "model", "boundary", "brine_temperature", "heat_transfer_coefficient", "annulus"}))
     return pipe;
   pipe.diameter = n["diameter"].required().positive().value_or(0.0);
   pipe.model = n["model"].choice<PipeModel>("pipe model", {{"disc", PipeModel::disc}, {"point", PipeModel::point}})
@@ -19,7 +45,7 @@ Pipe read_pipe(const Node& n) {
                       .value_or(PipeBoundary::fixed);
   if (pipe.boundary == PipeBoundary::fixed) {
     pipe.temperature = read_schedule(n["temperature"].required());
-    for (const char* key : {"brine_temperature", "heat_transfer_coefficient"})
+    for (const char* key : {"brine_temperature", "heat_transfer_coefficient", "annulus"})
       if (n[key].present()) n[key].problem(R"(only used with "boundary": "brine")");
     return pipe;
   }
@@ -28,13 +54,26 @@ Pipe read_pipe(const Node& n) {
   if (n["temperature"].present())
     n["temperature"].problem(R"(with "boundary": "brine" the pipe wall's temperature is computed; give "brine_temperature")");
   pipe.temperature = read_schedule(n["brine_temperature"].required());
-  pipe.heat_transfer_coefficient = n["heat_transfer_coefficient"].required().positive().value_or(0.0);
+  if (n["annulus"].present() == n["heat_transfer_coefficient"].present())
+    n["heat_transfer_coefficient"].problem(R"(give either "heat_transfer_coefficient" or "annulus" (h from the flow))");
+  else if (n["annulus"].present())
+    pipe.annulus = read_annulus(n["annulus"], pipe.diameter);
+  else
+    pipe.heat_transfer_coefficient = n["heat_transfer_coefficient"].positive().value_or(0.0);
+  if (pipe.annulus) pipe.heat_transfer_coefficient = design::annulus_film(*pipe.annulus, pipe.diameter).h;
   if (pipe.model == PipeModel::point)
     n["boundary"].problem(R"("brine" needs "model": "disc" (a film needs the pipe's wall))");
   return pipe;
 }
 
 void warn_warm_pipe(const Node& n, const Pipe& pipe, double freezing_point, std::vector<std::string>& warnings) {
+  if (pipe.annulus) {
+    const auto film = design::annulus_film(*pipe.annulus, pipe.diameter);
+    if (film.regime == design::FlowRegime::transitional)
+      warnings.push_back(fmt::format("{}: Re = {:.0f} is transitional (2300 to 10000): h = {:.0f} W/(m2 K) is interpolated between "
+                                     "the laminar and the turbulent film and is uncertain",
+                                     n["annulus"].path(), film.reynolds, film.h));
+  }
   const Node temperature = n[pipe.boundary == PipeBoundary::brine ? "brine_temperature" : "temperature"];
   if (!temperature.present()) return;
   const bool is_schedule = temperature.json().is_array();

@@ -3,6 +3,7 @@
 // (seconds, metres) except temperatures, which stay in degrees Celsius.
 #pragma once
 
+#include "design/annulus_film.hpp"
 #include "design/wall_strength.hpp"
 
 #include <array>
@@ -128,6 +129,8 @@ struct Pipe {
   PipeModel model = PipeModel::disc;
   PipeBoundary boundary = PipeBoundary::fixed;
   double heat_transfer_coefficient = 0.0;  // h, W/(m2 K), brine only
+  // Brine: h from the annulus' geometry and flow instead of a number.
+  std::optional<design::Annulus> annulus;
 };
 
 struct Shaft {

@@ -4,6 +4,7 @@
 // table by layer, and the brine pipes' wall temperature and heat.
 #include <cmath>
 #include <fmt/core.h>
+#include <string_view>
 
 #include "report/report_sections.hpp"
 
@@ -25,6 +26,12 @@ constexpr FormulaText formulas[] = {
     {"plastic_tresca", "plastic limit, Tresca", "always"},
     {"plastic_mohr_coulomb", "plastic limit, Mohr-Coulomb", "with a friction angle"},
 };
+
+std::string formula_label(const std::string& key) {
+  for (const auto& f : formulas)
+    if (key == f.key) return f.label;
+  return key;
+}
 
 // The wall the check measured: on the isotherm when there is one.
 json achieved(const json& w) { return w.contains("isotherm_thickness") ? w["isotherm_thickness"] : w["min_thickness"]; }
@@ -69,15 +76,17 @@ void add_design(const RunRecord& run, json& view) {
     view["wall_check_note"] = fmt::format(
         "{}. The governing formula is {}; the lateral pressure {} MPa; the allowable strength is {} of the frozen soil's "
         "strength at the mean temperature of the wall on {}. Utilisation = required ÷ achieved thickness.",
-        design_verdict(s), d.value("formula", ""), number(d["pressure_MPa"], 3), number(d["allowable_factor"], 2),
+        design_verdict(s), formula_label(d.value("formula", "")), number(d["pressure_MPa"], 3), number(d["allowable_factor"], 2),
         d.value("measured_on", std::string("the thinnest ray")));
     if (!wall.empty()) {
       const json last = wall.back();
       const std::string governing = d.value("formula", "");
       for (const auto& f : formulas) {
         const json E = last["required_by"].value(f.key, json());
+        const bool unset = std::string_view(f.key) == "plastic_mohr_coulomb" && !d.value("friction_angle", json()).is_number();
         view["formula_rows"].push_back({{"formula", std::string(f.label) + (f.key == governing ? " (governing)" : "")},
-                                        {"required", E.is_number() ? number(E, 2) + " m" : std::string("invalid")},
+                                        {"required", E.is_number() ? number(E, 2) + " m"
+                                                                   : std::string(unset ? "– (no friction angle given)" : "invalid")},
                                         {"valid_when", f.valid_when}});
       }
     }
@@ -137,8 +146,12 @@ void add_design(const RunRecord& run, json& view) {
     wall_T.label = "pipe wall", heat.label = "heat extracted";
     view["brine_note"] = fmt::format(
         "Brine behind a film with h = {} W/(m² K): the pipe wall runs warmer than the brine by the heat it passes, "
-        "q = h (T_wall − T_brine). Brine.csv has the series.",
-        number(b["heat_transfer_coefficient"], 0));
+        "q = h (T_wall − T_brine){}. Brine.csv has the series.",
+        number(b["heat_transfer_coefficient"], 0),
+        b.contains("annulus") ? fmt::format("; h from the annulus flow: Re = {}, Pr = {}, Nu = {} ({})",
+                                            number(b["annulus"]["reynolds"], 0), number(b["annulus"]["prandtl"], 1),
+                                            number(b["annulus"]["nusselt"], 2), b["annulus"].value("regime", ""))
+                              : std::string());
     view["brine_svg"] = render_svg(line_chart("Pipe wall temperature", "time (d)", "temperature (°C)", {wall_T}));
     Chart q = line_chart("Heat extracted per metre of pipe", "time (d)", "heat (W/m)", {heat});
     q.y_include = {0.0};

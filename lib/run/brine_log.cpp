@@ -54,11 +54,17 @@ nlohmann::json BrineLog::finish(const std::filesystem::path& out) const {
     series.push_back({r.day, r.wall, r.heat_per_metre});
   }
   io::write_text_file(out / "brine.csv", csv);
-  return {{"heat_transfer_coefficient", pipe_.heat_transfer_coefficient},
-          {"series", series},
-          {"series_columns", {"day", "pipe_wall_C", "heat_per_metre_W_per_m"}},
-          {"extracted_by_film", extracted_},
-          {"unit", "J/m of the simulated section"}};
+  nlohmann::json brine = {{"heat_transfer_coefficient", pipe_.heat_transfer_coefficient},
+                          {"series", series},
+                          {"series_columns", {"day", "pipe_wall_C", "heat_per_metre_W_per_m"}},
+                          {"extracted_by_film", extracted_},
+                          {"unit", "J/m of the simulated section"}};
+  if (pipe_.annulus) {
+    const auto film = design::annulus_film(*pipe_.annulus, pipe_.diameter);
+    brine["annulus"] = {{"reynolds", film.reynolds}, {"prandtl", film.prandtl}, {"nusselt", film.nusselt},
+                        {"regime", std::string(design::name(film.regime))}, {"h_inner_wall", film.h_inner}};
+  }
+  return brine;
 }
 
 }  // namespace frostwall::run

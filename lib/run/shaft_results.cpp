@@ -273,6 +273,7 @@ json ShaftResults::finish(const std::filesystem::path& out) const {
       result["design"]["allowable_factor"] = design.allowable_factor;
       result["design"]["depth"] = or_null(design.depth);
       result["design"]["isotherm"] = or_null(design.isotherm);
+      result["design"]["friction_angle"] = or_null(design.friction_angle);
       result["design"]["measured_on"] = design.isotherm ? fmt::format("the {:g} degC isotherm", *design.isotherm)
                                                         : std::string("the frozen front (liquid fraction 0.5)");
     }
