@@ -17,6 +17,7 @@
 #include "project/load_cfd_dem.hpp"
 #include "project/load_pores.hpp"
 #include "project/load_reports.hpp"
+#include "project/load_basics.hpp"
 #include "project/load_shaft.hpp"
 #include "project/project.hpp"
 
@@ -32,6 +33,8 @@ using detail::read_time;
 using detail::read_schedule;
 using detail::read_soil;
 using detail::read_pipe;
+using detail::read_layout;
+using detail::outermost_pipe_radius;
 
 TimeSettings detail::read_time(const Node& n) {
   TimeSettings time;
@@ -67,8 +70,6 @@ TimeSettings detail::read_time(const Node& n) {
 
 namespace {
 
-constexpr double seconds_per_day = 86400.0;
-constexpr double pure_water_latent_heat = 334000.0;  // J/kg
 
 std::string join(const std::vector<std::string>& lines) {
   std::string text;
@@ -78,38 +79,6 @@ std::string join(const std::vector<std::string>& lines) {
 
 }  // namespace
 
-// A wall temperature: a number, or [[day, degC], ...] with days ascending.
-TemperatureSchedule detail::read_schedule(const Node& n) {
-  TemperatureSchedule schedule = TemperatureSchedule::fixed(0.0);
-  if (!n.given()) return schedule;
-  if (n.json().is_number()) return TemperatureSchedule::fixed(n.json().get<double>());
-  if (!n.json().is_array()) {
-    n.problem("must be a number or a [[day, degC], ...] schedule, got " + n.type());
-    return schedule;
-  }
-  if (n.json().empty()) {
-    n.problem("must have at least one [day, degC] point");
-    return schedule;
-  }
-  schedule.points.clear();
-  for (std::size_t i = 0; i < n.json().size(); ++i) {
-    const Node point = n[i];
-    const Json& p = point.json();
-    if (!p.is_array() || p.size() != 2 || !p[0].is_number() || !p[1].is_number()) {
-      point.problem("must be a [day, degC] pair, got " + (p.is_array() ? point.shown() : point.type()));
-      continue;
-    }
-    const double day = p[0].get<double>();
-    const double seconds = day * seconds_per_day;
-    if (!schedule.points.empty() && seconds <= schedule.points.back().first)
-      point.problem(fmt::format("days must be ascending, got {} after {}", day,
-                                schedule.points.back().first / seconds_per_day));
-    else
-      schedule.points.emplace_back(seconds, p[1].get<double>());
-  }
-  if (schedule.points.empty()) schedule = TemperatureSchedule::fixed(0.0);
-  return schedule;
-}
 
 namespace {
 
@@ -136,134 +105,10 @@ SideCondition read_side(const Node& n) {
   return Adiabatic{};
 }
 
-std::array<double, 2> read_conductivity(const Node& n) {
-  if (!n.given()) return {};
-  if (n.json().is_array()) {
-    if (n.json().size() != 2) {
-      n.problem(fmt::format("must be a number or [kx, ky], got an array of {}", n.json().size()));
-      return {};
-    }
-    return {n[0].required().positive().value_or(0.0), n[1].required().positive().value_or(0.0)};
-  }
-  if (!n.json().is_number()) {
-    n.problem("must be a number or [kx, ky], got " + n.type());
-    return {};
-  }
-  const double k = n.positive().value_or(0.0);
-  return {k, k};
-}
-
 }  // namespace
 
-Soil detail::read_soil(const Node& n, std::vector<std::string>& warnings) {
-  Soil soil;
-  if (!n.given()) return soil;
-  if (n.json().is_string()) {
-    const auto name = n.json().get<std::string>();
-    if (auto builtin = builtin_soil(name)) return *builtin;
-    std::string names;
-    for (const auto& known : builtin_soil_names()) names += (names.empty() ? "" : ", ") + known;
-    n.problem("unknown soil '" + name + "' (built-in: " + names + ")");
-    return soil;
-  }
-  if (!n.json().is_object()) {
-    n.problem("must be a built-in soil name or an object, got " + n.type());
-    return soil;
-  }
-  n.object({"name", "density", "unfrozen", "frozen", "latent_heat", "freezing_point", "freezing_range"});
-  soil.name = n["name"].string().value_or("custom soil");
-  soil.density = n["density"].required().positive().value_or(0.0);
-  for (const auto& [key, phase] : {std::pair{"unfrozen", &soil.unfrozen}, std::pair{"frozen", &soil.frozen}}) {
-    const Node p = n[key].required();
-    if (!p.object({"conductivity", "heat_capacity"})) continue;
-    phase->conductivity = read_conductivity(p["conductivity"].required());
-    phase->heat_capacity = p["heat_capacity"].required().positive().value_or(0.0);
-  }
-  // Zero is allowed: a soil without phase change (pure conduction checks).
-  soil.latent_heat = n["latent_heat"].required().non_negative().value_or(0.0);
-  soil.freezing_point = n["freezing_point"].number().value_or(0.0);
-  soil.freezing_range = n["freezing_range"].non_negative().value_or(0.0);
-  if (soil.latent_heat > pure_water_latent_heat)
-    warnings.push_back(fmt::format(
-        "{}: {} J/kg is more than pure water's 334 kJ/kg; probably a slipped decimal point ({}?)",
-        n["latent_heat"].path(), soil.latent_heat, soil.latent_heat / 10));
-  return soil;
-}
 
 namespace {
-
-// A ring of the layout; the angle of its first pipe is `angle_key`.
-Ring read_ring(const Node& n, std::string_view angle_key) {
-  Ring ring;
-  if (!n.object({"radius", "count", angle_key})) return ring;
-  ring.radius = n["radius"].required().positive().value_or(0.0);
-  ring.count = n["count"].required().count().value_or(0);
-  ring.offset_deg = n[angle_key].number().value_or(0.0);
-  return ring;
-}
-
-Layout read_layout(const Node& n) {
-  Layout layout;
-  if (!n.object({"pattern", "outer_ring", "inner_ring", "rings", "pipes"})) return layout;
-  const Node pattern_node = n["pattern"].required();
-  const auto pattern = pattern_node.choice<Pattern>(
-      "pattern", {{"single", Pattern::single},
-                  {"three-hole", Pattern::three_hole},
-                  {"four-hole", Pattern::four_hole},
-                  {"rings", Pattern::rings},
-                  {"pipes", Pattern::pipes}});
-  if (!pattern) return layout;  // which fields belong depends on the pattern
-  layout.pattern = *pattern;
-  const bool double_ring = *pattern == Pattern::three_hole || *pattern == Pattern::four_hole;
-  const bool ring_pattern = double_ring || *pattern == Pattern::single;
-
-  // A field of another pattern is a mistake, not something to ignore.
-  const auto uses = [&](std::string_view key) {
-    if (key == "outer_ring") return ring_pattern;
-    if (key == "inner_ring") return double_ring;
-    if (key == "rings") return *pattern == Pattern::rings;
-    return *pattern == Pattern::pipes;
-  };
-  for (const auto key : {"outer_ring", "inner_ring", "rings", "pipes"})
-    if (n[key].present() && !uses(key))
-      n[key].problem("not used by pattern '" + pattern_node.json().get<std::string>() + "'");
-
-  if (ring_pattern) {
-    layout.outer_ring = read_ring(n["outer_ring"].required(), "start_angle_deg");
-    if (double_ring) {
-      const Node inner = n["inner_ring"].required();
-      if (inner.object({"radius"})) layout.inner_ring_radius = inner["radius"].required().positive();
-      if (layout.inner_ring_radius && layout.outer_ring.radius > 0 &&
-          *layout.inner_ring_radius >= layout.outer_ring.radius)
-        inner["radius"].problem(fmt::format("must be smaller than the outer ring's radius {}, got {}",
-                                            layout.outer_ring.radius, *layout.inner_ring_radius));
-    }
-  } else if (*pattern == Pattern::rings) {
-    const Node rings = n["rings"].required();
-    const auto size = rings.array();
-    if (size == 0u) rings.problem("must list at least one ring");
-    for (std::size_t i = 0; i < size.value_or(0); ++i)
-      layout.rings.push_back(read_ring(rings[i], "offset_deg"));
-  } else {
-    const Node pipes = n["pipes"].required();
-    const auto size = pipes.array();
-    if (size == 0u) pipes.problem("must list at least one pipe");
-    for (std::size_t i = 0; i < size.value_or(0); ++i) {
-      const Node p = pipes[i];
-      if (!p.object({"x", "y"})) continue;
-      layout.pipes.push_back({p["x"].required().number().value_or(0.0), p["y"].required().number().value_or(0.0)});
-    }
-  }
-  return layout;
-}
-
-// Distance of the farthest pipe centre from the shaft axis.
-double outermost_pipe_radius(const Layout& layout) {
-  double r = layout.outer_ring.radius;
-  for (const auto& ring : layout.rings) r = std::max(r, ring.radius);
-  for (const auto& p : layout.pipes) r = std::max(r, std::hypot(p.x, p.y));
-  return r;
-}
 
 Rectangle read_rectangle(const Node& n) {
   Rectangle rectangle;

@@ -2,6 +2,7 @@
 #include "project/load_shaft.hpp"
 
 #include <fmt/format.h>
+#include <cmath>
 #include <set>
 
 #include "project/load_reports.hpp"
@@ -32,7 +33,80 @@ std::optional<design::Annulus> read_annulus(const Node& n, double pipe_diameter)
   return a;
 }
 
+// A ring of the layout; the angle of its first pipe is `angle_key`.
+Ring read_ring(const Node& n, std::string_view angle_key) {
+  Ring ring;
+  if (!n.object({"radius", "count", angle_key})) return ring;
+  ring.radius = n["radius"].required().positive().value_or(0.0);
+  ring.count = n["count"].required().count().value_or(0);
+  ring.offset_deg = n[angle_key].number().value_or(0.0);
+  return ring;
+}
+
 }  // namespace
+
+Layout read_layout(const Node& n) {
+  Layout layout;
+  if (!n.object({"pattern", "outer_ring", "inner_ring", "rings", "pipes"})) return layout;
+  const Node pattern_node = n["pattern"].required();
+  const auto pattern = pattern_node.choice<Pattern>(
+      "pattern", {{"single", Pattern::single},
+                  {"three-hole", Pattern::three_hole},
+                  {"four-hole", Pattern::four_hole},
+                  {"rings", Pattern::rings},
+                  {"pipes", Pattern::pipes}});
+  if (!pattern) return layout;  // which fields belong depends on the pattern
+  layout.pattern = *pattern;
+  const bool double_ring = *pattern == Pattern::three_hole || *pattern == Pattern::four_hole;
+  const bool ring_pattern = double_ring || *pattern == Pattern::single;
+
+  // A field of another pattern is a mistake, not something to ignore.
+  const auto uses = [&](std::string_view key) {
+    if (key == "outer_ring") return ring_pattern;
+    if (key == "inner_ring") return double_ring;
+    if (key == "rings") return *pattern == Pattern::rings;
+    return *pattern == Pattern::pipes;
+  };
+  for (const auto key : {"outer_ring", "inner_ring", "rings", "pipes"})
+    if (n[key].present() && !uses(key))
+      n[key].problem("not used by pattern '" + pattern_node.json().get<std::string>() + "'");
+
+  if (ring_pattern) {
+    layout.outer_ring = read_ring(n["outer_ring"].required(), "start_angle_deg");
+    if (double_ring) {
+      const Node inner = n["inner_ring"].required();
+      if (inner.object({"radius"})) layout.inner_ring_radius = inner["radius"].required().positive();
+      if (layout.inner_ring_radius && layout.outer_ring.radius > 0 &&
+          *layout.inner_ring_radius >= layout.outer_ring.radius)
+        inner["radius"].problem(fmt::format("must be smaller than the outer ring's radius {}, got {}",
+                                            layout.outer_ring.radius, *layout.inner_ring_radius));
+    }
+  } else if (*pattern == Pattern::rings) {
+    const Node rings = n["rings"].required();
+    const auto size = rings.array();
+    if (size == 0u) rings.problem("must list at least one ring");
+    for (std::size_t i = 0; i < size.value_or(0); ++i)
+      layout.rings.push_back(read_ring(rings[i], "offset_deg"));
+  } else {
+    const Node pipes = n["pipes"].required();
+    const auto size = pipes.array();
+    if (size == 0u) pipes.problem("must list at least one pipe");
+    for (std::size_t i = 0; i < size.value_or(0); ++i) {
+      const Node p = pipes[i];
+      if (!p.object({"x", "y"})) continue;
+      layout.pipes.push_back({p["x"].required().number().value_or(0.0), p["y"].required().number().value_or(0.0)});
+    }
+  }
+  return layout;
+}
+
+// Distance of the farthest pipe centre from the shaft axis.
+double outermost_pipe_radius(const Layout& layout) {
+  double r = layout.outer_ring.radius;
+  for (const auto& ring : layout.rings) r = std::max(r, ring.radius);
+  for (const auto& p : layout.pipes) r = std::max(r, std::hypot(p.x, p.y));
+  return r;
+}
 
 Pipe read_pipe(const Node& n) {
   Pipe pipe;

@@ -1,20 +1,20 @@
-// Readers shared by the shaft section's blocks: temperature schedules, the
-// soil, the freeze pipe (fixed wall or brine) and the layers of the ground
-// (issue 18). Internal to lib/project; problems go to the Node.
+// Readers of the shaft section's blocks: the layout, the freeze pipe (fixed
+// wall or brine) and the layers of the ground (issue 18). Internal to lib/project; problems go to the Node.
 #pragma once
 
 #include <string>
 #include <vector>
 
 #include "project/json_reader.hpp"
+#include "project/load_basics.hpp"
 #include "project/project.hpp"
 
 namespace frostwall::project::detail {
 
-// A number, or [[day, degC], ...] with days ascending.
-TemperatureSchedule read_schedule(const Node& n);
-// A built-in soil's name or a soil object.
-Soil read_soil(const Node& n, std::vector<std::string>& warnings);
+// "layout": single, three-hole, four-hole, rings or measured pipes.
+Layout read_layout(const Node& n);
+// Distance of the farthest pipe centre from the shaft axis.
+double outermost_pipe_radius(const Layout& layout);
 
 // "pipe": {"diameter", "temperature", "model"} with the wall held at the
 // temperature, or {"boundary": "brine", "brine_temperature",

@@ -1,0 +1,104 @@
+// Temperature schedules and soils (load_basics.hpp).
+#include "project/load_basics.hpp"
+
+#include <array>
+#include <fmt/format.h>
+
+namespace frostwall::project {
+
+using detail::Json;
+using detail::Node;
+
+namespace {
+
+constexpr double seconds_per_day = 86400.0;
+constexpr double pure_water_latent_heat = 334000.0;  // J/kg
+
+std::array<double, 2> read_conductivity(const Node& n) {
+  if (!n.given()) return {};
+  if (n.json().is_array()) {
+    if (n.json().size() != 2) {
+      n.problem(fmt::format("must be a number or [kx, ky], got an array of {}", n.json().size()));
+      return {};
+    }
+    return {n[0].required().positive().value_or(0.0), n[1].required().positive().value_or(0.0)};
+  }
+  if (!n.json().is_number()) {
+    n.problem("must be a number or [kx, ky], got " + n.type());
+    return {};
+  }
+  const double k = n.positive().value_or(0.0);
+  return {k, k};
+}
+
+}  // namespace
+
+// A wall temperature: a number, or [[day, degC], ...] with days ascending.
+TemperatureSchedule detail::read_schedule(const Node& n) {
+  TemperatureSchedule schedule = TemperatureSchedule::fixed(0.0);
+  if (!n.given()) return schedule;
+  if (n.json().is_number()) return TemperatureSchedule::fixed(n.json().get<double>());
+  if (!n.json().is_array()) {
+    n.problem("must be a number or a [[day, degC], ...] schedule, got " + n.type());
+    return schedule;
+  }
+  if (n.json().empty()) {
+    n.problem("must have at least one [day, degC] point");
+    return schedule;
+  }
+  schedule.points.clear();
+  for (std::size_t i = 0; i < n.json().size(); ++i) {
+    const Node point = n[i];
+    const Json& p = point.json();
+    if (!p.is_array() || p.size() != 2 || !p[0].is_number() || !p[1].is_number()) {
+      point.problem("must be a [day, degC] pair, got " + (p.is_array() ? point.shown() : point.type()));
+      continue;
+    }
+    const double day = p[0].get<double>();
+    const double seconds = day * seconds_per_day;
+    if (!schedule.points.empty() && seconds <= schedule.points.back().first)
+      point.problem(fmt::format("days must be ascending, got {} after {}", day,
+                                schedule.points.back().first / seconds_per_day));
+    else
+      schedule.points.emplace_back(seconds, p[1].get<double>());
+  }
+  if (schedule.points.empty()) schedule = TemperatureSchedule::fixed(0.0);
+  return schedule;
+}
+
+Soil detail::read_soil(const Node& n, std::vector<std::string>& warnings) {
+  Soil soil;
+  if (!n.given()) return soil;
+  if (n.json().is_string()) {
+    const auto name = n.json().get<std::string>();
+    if (auto builtin = builtin_soil(name)) return *builtin;
+    std::string names;
+    for (const auto& known : builtin_soil_names()) names += (names.empty() ? "" : ", ") + known;
+    n.problem("unknown soil '" + name + "' (built-in: " + names + ")");
+    return soil;
+  }
+  if (!n.json().is_object()) {
+    n.problem("must be a built-in soil name or an object, got " + n.type());
+    return soil;
+  }
+  n.object({"name", "density", "unfrozen", "frozen", "latent_heat", "freezing_point", "freezing_range"});
+  soil.name = n["name"].string().value_or("custom soil");
+  soil.density = n["density"].required().positive().value_or(0.0);
+  for (const auto& [key, phase] : {std::pair{"unfrozen", &soil.unfrozen}, std::pair{"frozen", &soil.frozen}}) {
+    const Node p = n[key].required();
+    if (!p.object({"conductivity", "heat_capacity"})) continue;
+    phase->conductivity = read_conductivity(p["conductivity"].required());
+    phase->heat_capacity = p["heat_capacity"].required().positive().value_or(0.0);
+  }
+  // Zero is allowed: a soil without phase change (pure conduction checks).
+  soil.latent_heat = n["latent_heat"].required().non_negative().value_or(0.0);
+  soil.freezing_point = n["freezing_point"].number().value_or(0.0);
+  soil.freezing_range = n["freezing_range"].non_negative().value_or(0.0);
+  if (soil.latent_heat > pure_water_latent_heat)
+    warnings.push_back(fmt::format(
+        "{}: {} J/kg is more than pure water's 334 kJ/kg; probably a slipped decimal point ({}?)",
+        n["latent_heat"].path(), soil.latent_heat, soil.latent_heat / 10));
+  return soil;
+}
+
+}  // namespace frostwall::project
