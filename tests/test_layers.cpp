@@ -12,6 +12,7 @@
 
 #include "report/mustache_view.hpp"
 #include "report/report.hpp"
+#include "report/report_sections.hpp"
 #include "report/templates.hpp"
 #include "report_view_check.hpp"
 #include "run_project_cli.hpp"
@@ -122,4 +123,15 @@ TEST_CASE("Layers: a two-layer shaft gives each layer the results of its own run
   CHECK(report.find("id=\"wall-check\"") != std::string::npos);
   WARN(fmt::format("met: sand at 60 m day {}, clay at 120 m day {}", alone[0]["design"]["met_day"].dump(),
                    alone[1]["design"]["met_day"].dump()));
+}
+
+TEST_CASE("The design verdict says when a wall that passed fails again", "[design][report]") {
+  json s = {{"design", {{"met_day", 40.0}, {"stays_met", false}}}, {"wall", {{{"day", 120.0}, {"utilisation", 1.2}}}}};
+  CHECK(frostwall::report::detail::design_verdict(s) ==
+        "design met on day 40 (but not for good: it fails again later); utilisation 1.20 on day 120");
+  s["design"]["stays_met"] = true;
+  s["wall"][0]["utilisation"] = 0.93;
+  CHECK(frostwall::report::detail::design_verdict(s) == "design met on day 40; utilisation 0.93 on day 120");
+  s["design"]["met_day"] = nullptr;
+  CHECK(frostwall::report::detail::design_verdict(s) == "design not met by day 120; utilisation 0.93 on day 120");
 }
