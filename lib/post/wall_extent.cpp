@@ -161,13 +161,13 @@ std::vector<double> RayFan::on_ray(const std::vector<double>& fan_values, int k)
   return {fan_values.begin() + k * n, fan_values.begin() + (k + 1) * n};
 }
 
-WallExtents wall_extents(const RayFan& fan, const std::vector<double>& liquid_fraction_on_fan,
-                         const std::vector<double>& ring_radii) {
+WallExtents wall_extents(const RayFan& fan, const std::vector<double>& values_on_fan,
+                         const std::vector<double>& ring_radii, double level) {
   const std::vector<double> r = fan.radii();
   WallExtents w;
   w.rays.reserve(fan.rays);
   for (int k = 0; k < fan.rays; ++k) {
-    w.rays.push_back(frozen_stretch(r, fan.on_ray(liquid_fraction_on_fan, k), ring_radii));
+    w.rays.push_back(stretch_at_or_below(r, fan.on_ray(values_on_fan, k), level, ring_radii));
     if (k == 0 || w.rays.back().thickness < w.min_thickness) {
       w.min_thickness = w.rays.back().thickness;
       w.thinnest_ray = k;
@@ -179,80 +179,57 @@ WallExtents wall_extents(const RayFan& fan, const std::vector<double>& liquid_fr
 WallGauge::WallGauge(const FieldSampler& sampler, RayFan fan, std::vector<double> ring_radii, std::optional<double> isotherm)
     : fan_(fan), ring_radii_(std::move(ring_radii)), radii_(fan.radii()), fan_probe_(sampler, fan.points()), isotherm_(isotherm) {}
 
-void WallGauge::measure_isotherm(const std::vector<double>& temperature, WallReading& reading) const {
-  // As for the frozen stretch: each ray read from the rings outward to the
-  // first sample warmer than the isotherm; the rest stays NaN.
+std::vector<double> WallGauge::read_outward(const std::vector<double>& field, double level,
+                                           std::vector<std::pair<std::size_t, std::size_t>>& read) const {
+  // A ray's stretches at or below the level need their samples only from
+  // each ring outward, on either side, to the first one above it: those are
+  // read, the rest stay NaN (skipped as "no particle within reach"). The
+  // answer is the same as from every sample, at a fraction of the reads
+  // once the wall is thin against the domain.
   const std::size_t n = radii_.size();
-  const double level = *isotherm_;
-  std::vector<double> T(n * fan_.rays, std::numeric_limits<double>::quiet_NaN());
+  std::vector<double> values(n * fan_.rays, std::numeric_limits<double>::quiet_NaN());
+  read.assign(fan_.rays, {n, 0});
   particles::for_each_item(fan_.rays, [&](std::size_t k) {
-    double* ray = T.data() + k * n;
-    auto warmer_at = [&](std::size_t i) {
-      if (std::isnan(ray[i])) ray[i] = fan_probe_.at(k * n + i, temperature);
+    double* ray = values.data() + k * n;
+    auto above_at = [&](std::size_t i) {  // reads sample i of the ray
+      if (std::isnan(ray[i])) ray[i] = fan_probe_.at(k * n + i, field);
       return ray[i] > level;
-    };
-    for (double ring : ring_radii_) {
-      const std::size_t m = std::lower_bound(radii_.begin(), radii_.end(), ring) - radii_.begin();
-      for (std::size_t i = m; i-- > 0;)
-        if (warmer_at(i)) break;
-      for (std::size_t i = m; i < n; ++i)
-        if (warmer_at(i)) break;
-    }
-  });
-  WallExtents& w = reading.isotherm;
-  for (int k = 0; k < fan_.rays; ++k) {
-    w.rays.push_back(stretch_at_or_below(radii_, fan_.on_ray(T, k), level, ring_radii_));
-    if (k == 0 || w.rays.back().thickness < w.min_thickness) {
-      w.min_thickness = w.rays.back().thickness;
-      w.thinnest_ray = k;
-    }
-  }
-  const std::vector<double> ray = fan_.on_ray(T, w.thinnest_ray);
-  reading.isotherm_mean_temperature = mean_over_frozen(radii_, ray, ray, w.rays[std::size_t(w.thinnest_ray)]);
-}
-
-WallReading WallGauge::measure(const std::vector<double>& liquid_fraction,
-                               const std::vector<double>& temperature) const {
-  // A ray's frozen stretches need their samples only from each ring
-  // outward, on either side, to the first unfrozen one: those are read, the
-  // rest stay NaN (skipped as "no particle within reach"). The answer is
-  // the same as from every sample, at a fraction of the reads once the wall
-  // is thin against the domain.
-  const std::size_t n = radii_.size();
-  std::vector<double> f(n * fan_.rays, std::numeric_limits<double>::quiet_NaN());
-  std::vector<std::pair<std::size_t, std::size_t>> read(fan_.rays, {n, 0});  // [first, last] index read per ray
-  particles::for_each_item(fan_.rays, [&](std::size_t k) {
-    double* ray = f.data() + k * n;
-    auto unfrozen_at = [&](std::size_t i) {  // reads sample i of the ray
-      if (std::isnan(ray[i])) ray[i] = fan_probe_.at(k * n + i, liquid_fraction);
-      return ray[i] > frozen_level;
     };
     for (double ring : ring_radii_) {
       const std::size_t m = std::lower_bound(radii_.begin(), radii_.end(), ring) - radii_.begin();
       std::size_t first = std::min(m, n - 1), last = first;
       for (std::size_t i = m; i-- > 0;)
-        if (first = i; unfrozen_at(i)) break;
+        if (first = i; above_at(i)) break;
       for (std::size_t i = m; i < n; ++i)
-        if (last = i; unfrozen_at(i)) break;
+        if (last = i; above_at(i)) break;
       read[k] = {std::min(read[k].first, first), std::max(read[k].second, last)};
     }
   });
+  return values;
+}
+
+WallReading WallGauge::measure(const std::vector<double>& liquid_fraction,
+                               const std::vector<double>& temperature) const {
+  const std::size_t n = radii_.size();
+  std::vector<std::pair<std::size_t, std::size_t>> read;  // [first, last] index read per ray
+  const std::vector<double> f = read_outward(liquid_fraction, frozen_level, read);
   WallReading reading;
   reading.extents = wall_extents(fan_, f, ring_radii_);
-  const int OB = fan_.rays - 1;
-  std::vector<double> T(n, std::numeric_limits<double>::quiet_NaN());
-  for (std::size_t i = read[OB].first; i <= read[OB].second && i < n; ++i) T[i] = fan_probe_.at(OB * n + i, temperature);
-  reading.mean_temperature_OB = mean_over_frozen(radii_, fan_.on_ray(f, OB), T, reading.extents.OB());
-  const int thinnest = reading.extents.thinnest_ray;
-  if (thinnest == OB) {
-    reading.mean_temperature_thinnest = reading.mean_temperature_OB;
-  } else {
-    std::fill(T.begin(), T.end(), std::numeric_limits<double>::quiet_NaN());
-    for (std::size_t i = read[thinnest].first; i <= read[thinnest].second && i < n; ++i) T[i] = fan_probe_.at(thinnest * n + i, temperature);
-    reading.mean_temperature_thinnest =
-        mean_over_frozen(radii_, fan_.on_ray(f, thinnest), T, reading.extents.rays[std::size_t(thinnest)]);
+  // The mean temperature over ray k's frozen stretch, from T where f was read.
+  auto mean_temperature_on = [&](int k) {
+    std::vector<double> T(n, std::numeric_limits<double>::quiet_NaN());
+    for (std::size_t i = read[k].first; i <= read[k].second && i < n; ++i) T[i] = fan_probe_.at(k * n + i, temperature);
+    return mean_over_frozen(radii_, fan_.on_ray(f, k), T, reading.extents.rays[std::size_t(k)]);
+  };
+  const int OB = fan_.rays - 1, thinnest = reading.extents.thinnest_ray;
+  reading.mean_temperature_OB = mean_temperature_on(OB);
+  reading.mean_temperature_thinnest = thinnest == OB ? reading.mean_temperature_OB : mean_temperature_on(thinnest);
+  if (isotherm_) {  // the wall colder than the isotherm: the same reading on temperature
+    const std::vector<double> T_fan = read_outward(temperature, *isotherm_, read);
+    reading.isotherm = wall_extents(fan_, T_fan, ring_radii_, *isotherm_);
+    const std::vector<double> ray = fan_.on_ray(T_fan, reading.isotherm.thinnest_ray);
+    reading.isotherm_mean_temperature = mean_over_frozen(radii_, ray, ray, reading.isotherm.rays[std::size_t(reading.isotherm.thinnest_ray)]);
   }
-  if (isotherm_) measure_isotherm(temperature, reading);
   return reading;
 }
 

@@ -88,10 +88,11 @@ struct WallExtents {
   const FrozenStretch& OB() const { return rays.back(); }
 };
 
-// liquid_fraction_on_fan: values at fan.points(); on each ray the longest
-// frozen stretch containing one of ring_radii.
-WallExtents wall_extents(const RayFan& fan, const std::vector<double>& liquid_fraction_on_fan,
-                         const std::vector<double>& ring_radii);
+// values_on_fan: the liquid fraction at fan.points(); on each ray the longest
+// frozen stretch containing one of ring_radii. Any field and level give the
+// stretches at or below it (temperatures and the design isotherm).
+WallExtents wall_extents(const RayFan& fan, const std::vector<double>& values_on_fan,
+                         const std::vector<double>& ring_radii, double level = 0.5);
 
 // One snapshot's wall entry of the summary.
 struct WallReading {
@@ -120,7 +121,10 @@ class WallGauge {
   std::vector<double> radii_;
   PointProbe fan_probe_;  // OB is its last ray
   std::optional<double> isotherm_;
-  void measure_isotherm(const std::vector<double>& temperature, WallReading& reading) const;
+  // The field at the fan's samples each ray needs for its stretches at or
+  // below `level` (NaN elsewhere); read[k]: ray k's [first, last] sample read.
+  std::vector<double> read_outward(const std::vector<double>& field, double level,
+                                   std::vector<std::pair<std::size_t, std::size_t>>& read) const;
 };
 
 }  // namespace frostwall::post

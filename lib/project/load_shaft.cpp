@@ -185,7 +185,7 @@ std::vector<Layer> read_layers(const Node& n, const Node& root, const Project& p
     if (depth && *depth < 0.0) l["depth"].problem(fmt::format("must not be negative (metres below the surface), got {}", *depth));
     layer.depth = depth.value_or(0.0);
     layer.soil = l["soil"].present() ? read_soil(l["soil"], ignored) : project.soil;
-    layer.strength = l["strength"].present() ? read_strength(l["strength"]) : project.design.strength;
+    if (l["strength"].present()) read_strength(l["strength"]);  // checked here; the layer's run reads it from the patch
     if (l["pressure"].present()) {
       layer.pressure = read_pressure(l["pressure"], layer.depth, l["depth"]).value_or(0.0);
     } else if (const Node design = root["design"]["pressure"]; design.present()) {

@@ -233,7 +233,6 @@ struct Layer {
   std::string name;
   double depth = 0.0;  // m
   Soil soil;
-  std::optional<design::StrengthLaw> strength;
   double pressure = 0.0;  // MPa, lateral, at the depth
   std::string patch;      // the layer as a JSON merge patch of the project file
 };

@@ -1,6 +1,5 @@
 #include "study/run_layers.hpp"
 
-#include <cctype>
 #include <fmt/core.h>
 #include <limits>
 
@@ -16,7 +15,7 @@ using nlohmann::json;
 std::string layer_folder(const std::string& name) {
   std::string folder;
   for (char c : name)
-    folder += std::isalnum(static_cast<unsigned char>(c)) || std::string_view("._-+=").find(c) != std::string_view::npos ? c : '_';
+    folder += variant_name_character(c) ? c : '_';
   if (folder.empty() || folder.front() == '.') folder.insert(folder.begin(), 'L');
   return folder;
 }

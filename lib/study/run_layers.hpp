@@ -13,8 +13,8 @@
 
 namespace frostwall::study {
 
-// The layer's folder name: its name with anything but letters, digits and
-// . _ - + = replaced by '_'.
+// The layer's folder name: its name with every character a variant name
+// may not hold (study_file.hpp) replaced by '_'.
 std::string layer_folder(const std::string& layer_name);
 
 // The index of the governing layer among layer summaries: the one met last

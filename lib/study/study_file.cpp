@@ -149,10 +149,14 @@ std::vector<Parameter> read_product(const Node& n) {
 
 StudyError::StudyError(std::vector<std::string> problems) : std::runtime_error(join(problems)), problems_(std::move(problems)) {}
 
+bool variant_name_character(char c) {
+  return std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '_' || c == '-' || c == '+' || c == '=';
+}
+
 bool valid_variant_name(const std::string& name) {
   if (name.empty() || name.front() == '.' || name.size() > 120) return false;
-  for (unsigned char c : name)
-    if (!std::isalnum(c) && c != '.' && c != '_' && c != '-' && c != '+' && c != '=') return false;
+  for (char c : name)
+    if (!variant_name_character(c)) return false;
   return true;
 }
 

@@ -58,5 +58,7 @@ Study parse_study(const std::string& text, const std::filesystem::path& director
 // A name usable as a folder and in a link: letters, digits and . _ - + =,
 // not starting with '.'.
 bool valid_variant_name(const std::string& name);
+// One character such a name may hold.
+bool variant_name_character(char c);
 
 }  // namespace frostwall::study

@@ -52,27 +52,20 @@ void ThermalModel::apply_boundaries(double t) {
   for (std::size_t b = 0; b < boundaries_.size(); ++b) T_wall[b] = boundaries_[b].temperature.at(t);
   const std::size_t n = pairs_.n_free;
   const bool extend = !beyond_wall_.row_start.empty();
-  // The field's extension beyond the walls, E_j (on the wall: unused);
-  // a film wall needs it before its temperature is known.
-  bool films = false;
-  for (const auto& b : boundaries_) films = films || b.film.has_value();
-  std::vector<double> extension;
-  if (films) {
-    extension.assign(size() - n, 0.0);
+  // The field's extension beyond the walls, E_j (on the wall: unused); a
+  // film wall's temperature depends on it.
+  std::vector<double> extension(size() - n, 0.0);
+  if (extend)
     for (std::size_t i = n; i < size(); ++i)
-      if (extend && !beyond_wall_.on_wall(i - n)) extension[i - n] = beyond_wall_.value(i - n, T_);
-    for (std::size_t b = 0; b < boundaries_.size(); ++b)
-      if (boundaries_[b].film) solve_film(b, T_wall[b], extension);
-  }
+      if (!beyond_wall_.on_wall(i - n)) extension[i - n] = beyond_wall_.value(i - n, T_);
+  for (std::size_t b = 0; b < boundaries_.size(); ++b)
+    if (boundaries_[b].film) solve_film(b, T_wall[b], extension);
   for (std::size_t i = n; i < size(); ++i) {
     const int b = boundary_id_[i];
     const auto& film = boundaries_[b].film;
     const double Tw = film ? film_wall_T_[b][film->group[i - n]] : T_wall[b];
-    if (!extend || beyond_wall_.on_wall(i - n)) {
-      set_state(i, laws_[0].enthalpy(Tw));
-      continue;
-    }
-    set_state(i, laws_[0].enthalpy(2.0 * Tw - (films ? extension[i - n] : beyond_wall_.value(i - n, T_))));
+    const double T = !extend || beyond_wall_.on_wall(i - n) ? Tw : 2.0 * Tw - extension[i - n];
+    set_state(i, laws_[0].enthalpy(T));
   }
 }
 
