@@ -21,6 +21,12 @@
 
 namespace {
 
+// Under mpirun every rank runs the command; rank 0 writes the files.
+bool first_rank() {
+  const char* rank = std::getenv("OMPI_COMM_WORLD_RANK");
+  return !rank || std::string(rank) == "0";
+}
+
 // Progress goes to a terminal only: quiet in CI and when piped.
 bool show_progress() { return isatty(fileno(stderr)) && std::getenv("CI") == nullptr; }
 
@@ -69,6 +75,8 @@ int run_command(const std::string& file) {
       study::run_layers(p, options.project_text, layered);
     } else {
       run::run_project(p, options);
+      // The report, from the files the run just wrote (one rank writes them).
+      if (p.output.report && first_rank()) report::write_report(p.output.directory);
     }
   } catch (const project::ProjectError& e) {
     for (const auto& line : e.problems()) std::cerr << line << "\n";
@@ -78,7 +86,7 @@ int run_command(const std::string& file) {
     return 1;
   }
   // Under mpirun every rank runs this; one says so.
-  if (const char* rank = std::getenv("OMPI_COMM_WORLD_RANK"); !rank || std::string(rank) == "0")
+  if (first_rank())
     std::cerr << "wrote " << p.output.directory << "\n";
   return 0;
 }

@@ -11,7 +11,7 @@
 
 #include "project/project.hpp"
 #include "timing.hpp"
-#include "run/model.hpp"
+#include "freezing/model.hpp"
 
 using namespace frostwall;
 using frostwall::bench::seconds_per_call;
@@ -22,7 +22,7 @@ int main() {
   p.numerics.integrator = project::IntegratorKind::explicit_euler;
   p.numerics.spacing = 0.025;
   p.numerics.placement = project::Placement::lattice;  // paper mode's cloud
-  run::Model m = run::build_model(p);
+  freezing::Model m = freezing::build_model(p);
   const auto& model = *m.model;
   const auto& P = model.pairs();
   const std::size_t n = P.n_free, pairs = P.pairs();

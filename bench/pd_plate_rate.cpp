@@ -12,7 +12,7 @@
 #include "pd/solid.hpp"
 #include "project/project.hpp"
 #include "timing.hpp"
-#include "run/model.hpp"
+#include "freezing/model.hpp"
 
 using namespace frostwall;
 using frostwall::bench::seconds_per_call;
@@ -20,7 +20,7 @@ using frostwall::bench::seconds_per_call;
 
 int main() {
   project::Project p = project::load_project(FROSTWALL_SOURCE_DIR "/projects/plate_cooling.json");
-  run::Model m = run::build_model(p);
+  freezing::Model m = freezing::build_model(p);
   const auto& P = m.particles();
   pd::SolidGeometry g;
   g.position.assign(P.position.begin(), P.position.begin() + P.n_free);

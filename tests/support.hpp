@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "project/project.hpp"
-#include "run/model.hpp"
+#include "freezing/model.hpp"
 #include "thermal/time_loop.hpp"
 
 namespace frostwall::test {
@@ -41,7 +41,7 @@ inline std::string numerics(double spacing, const std::string& laplacian = "reno
 
 // Marches to each time in `times`, calling at(k) there.
 template <class At>
-std::size_t march(run::Model& m, const std::vector<double>& times, At&& at) {
+std::size_t march(freezing::Model& m, const std::vector<double>& times, At&& at) {
   thermal::TimeLoopObservers obs;
   obs.snapshot = [&](const thermal::ThermalModel&, double, std::size_t k) { at(k); };
   return thermal::run_time_loop(*m.model, *m.integrator, times.back(), times, obs).steps;
@@ -53,7 +53,7 @@ std::size_t march(run::Model& m, const std::vector<double>& times, At&& at) {
 inline double insulated_sine_mode_error(const std::string& numerics) {
   const double t_end = 0.05;
   const std::string insulated = R"({ "left": "adiabatic", "right": "adiabatic", "top": "adiabatic", "bottom": "adiabatic" })";
-  auto m = run::build_model(rectangle_project(1.0, 1.0, insulated, unit_soil(-100.0, 0.0), 5.0, t_end, numerics));
+  auto m = freezing::build_model(rectangle_project(1.0, 1.0, insulated, unit_soil(-100.0, 0.0), 5.0, t_end, numerics));
   const auto& x = m.particles().position;
   auto mode = [&](std::size_t i) { return std::cos(M_PI * x[i][0]) * std::cos(M_PI * x[i][1]); };
   for (std::size_t i = 0; i < m.model->free_count(); ++i) m.model->set_enthalpy(i, m.model->law().enthalpy(5.0 + mode(i)));
@@ -71,7 +71,7 @@ inline double insulated_sine_mode_error(const std::string& numerics) {
 // at t = 0.02 (the far end stays at 1); numerics as above.
 inline double cooled_half_space_error(double dx, const std::string& numerics) {
   const double t_end = 0.02;
-  auto m = run::build_model(rectangle_project(
+  auto m = freezing::build_model(rectangle_project(
       1.0, 2 * dx, R"({ "left": { "temperature": 0.0 }, "right": "adiabatic", "top": "adiabatic", "bottom": "adiabatic" })",
       unit_soil(-100.0, 0.0), 1.0, t_end, numerics));
   double error = 0.0;
@@ -92,7 +92,7 @@ inline double observed_order(double coarse_error, double fine_error) { return st
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "run/closure_tracker.hpp"
+#include "freezing/closure_tracker.hpp"
 
 namespace frostwall::test {
 
@@ -112,9 +112,9 @@ struct ClosureDays {
 };
 // snapshots: where the run lands exactly (a shipped project's snapshot
 // days cut its steps as in `frostwall run`); t_end is always one.
-inline ClosureDays closure_days(run::Model& m, double t_end, std::vector<double> snapshots = {}) {
+inline ClosureDays closure_days(freezing::Model& m, double t_end, std::vector<double> snapshots = {}) {
   if (snapshots.empty() || snapshots.back() < t_end) snapshots.push_back(t_end);
-  run::ClosureTracker tracker(m, t_end, t_end / run::time_series_points);
+  freezing::ClosureTracker tracker(m, t_end, t_end / freezing::time_series_points);
   thermal::TimeLoopObservers obs;
   obs.after_step = [&](const thermal::ThermalModel& model, double t) { tracker.after_step(model, t); };
   obs.finished = [&] { return tracker.closure_time().has_value(); };
@@ -122,6 +122,6 @@ inline ClosureDays closure_days(run::Model& m, double t_end, std::vector<double>
   auto days = [](const std::optional<double>& t) { return t ? std::optional(*t / 86400.0) : std::nullopt; };
   return {days(tracker.closure_time()), days(tracker.contact_time())};
 }
-inline std::optional<double> closure_day(run::Model& m, double t_end) { return closure_days(m, t_end).closure; }
+inline std::optional<double> closure_day(freezing::Model& m, double t_end) { return closure_days(m, t_end).closure; }
 
 }  // namespace frostwall::test

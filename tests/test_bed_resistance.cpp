@@ -1,10 +1,10 @@
 // Story: the pressure gradient of flow through a bed of grains
-// (porous_flow/bed_resistance.hpp) against independent numbers:
+// (pore_water/bed_resistance.hpp) against independent numbers:
 //  - CFDEMcoupling's Ergun case (d 1 mm, porosity 0.4513, bed 0.0156 m,
 //    rho_f 10, nu 1.5e-4): dP = 23.0, 115.1, 230.5 Pa at U = 0.002, 0.01,
 //    0.02 m/s (issue 15, check 2's reference values);
 //  - Wen-Yu's dilute limit: the Schiller-Naumann drag of the grains in a
-//    unit volume, summed grain by grain (porous_flow/drag_law.hpp; the
+//    unit volume, summed grain by grain (pore_water/drag_law.hpp; the
 //    drag coefficient is shared, the voidage, grain count and area not);
 //  - the blend is Ergun in dense beds, Wen-Yu in dilute ones, and has no
 //    jump at porosity 0.8.
@@ -12,11 +12,11 @@
 #include <cmath>
 #include <numbers>
 
-#include "porous_flow/bed_resistance.hpp"
+#include "pore_water/bed_resistance.hpp"
 
-using namespace frostwall::porous_flow;
+using namespace frostwall::pore_water;
 
-TEST_CASE("bed resistance: Ergun's pressure drop in CFDEMcoupling's fixed bed", "[porous_flow][verification]") {
+TEST_CASE("bed resistance: Ergun's pressure drop in CFDEMcoupling's fixed bed", "[pore_water][verification]") {
   const Fluid fluid{10.0, 10.0 * 1.5e-4};
   const double d = 1e-3, porosity = 0.4513, length = 0.0156;
   const double U[3] = {0.002, 0.01, 0.02}, dP[3] = {23.0, 115.1, 230.5};
@@ -29,7 +29,7 @@ TEST_CASE("bed resistance: Ergun's pressure drop in CFDEMcoupling's fixed bed", 
   CHECK(ergun_gradient(fluid, porosity, d, -0.01) == Approx(-ergun_gradient(fluid, porosity, d, 0.01)));
 }
 
-TEST_CASE("bed resistance: Wen-Yu's dilute limit is the grains' own Schiller-Naumann drag", "[porous_flow]") {
+TEST_CASE("bed resistance: Wen-Yu's dilute limit is the grains' own Schiller-Naumann drag", "[pore_water]") {
   const Fluid water{1000.0, 1e-3};
   const double d = 4e-3, solid = 1e-4;  // a few grains per litre
   for (double U : {1e-4, 1e-2, 0.3}) {
@@ -40,7 +40,7 @@ TEST_CASE("bed resistance: Wen-Yu's dilute limit is the grains' own Schiller-Nau
   }
 }
 
-TEST_CASE("bed resistance: the blend is Ergun when dense, Wen-Yu when dilute, continuous at porosity 0.8", "[porous_flow]") {
+TEST_CASE("bed resistance: the blend is Ergun when dense, Wen-Yu when dilute, continuous at porosity 0.8", "[pore_water]") {
   const Fluid water{1000.0, 1e-3};
   const double d = 4e-3, U = 0.01;
   CHECK(bed_gradient(water, 0.4, d, U) == Approx(ergun_gradient(water, 0.4, d, U)).epsilon(0.01));

@@ -8,8 +8,8 @@
 #include <catch2/catch.hpp>
 #include <fmt/core.h>
 
-#include "run/capacity.hpp"
-#include "run/model.hpp"
+#include "freezing/capacity.hpp"
+#include "freezing/model.hpp"
 #include "support.hpp"
 
 using namespace frostwall;
@@ -32,8 +32,8 @@ TEST_CASE("capacity: the estimated particle count is within 10 % of the placed o
                                                     1.0, 0.1, R"({"spacing": 0.01, "placement": "graded"})")},
   };
   for (const auto& c : cases) {
-    const auto estimate = run::estimate_capacity(c.project);
-    const auto m = run::build_model(c.project);
+    const auto estimate = freezing::estimate_capacity(c.project, freezing::resolved_spacing(c.project));
+    const auto m = freezing::build_model(c.project);
     const double placed = static_cast<double>(m.model->free_count());
     fmt::print("capacity, {}: estimated {:.0f}, placed {:.0f} ({:+.1f} %)\n", c.name, estimate.particles, placed,
                100.0 * (estimate.particles / placed - 1.0));
@@ -45,7 +45,7 @@ TEST_CASE("capacity: the estimated particle count is within 10 % of the placed o
 TEST_CASE("capacity: a refused project names the field and a value that fits", "[capacity]") {
   auto refused = [](const project::Project& p) {
     try {
-      run::check_capacity(p);
+      freezing::check_capacity(p, freezing::resolved_spacing(p));
     } catch (const project::ProjectError& e) {
       REQUIRE(e.problems().size() == 1);
       return e.problems().front();

@@ -12,8 +12,8 @@
 #include <cmath>
 #include <fmt/core.h>
 
-#include "porous_flow/darcy_cloud.hpp"
-#include "porous_flow/darcy_velocity.hpp"
+#include "groundwater/darcy_cloud.hpp"
+#include "groundwater/darcy_velocity.hpp"
 #include "sph/kernel.hpp"
 #include "sph/laplacian.hpp"
 
@@ -67,9 +67,9 @@ DiscFlow flow_past_disc(double s, bool frozen_ground) {
   if (frozen_ground)
     for (std::size_t i = 0; i < cloud.size(); ++i)
       if (cloud.position[i].norm() < a) k[i] = 1e-6;
-  porous_flow::DarcyCloud darcy(pairs, cloud.volume, fixed);
+  groundwater::DarcyCloud darcy(pairs, cloud.volume, fixed);
   const auto report = darcy.solve(k);
-  const auto q = porous_flow::darcy_flux_at_particles(pairs, darcy.potential(), k);
+  const auto q = groundwater::darcy_flux_at_particles(pairs, darcy.potential(), k);
   DiscFlow out;
   out.imbalance = report.largest_imbalance;
   out.net_inflow = darcy.inflow_from_boundary() / (U * R);

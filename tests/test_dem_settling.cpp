@@ -1,5 +1,5 @@
 // Story: one grain settling in still fluid (issue 15, check 1), through
-// LAMMPS (lib/dem) with the fluid force of a drag law (lib/porous_flow)
+// LAMMPS (lib/dem) with the fluid force of a drag law (lib/pore_water)
 // and buoyancy added every step:
 //  - a 4 mm quartz grain in water under the Dallavalle law (Di Felice at
 //    porosity 1) reaches the terminal velocity of the force balance, found
@@ -13,7 +13,7 @@
 
 #include "dem/commands.hpp"
 #include "dem/lammps_session.hpp"
-#include "porous_flow/drag_law.hpp"
+#include "pore_water/drag_law.hpp"
 
 using namespace frostwall;
 
@@ -22,7 +22,7 @@ namespace {
 constexpr double g = 9.81;
 
 // The grain's vertical velocity at each of `samples` times up to `end`.
-std::vector<double> settle(const porous_flow::DragLaw& law, const porous_flow::Fluid& fluid, double d, double rho_p,
+std::vector<double> settle(const pore_water::DragLaw& law, const pore_water::Fluid& fluid, double d, double rho_p,
                            double end, int samples, double timestep) {
   dem::LammpsSession lammps;
   dem::Box box;
@@ -41,8 +41,8 @@ std::vector<double> settle(const porous_flow::DragLaw& law, const porous_flow::F
     double** v = lammps.velocity();
     for (int i = 0; i < n; ++i) {
       // Still fluid: the slip is minus the grain's velocity.
-      const porous_flow::Vec3 slip(-v[i][0], -v[i][1], -v[i][2]);
-      const porous_flow::Vec3 F = law.force(fluid, d, 1.0, slip);
+      const pore_water::Vec3 slip(-v[i][0], -v[i][1], -v[i][2]);
+      const pore_water::Vec3 F = law.force(fluid, d, 1.0, slip);
       for (int k = 0; k < 3; ++k) force[i][k] = F[k];
       force[i][2] += fluid.density * volume * g;  // buoyancy
     }
@@ -60,7 +60,7 @@ std::vector<double> settle(const porous_flow::DragLaw& law, const porous_flow::F
 
 TEST_CASE("DEM: a 4 mm quartz grain settles in water at the Dallavalle terminal velocity", "[dem][verification]") {
   const double d = 0.004, rho_p = 2650.0;
-  const porous_flow::Fluid water{1000.0, 1e-3};
+  const pore_water::Fluid water{1000.0, 1e-3};
   // The balance (rho_p - rho_f) g V = 1/2 Cd rho_f A u^2 with Cd =
   // (0.63 + 4.8 / sqrt(Re))^2, by bisection.
   auto excess = [&](double u) {
@@ -71,7 +71,7 @@ TEST_CASE("DEM: a 4 mm quartz grain settles in water at the Dallavalle terminal 
   double lo = 1e-6, hi = 10.0;
   for (int it = 0; it < 200; ++it) (excess(0.5 * (lo + hi)) > 0.0 ? lo : hi) = 0.5 * (lo + hi);
   const double terminal = 0.5 * (lo + hi);
-  const auto u = settle(porous_flow::DiFeliceDrag(), water, d, rho_p, 0.5, 5, 1e-5);
+  const auto u = settle(pore_water::DiFeliceDrag(), water, d, rho_p, 0.5, 5, 1e-5);
   fmt::print("DEM settling, 4 mm quartz in water: u = {:.4f} .. {:.4f} m/s at 0.1 .. 0.5 s; terminal {:.4f} m/s\n",
              u.front(), u.back(), terminal);
   CHECK(terminal == Approx(0.391).epsilon(0.005));
@@ -81,8 +81,8 @@ TEST_CASE("DEM: a 4 mm quartz grain settles in water at the Dallavalle terminal 
 }
 
 TEST_CASE("DEM: CFDEMcoupling's settling grain reaches 0.1373 m/s at 0.2 s under Schiller-Naumann", "[dem][verification]") {
-  const porous_flow::Fluid fluid{10.0, 10.0 * 1e-5};
-  const auto u = settle(porous_flow::SchillerNaumannDrag(), fluid, 1e-4, 3000.0, 0.2, 4, 1e-5);
+  const pore_water::Fluid fluid{10.0, 10.0 * 1e-5};
+  const auto u = settle(pore_water::SchillerNaumannDrag(), fluid, 1e-4, 3000.0, 0.2, 4, 1e-5);
   fmt::print("DEM settling, CFDEMcoupling case: u(0.2 s) = {:.5f} m/s (reference 0.1373)\n", u.back());
   CHECK(u.back() == Approx(0.1373).epsilon(0.02));
 }

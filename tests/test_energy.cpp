@@ -24,7 +24,7 @@ EnergyRun run_box(const std::string& boundaries, double initial_hot, double init
   const double dx = 1.0 / 40;
   auto p = test::rectangle_project(1.0, 1.0, boundaries, R"("sand")", initial_hot, 1.0,
                                    test::numerics(dx, "renormalised", integrator));
-  auto m = run::build_model(p);
+  auto m = freezing::build_model(p);
   auto& model = *m.model;
   for (std::size_t i = 0; i < model.free_count(); ++i)
     if (m.particles().position[i][0] > 0.5) model.set_enthalpy(i, model.law().enthalpy(initial_cold));

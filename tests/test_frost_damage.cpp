@@ -12,9 +12,9 @@
 #include <cmath>
 
 #include "geometry/pores.hpp"
-#include "run/frost_results.hpp"
-#include "run/mechanics_run.hpp"
-#include "run/model.hpp"
+#include "mechanics/frost_results.hpp"
+#include "mechanics/mechanics_run.hpp"
+#include "freezing/model.hpp"
 #include "support.hpp"
 #include "thermal/time_loop.hpp"
 
@@ -24,16 +24,16 @@ using particles::Vec;
 namespace {
 
 struct FrostRun {
-  run::Model model;
-  std::unique_ptr<run::MechanicsRun> mechanics;
-  std::unique_ptr<run::FrostResults> frost;
+  freezing::Model model;
+  std::unique_ptr<mechanics::MechanicsRun> mechanics;
+  std::unique_ptr<mechanics::FrostResults> frost;
 };
 
 // Runs p to its end.
 FrostRun run_frost(const project::Project& p) {
-  FrostRun r{run::build_model(p), nullptr, nullptr};
-  r.mechanics = std::make_unique<run::MechanicsRun>(p, r.model);
-  r.frost = std::make_unique<run::FrostResults>(p, r.model, r.mechanics.get());
+  FrostRun r{freezing::build_model(p), nullptr, nullptr};
+  r.mechanics = std::make_unique<mechanics::MechanicsRun>(p, r.model);
+  r.frost = std::make_unique<mechanics::FrostResults>(p, r.model, r.mechanics.get());
   r.mechanics->after_equilibrium = [&](double t) { r.frost->after_equilibrium(t); };
   thermal::TimeLoopObservers observers;
   observers.after_step = [&](const thermal::ThermalModel& m, double t) {
@@ -97,8 +97,8 @@ TEST_CASE("the shipped mortar plate's pores start to freeze in the order of thei
   const auto p = test::shipped_project("mortar_frost.json", {{"numerics", {{"spacing", 6e-6}}},
                                                              {"mechanics", nullptr},
                                                              {"time", {{"end", 0.08}, {"snapshots", {0.08}}}}});
-  run::Model m = run::build_model(p);
-  run::FrostResults frost(p, m, nullptr);
+  freezing::Model m = freezing::build_model(p);
+  mechanics::FrostResults frost(p, m, nullptr);
   thermal::TimeLoopObservers observers;
   observers.after_step = [&](const thermal::ThermalModel& model, double t) { frost.after_step(model, t); };
   thermal::run_time_loop(*m.model, *m.integrator, p.time.end, p.time.snapshots, observers);

@@ -1,6 +1,6 @@
 // Issue 17, checks 3 and 5: heat carried by groundwater on the particle
 // pairs (thermal/heat_advection.hpp) with the Darcy solver's own pair
-// fluxes (porous_flow/darcy_cloud.hpp).
+// fluxes (groundwater/darcy_cloud.hpp).
 //  - 1-D advection-conduction between two fixed-temperature faces, steady:
 //    T = T0 + (T1 - T0) (e^(Pe x/L) - 1) / (e^Pe - 1), Pe = rho_w c_w q L / lambda,
 //    within 1 % with the limited scheme (second order), several times
@@ -12,7 +12,7 @@
 #include <cmath>
 #include <fmt/core.h>
 
-#include "porous_flow/darcy_cloud.hpp"
+#include "groundwater/darcy_cloud.hpp"
 #include "sph/kernel.hpp"
 #include "sph/laplacian.hpp"
 #include "sph/wall_extrapolation.hpp"
@@ -35,7 +35,7 @@ struct Strip {
   particles::ParticleSet<2> cloud;
   particles::PairWeights pairs;
   std::unique_ptr<thermal::ThermalModel> model;
-  std::unique_ptr<porous_flow::DarcyCloud> darcy;
+  std::unique_ptr<groundwater::DarcyCloud> darcy;
 };
 
 // A strip [0, L] x [0, W], its long sides mirror planes; beyond x = 0 and
@@ -59,9 +59,9 @@ Strip make_strip(double s, double q, double initial) {
   strip.pairs = sph::build_laplacian_pairs<2>(cloud, kernel, {h, project::LaplacianForm::renormalised, false, false, true});
   std::vector<double> fixed;
   for (std::size_t j = cloud.n_free; j < cloud.size(); ++j) fixed.push_back(-q * cloud.position[j][0]);
-  strip.darcy = std::make_unique<porous_flow::DarcyCloud>(strip.pairs, cloud.volume, fixed);
+  strip.darcy = std::make_unique<groundwater::DarcyCloud>(strip.pairs, cloud.volume, fixed);
   strip.darcy->solve(std::vector<double>(cloud.size(), 1.0));
-  std::vector<thermal::FixedTemperatureBoundary> faces = {{"inflow", project::TemperatureSchedule::fixed(T0)},
+  std::vector<geometry::FixedTemperatureBoundary> faces = {{"inflow", project::TemperatureSchedule::fixed(T0)},
                                                           {"outflow", project::TemperatureSchedule::fixed(T1)}};
   strip.model = std::make_unique<thermal::ThermalModel>(cloud.volume, cloud.boundary, strip.pairs,
                                                         thermal::PhaseChangeLaw(test::no_phase_change_soil("test", lambda, rho_c)), faces,

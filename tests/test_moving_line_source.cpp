@@ -13,7 +13,7 @@
 #include <fmt/core.h>
 #include <numbers>
 
-#include "porous_flow/darcy_cloud.hpp"
+#include "groundwater/darcy_cloud.hpp"
 #include "sph/kernel.hpp"
 #include "sph/laplacian.hpp"
 #include "thermal/heat_advection.hpp"
@@ -62,7 +62,7 @@ std::vector<double> line_source_errors(double s, std::string& log) {
   const auto pairs = sph::build_laplacian_pairs<2>(cloud, kernel, {h, project::LaplacianForm::renormalised, false, false, true});
   std::vector<double> far;
   for (std::size_t j = cloud.n_free; j < cloud.size(); ++j) far.push_back(-q * cloud.position[j][0]);
-  porous_flow::DarcyCloud darcy(pairs, cloud.volume, far);
+  groundwater::DarcyCloud darcy(pairs, cloud.volume, far);
   darcy.solve(std::vector<double>(cloud.size(), 1.0));
   const thermal::PhaseChangeLaw ground(test::no_phase_change_soil("OGS moving line source", lambda, rho_c));
   thermal::ThermalModel model(cloud.volume, cloud.boundary, pairs, ground,

@@ -54,7 +54,7 @@ NeumannResult solve_neumann(double dx, double lambda, const std::string& numeric
       1.5, 2 * dx,
       R"({ "left": { "temperature": 0.1906 }, "right": { "temperature": 1.2 }, "top": "adiabatic", "bottom": "adiabatic" })",
       test::unit_soil(Tf, 1.0), Ti, 0.15, numerics.empty() ? test::numerics(dx) : numerics);
-  auto m = run::build_model(p);
+  auto m = freezing::build_model(p);
   NeumannResult r{};
   std::vector<double> times;
   for (int k = 1; k <= 40; ++k) times.push_back(0.025 + k * 0.125 / 40);  // ends on 0.10 (k = 24) and 0.15
@@ -175,7 +175,7 @@ TEST_CASE("Neumann problem on a graded cloud: front within 1 %", "[verification]
         R"({ "left": { "temperature": 0.1906 }, "right": { "temperature": 1.2 }, "top": "adiabatic", "bottom": "adiabatic" })",
         test::unit_soil(Tf, 1.0), Ti, 0.15,
         fmt::format(R"({{ "spacing": {}, "integrator": "rkl2", "placement": "graded" }})", dx));
-    auto m = run::build_model(p);
+    auto m = freezing::build_model(p);
     double sum = 0.0, err10 = 1.0, err15 = 1.0;
     test::march(m, times, [&](std::size_t k) {
       const auto X = post::frozen_front(m.particles().position, m.model->liquid_fraction(), m.model->free_count(), *m.face);

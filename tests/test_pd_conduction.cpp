@@ -33,7 +33,7 @@ std::string pd_numerics(double dx, const std::string& laplacian = "renormalised"
 // k = rho = c = 1) over particles more than a horizon from every side.
 double quadratic_rate_error(double dx, const std::string& laplacian) {
   auto p = test::rectangle_project(1.0, 1.0, insulated, test::unit_soil(-100.0, 0.0), 5.0, 1.0, pd_numerics(dx, laplacian));
-  auto m = run::build_model(p);
+  auto m = freezing::build_model(p);
   const auto& x = m.particles().position;
   for (std::size_t i = 0; i < m.model->free_count(); ++i)
     m.model->set_enthalpy(i, m.model->law().enthalpy(0.5 * x[i].squaredNorm()));
@@ -108,7 +108,7 @@ TEST_CASE("PD conduction: energy to round-off, insulated and through a cooled fa
     const std::string sides = cooled ? R"({ "left": { "temperature": -1.0 }, "right": "adiabatic", "top": "adiabatic", "bottom": "adiabatic" })"
                                      : insulated;
     auto p = test::rectangle_project(0.5, 0.3, sides, test::unit_soil(0.0, 1.0), 0.5, 0.05, pd_numerics(0.02));
-    auto m = run::build_model(p);
+    auto m = freezing::build_model(p);
     const auto& x = m.particles().position;
     for (std::size_t i = 0; i < m.model->free_count(); ++i)
       m.model->set_enthalpy(i, m.model->law().enthalpy(x[i][0] < 0.25 ? -0.5 : 0.8));  // a frozen and a thawed half
@@ -130,7 +130,7 @@ TEST_CASE("PD conduction: energy to round-off, insulated and through a cooled fa
 // the flux antisymmetric, so the stored heat is still exact.
 TEST_CASE("PD conduction: a cut through the bonds stops the heat and keeps energy", "[pd][energy]") {
   const std::string sides = R"({ "left": "adiabatic", "right": "adiabatic", "top": "adiabatic", "bottom": "adiabatic" })";
-  auto m = run::build_model(test::rectangle_project(0.5, 0.3, sides, test::unit_soil(-100.0, 0.0), 0.0, 0.05, pd_numerics(0.02)));
+  auto m = freezing::build_model(test::rectangle_project(0.5, 0.3, sides, test::unit_soil(-100.0, 0.0), 0.0, 0.05, pd_numerics(0.02)));
   const auto& x = m.particles().position;
   const std::size_t n = m.model->free_count();
   for (std::size_t i = 0; i < n; ++i) m.model->set_enthalpy(i, m.model->law().enthalpy(x[i][0] < 0.25 ? 2.0 : 1.0));

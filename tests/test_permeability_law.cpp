@@ -6,9 +6,9 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
-#include "porous_flow/permeability_law.hpp"
+#include "groundwater/permeability_law.hpp"
 
-using namespace frostwall::porous_flow;
+using namespace frostwall::groundwater;
 
 TEST_CASE("Permeability falls as ice forms, on every law", "[groundwater][permeability]") {
   for (auto model : {PermeabilityModel::impedance, PermeabilityModel::kozeny_carman, PermeabilityModel::threshold}) {

@@ -61,6 +61,7 @@ void coarse_main_job(const fs::path& out) {
   run::RunOptions options;
   options.project_text = j.dump(2);
   run::run_project(project::parse_project(options.project_text), options);
+  report::write_report(out);  // as the frostwall command does after a run
 }
 
 // The output directory of a porous plate's run, written by hand with the
@@ -205,6 +206,7 @@ TEST_CASE("A plain-geometry run without project.json still gets a report", "[rep
       R"("sand")", 5.0, 86400.0, test::numerics(0.005));
   p.output.directory = (dir.path / "out").string();
   run::run_project(p, {});  // no project text: the report must do without project.json
+  report::write_report(p.output.directory);
   const std::string html = read(dir.path / "out" / "report.html");
   CHECK(html.find("{{") == std::string::npos);
   CHECK(test::html_balance_problem(html) == "");
@@ -318,6 +320,7 @@ TEST_CASE("The report of a PD plate run has displacement and damage maps", "[rep
   run::RunOptions options;
   options.project_text = project.dump();
   run::run_project(project::parse_project(project.dump()), options);
+  report::write_report(dir.path / "out");
   const json view = report::report_view(dir.path / "out");
   CHECK(view["has_mechanics"] == true);
   for (const char* name : {"mechanics_note", "displacement_bar_svg", "damage_bar_svg"}) CHECK(!view[name].get<std::string>().empty());

@@ -33,8 +33,8 @@ json coarse(double spacing, double end_days, const json& extra = json::object())
 // fronts at 0.1 m, and falls with the spacing.)
 TEST_CASE("Single ring: the symmetric wedge and the full ring agree", "[shaft]") {
   const double end = 10 * 86400.0;
-  auto wedge = run::build_model(test::shipped_project("single_ring_sand.json", coarse(0.1, 10)));
-  auto full = run::build_model(
+  auto wedge = freezing::build_model(test::shipped_project("single_ring_sand.json", coarse(0.1, 10)));
+  auto full = freezing::build_model(
       test::shipped_project("single_ring_sand.json", coarse(0.1, 10, {{"numerics", {{"symmetry", "off"}}}})));
   REQUIRE(wedge.shaft->wedge.mirror_count == 26);
   REQUIRE(full.shaft->wedge.mirror_count == 0);
@@ -67,8 +67,8 @@ TEST_CASE("Single ring: the symmetric wedge and the full ring agree", "[shaft]")
 }
 
 TEST_CASE("Single ring: wedge and full ring close on the same day", "[shaft]") {
-  auto wedge = run::build_model(test::shipped_project("single_ring_sand.json", coarse(0.1, 25)));
-  auto full = run::build_model(
+  auto wedge = freezing::build_model(test::shipped_project("single_ring_sand.json", coarse(0.1, 25)));
+  auto full = freezing::build_model(
       test::shipped_project("single_ring_sand.json", coarse(0.1, 25, {{"numerics", {{"symmetry", "off"}}}})));
   const auto day_wedge = test::closure_day(wedge, 25 * 86400.0);
   const auto day_full = test::closure_day(full, 25 * 86400.0);
@@ -85,7 +85,7 @@ TEST_CASE("Single ring: wedge and full ring close on the same day", "[shaft]") {
 TEST_CASE("Shaft section: pipes + far field = change of stored heat", "[shaft][energy]") {
   // On the lattice (explicit) and on a graded cloud with the default integrator.
   const bool graded = GENERATE(false, true);
-  auto m = run::build_model(test::shipped_project(
+  auto m = freezing::build_model(test::shipped_project(
       "single_ring_sand.json",
       graded ? coarse(0.05, 5, {{"numerics", {{"placement", "graded"}, {"integrator", "rkl2"}}}}) : coarse(0.1, 5)));
   const double before = m.model->stored_heat();
@@ -108,7 +108,7 @@ TEST_CASE("Shaft section: pipes + far field = change of stored heat", "[shaft][e
 TEST_CASE("Shaft layouts close in the expected order and time", "[shaft][sanity]") {
   const double spacing = 0.05, end = 30.0;
   auto closure = [&](const std::string& project, const json& extra = json::object()) {
-    auto m = run::build_model(test::shipped_project(project, coarse(spacing, end, extra)));
+    auto m = freezing::build_model(test::shipped_project(project, coarse(spacing, end, extra)));
     return test::closure_day(m, end * 86400.0);
   };
   const auto single_sand = closure("single_ring_sand.json");
@@ -148,7 +148,7 @@ TEST_CASE("Shipped shaft projects close within 1 % of two independent solvers", 
   for (const Case& c : {Case{"single_ring_sand.json", 13.85, 0.01 * 13.85}, Case{"single_ring_clay.json", 17.37, 0.01 * 17.37},
                         Case{"three_hole_sand.json", 6.61, 0.01 * 6.61}, Case{"four_hole_sand.json", 1.14, 0.02}}) {
     const auto p = test::shipped_project(c.project, json::object());
-    auto m = run::build_model(p);
+    auto m = freezing::build_model(p);
     const auto days = test::closure_days(m, p.time.end, p.time.snapshots);
     REQUIRE(days.closure);
     REQUIRE(days.contact);

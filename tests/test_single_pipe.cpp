@@ -44,7 +44,7 @@ FrontCircle single_pipe_front(double spacing, double days, const std::string& in
   json patch = single_pipe(spacing, days, integrator, placement);
   // Graded: the band the front runs through at the finest spacing, coarser only beyond.
   if (placement == "graded") patch["numerics"]["band_coarsening"] = 1.0;
-  auto m = run::build_model(test::shipped_project("single_ring_sand.json", patch));
+  auto m = freezing::build_model(test::shipped_project("single_ring_sand.json", patch));
   REQUIRE(m.shaft->wedge.mirror_count == 0);
   test::march(m, {days * 86400.0}, [](std::size_t) {});
   const auto lines = post::isolines(m.particles().position, m.model->liquid_fraction(), 0.5, 3 * spacing);

@@ -27,7 +27,7 @@ TEST_CASE("Soil column: steady frozen front at the flux-balance depth", "[verifi
   const auto p = test::rectangle_project(
       4 * dx, Hc, R"({ "left": "adiabatic", "right": "adiabatic", "top": { "temperature": -5 }, "bottom": { "temperature": 1 } })",
       R"("silty_clay")", 1.0, t_end, test::numerics(dx));
-  auto m = run::build_model(p);
+  auto m = freezing::build_model(p);
   REQUIRE(m.face->side == "top");
   std::vector<double> times;
   for (int k = 1; k <= 144; ++k) times.push_back(k * 0.5 * hours);

@@ -17,21 +17,12 @@
 
 #include <string_view>
 
+#include "project/design.hpp"
+
 namespace frostwall::design {
 
-struct BrineProperties {
-  double density = 0.0;        // kg/m3
-  double viscosity = 0.0;      // Pa s (dynamic)
-  double conductivity = 0.0;   // W/(m K)
-  double heat_capacity = 0.0;  // J/(kg K)
-};
-
-struct Annulus {
-  double inner_diameter = 0.0;  // m: the supply pipe's outer diameter
-  double outer_diameter = 0.0;  // m: the freeze pipe's inner diameter
-  double flow = 0.0;            // m3/s through the annulus
-  BrineProperties brine;
-};
+using project::Annulus;
+using project::BrineProperties;
 
 enum class FlowRegime { laminar, transitional, turbulent };
 std::string_view name(FlowRegime r);

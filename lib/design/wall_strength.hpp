@@ -29,12 +29,14 @@
 #include <utility>
 #include <vector>
 
+#include "project/design.hpp"
+
 namespace frostwall::design {
 
-enum class Formula { lame_tresca, lame_mises, domke, plastic_tresca, plastic_mohr_coulomb };
+using Formula = project::WallFormula;
 inline constexpr std::array<Formula, 5> all_formulas = {Formula::lame_tresca, Formula::lame_mises, Formula::domke,
                                                         Formula::plastic_tresca, Formula::plastic_mohr_coulomb};
-std::string_view name(Formula f);
+using project::name;  // the formula's name in the project file
 
 // Mohr-Coulomb parameters of the frozen soil (the cohesion at the wall's
 // mean temperature, MPa, already times the allowable factor).
@@ -45,25 +47,5 @@ struct MohrCoulomb {
 
 // m; a in m, P and s in MPa. plastic_mohr_coulomb needs `mc` (nullopt without).
 std::optional<double> required_thickness(Formula f, double a, double P, double s, const MohrCoulomb* mc = nullptr);
-
-// The frozen soil's uniaxial compressive strength against temperature, MPa
-// (T in degC, below 0): a table interpolated linearly (held at its ends),
-// a + b |T|, or sigma_0 + k |T|^m.
-class StrengthLaw {
- public:
-  static StrengthLaw table(std::vector<std::pair<double, double>> points);  // [T, sigma_c], any order
-  static StrengthLaw linear(double a, double b);
-  static StrengthLaw power(double sigma_0, double k, double m);
-  double at(double T) const;
-
- private:
-  enum class Kind { table, linear, power } kind_ = Kind::linear;
-  std::vector<std::pair<double, double>> points_;  // by rising T
-  double p0_ = 0.0, p1_ = 0.0, p2_ = 1.0;
-};
-
-// Why a strength table is not usable (empty when it is): the strength
-// must not fall as the soil gets colder, and every value must be positive.
-std::string table_problem(const std::vector<std::pair<double, double>>& points);
 
 }  // namespace frostwall::design

@@ -12,7 +12,6 @@
 
 #include "particles/mirror_images.hpp"
 #include "geometry/delaunay.hpp"
-#include "sph/laplacian.hpp"
 #include "particles/parallel.hpp"
 
 namespace frostwall::geometry {

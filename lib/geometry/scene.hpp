@@ -7,14 +7,14 @@
 #include <vector>
 
 #include "particles/particle_set.hpp"
-#include "thermal/boundary.hpp"
+#include "geometry/boundary.hpp"
 
 namespace frostwall::geometry {
 
 struct Scene {
   virtual ~Scene() = default;
   particles::ParticleSet<2> particles;
-  std::vector<thermal::FixedTemperatureBoundary> boundaries;
+  std::vector<geometry::FixedTemperatureBoundary> boundaries;
   std::vector<std::string> notes;  // e.g. spacing adjusted to fit the sides
 };
 

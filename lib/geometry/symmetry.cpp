@@ -172,4 +172,14 @@ std::string describe(const Wedge& wedge) {
                      wedge.mirror_count == 1 ? "" : "s", wedge.angle * to_deg, wedge.start_angle * to_deg);
 }
 
+Wedge symmetry_wedge(const project::ShaftSection& section) {
+  const auto pipes = pipe_positions(section.layout);
+  const double start = section.layout.pattern == project::Pattern::pipes
+                           ? std::atan2(pipes.front().y, pipes.front().x)
+                           : (section.layout.pattern == project::Pattern::rings
+                                  ? section.layout.rings.front().offset_deg
+                                  : section.layout.outer_ring.offset_deg) * M_PI / 180.0;
+  return find_symmetry_wedge(pipes, start);
+}
+
 }  // namespace frostwall::geometry

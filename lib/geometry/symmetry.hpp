@@ -49,4 +49,9 @@ Wedge find_flow_symmetry_wedge(const std::vector<Pipe2>& pipes, double flow_angl
 // One line for the log: "symmetry: 26 mirror lines, wedge of 6.923 deg from 0.000 deg".
 std::string describe(const Wedge& wedge);
 
+// The smallest mirror-symmetric wedge of a shaft section's pipe layout, its
+// first side through the layout's first pipe (OA). Layout problems must be
+// checked first (layout_problems).
+Wedge symmetry_wedge(const project::ShaftSection& section);
+
 }  // namespace frostwall::geometry

@@ -3,7 +3,6 @@
 
 #include "particles/mirror_images.hpp"
 #include "geometry/delaunay.hpp"
-#include "sph/laplacian.hpp"
 
 namespace frostwall::geometry {
 

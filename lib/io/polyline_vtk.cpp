@@ -14,7 +14,7 @@ namespace frostwall::io {
 
 namespace fs = std::filesystem;
 
-void write_vtp(const fs::path& file, const std::vector<post::Polyline>& lines) {
+void write_vtp(const fs::path& file, const std::vector<geometry::Polyline>& lines) {
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
   vtkNew<vtkCellArray> cells;

@@ -5,13 +5,13 @@
 #include <filesystem>
 #include <vector>
 
-#include "post/isoline.hpp"
+#include "geometry/polyline.hpp"
 
 namespace frostwall::io {
 
 // Writes an XML PolyData (.vtp), binary appended: the points of every line
 // (z = 0) and one VTK_POLY_LINE per line; a closed line repeats its first
 // point id at the end so ParaView draws it closed. No lines: a valid empty file.
-void write_vtp(const std::filesystem::path& file, const std::vector<post::Polyline>& lines);
+void write_vtp(const std::filesystem::path& file, const std::vector<geometry::Polyline>& lines);
 
 }  // namespace frostwall::io

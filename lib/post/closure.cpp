@@ -9,7 +9,6 @@
 #include "particles/mirror_images.hpp"
 #include "geometry/delaunay.hpp"
 #include "particles/cell_list.hpp"
-#include "sph/laplacian.hpp"
 
 namespace frostwall::post {
 

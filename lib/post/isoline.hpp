@@ -9,15 +9,12 @@
 #include <limits>
 #include <vector>
 
+#include "geometry/polyline.hpp"
 #include "particles/vec.hpp"
 
 namespace frostwall::post {
 
-// A closed polyline does not repeat its first point at the end.
-struct Polyline {
-  std::vector<particles::Vec<2>> points;
-  bool closed = false;
-};
+using geometry::Polyline;
 
 // Every isoline f = level of the field values[i] given at points[i].
 //  - A value equal to level counts as above (values >= level are "above").

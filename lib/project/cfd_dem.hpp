@@ -1,5 +1,5 @@
 // A CFD-DEM project ("physics": "cfd-dem"): soil grains (LAMMPS, lib/dem)
-// in pore water on a coarse grid (lib/porous_flow). Plain validated
+// in pore water on a coarse grid (lib/pore_water). Plain validated
 // structs, SI units; the engine never sees JSON. The z axis is vertical in
 // every shipped project; gravity is a vector, so any axis may be.
 #pragma once
@@ -77,7 +77,7 @@ struct FlowSettings {
   double velocity_at(double t) const;
 };
 
-// The fluid forces on a grain, by name (lib/porous_flow/grain_forces.hpp).
+// The fluid forces on a grain, by name (lib/pore_water/grain_forces.hpp).
 inline const std::vector<std::string> default_fluid_forces{"difelice_drag", "pressure_gradient", "buoyancy"};
 
 struct CouplingSettings {

@@ -1,16 +1,27 @@
 // The "groundwater" block of a shaft project: water flowing through the
-// freezing ground (issue 17). The soil's permeability (m^2, or hydraulic
+// freezing ground. The soil's permeability (m^2, or hydraulic
 // conductivity in m/s), its porosity, how ice cuts the permeability
-// (lib/porous_flow/permeability_law.hpp) and the regional flow far from
+// (lib/groundwater/permeability_law.hpp) and the regional flow far from
 // the shaft. Absent: still water, and the thermal run is unchanged.
 #pragma once
 
 #include <array>
 #include <optional>
 
-#include "porous_flow/permeability_law.hpp"
 
 namespace frostwall::project {
+
+// How ice cuts the permeability, as given (groundwater/permeability_law.hpp
+// evaluates it): k_r = 10^(-impedance S_ice), Kozeny-Carman on the liquid
+// porosity, or a threshold liquid fraction; never below `floor`.
+enum class PermeabilityModel { impedance, kozeny_carman, threshold };
+struct PermeabilitySettings {
+  PermeabilityModel model = PermeabilityModel::impedance;
+  double impedance = 7.0;                  // Omega
+  double porosity = 0.35;                  // n, for kozeny_carman
+  double threshold_liquid_fraction = 0.1;  // f_c, for threshold
+  double floor = 1e-6;                     // smallest k_r
+};
 
 // How the heat the water carries is stepped (thermal/heat_advection.hpp):
 // coupled (the default): limited faces inside the conduction's backward-
@@ -24,7 +35,7 @@ struct Groundwater {
   // (K = k rho_w g / mu_w).
   std::optional<double> permeability;            // m^2
   std::optional<double> hydraulic_conductivity;  // m/s
-  porous_flow::PermeabilityLaw law;              // its porosity is the soil's
+  PermeabilitySettings law;                      // its porosity is the soil's
   // The regional Darcy flux far from the shaft, m/s (given in m/d or m/s,
   // or from the hydraulic gradient: q = K i).
   std::array<double, 2> darcy_flux{0.0, 0.0};

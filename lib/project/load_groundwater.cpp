@@ -32,19 +32,19 @@ Groundwater read_groundwater(const Node& n) {
     g.law.porosity = *porosity;
   }
   if (const Node law = n["permeability_law"]; law.object({"model", "impedance", "liquid_fraction", "floor"})) {
-    if (const auto m = law["model"].required().choice<porous_flow::PermeabilityModel>(
-            "permeability law", {{"impedance", porous_flow::PermeabilityModel::impedance},
-                                 {"kozeny_carman", porous_flow::PermeabilityModel::kozeny_carman},
-                                 {"threshold", porous_flow::PermeabilityModel::threshold}}))
+    if (const auto m = law["model"].required().choice<PermeabilityModel>(
+            "permeability law", {{"impedance", PermeabilityModel::impedance},
+                                 {"kozeny_carman", PermeabilityModel::kozeny_carman},
+                                 {"threshold", PermeabilityModel::threshold}}))
       g.law.model = *m;
     if (const auto omega = law["impedance"].positive()) g.law.impedance = *omega;
-    if (law["impedance"].present() && g.law.model != porous_flow::PermeabilityModel::impedance)
+    if (law["impedance"].present() && g.law.model != PermeabilityModel::impedance)
       law["impedance"].problem(R"(only used with "model": "impedance")");
     if (const auto f = law["liquid_fraction"].positive()) {
       if (*f >= 1.0) law["liquid_fraction"].problem(fmt::format("must be below 1, got {}", *f));
       g.law.threshold_liquid_fraction = *f;
     }
-    if (law["liquid_fraction"].present() && g.law.model != porous_flow::PermeabilityModel::threshold)
+    if (law["liquid_fraction"].present() && g.law.model != PermeabilityModel::threshold)
       law["liquid_fraction"].problem(R"(only used with "model": "threshold")");
     if (const auto floor = law["floor"].positive()) {
       if (*floor >= 1.0) law["floor"].problem(fmt::format("must be below 1, got {}", *floor));

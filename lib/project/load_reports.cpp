@@ -10,7 +10,7 @@
 namespace frostwall::project::detail {
 
 // [[T, sigma_c], ...], {"a", "b"} (a + b|T|) or {"sigma_0", "k", "m"}.
-std::optional<design::StrengthLaw> read_strength(const Node& n) {
+std::optional<StrengthLaw> read_strength(const Node& n) {
   if (!n.present()) return std::nullopt;
   if (n.type() == "array") {
     const std::size_t size = n.array().value_or(0);
@@ -25,11 +25,11 @@ std::optional<design::StrengthLaw> read_strength(const Node& n) {
       if (T && sigma) points.emplace_back(*T, *sigma);
     }
     if (points.size() != size) return std::nullopt;
-    if (const std::string why = design::table_problem(points); !why.empty()) {
+    if (const std::string why = table_problem(points); !why.empty()) {
       n.problem(why);
       return std::nullopt;
     }
-    return design::StrengthLaw::table(points);
+    return StrengthLaw::table(points);
   }
   if (n.type() != "object") {
     n.problem(R"(must be a table [[T, sigma_c], ...], {"a", "b"} or {"sigma_0", "k", "m"})");
@@ -38,11 +38,11 @@ std::optional<design::StrengthLaw> read_strength(const Node& n) {
   if (!n.object({"a", "b", "sigma_0", "k", "m"})) return std::nullopt;
   if (n["a"].present() || n["b"].present()) {
     const auto a = n["a"].required().positive(), b = n["b"].required().non_negative();
-    if (a && b) return design::StrengthLaw::linear(*a, *b);
+    if (a && b) return StrengthLaw::linear(*a, *b);
     return std::nullopt;
   }
   const auto s0 = n["sigma_0"].required().non_negative(), k = n["k"].required().positive(), m = n["m"].required().positive();
-  if (s0 && k && m) return design::StrengthLaw::power(*s0, *k, *m);
+  if (s0 && k && m) return StrengthLaw::power(*s0, *k, *m);
   return std::nullopt;
 }
 
@@ -86,19 +86,19 @@ Design read_design(const Node& n, bool layered) {
   // With layers, each layer's depth serves; the design's own may be left out.
   if (!layered || design.depth || n["pressure"]["value_MPa"].present())
     design.pressure = read_pressure(n["pressure"], design.depth, n["depth"]);
-  design.formula = n["formula"].choice<design::Formula>(
-                                 "formula", {{"domke", design::Formula::domke},
-                                             {"lame_mises", design::Formula::lame_mises},
-                                             {"lame_tresca", design::Formula::lame_tresca},
-                                             {"plastic_mohr_coulomb", design::Formula::plastic_mohr_coulomb},
-                                             {"plastic_tresca", design::Formula::plastic_tresca}})
+  design.formula = n["formula"].choice<WallFormula>(
+                                 "formula", {{"domke", WallFormula::domke},
+                                             {"lame_mises", WallFormula::lame_mises},
+                                             {"lame_tresca", WallFormula::lame_tresca},
+                                             {"plastic_mohr_coulomb", WallFormula::plastic_mohr_coulomb},
+                                             {"plastic_tresca", WallFormula::plastic_tresca}})
                        .value_or(design.formula);
   if (const Node phi = n["friction_angle"]; phi.present())
     if (const auto v = phi.non_negative()) {
       if (*v >= 90.0) phi.problem(fmt::format("must be below 90 degrees, got {}", *v));
       else design.friction_angle = v;
     }
-  if (design.formula == design::Formula::plastic_mohr_coulomb && !design.friction_angle)
+  if (design.formula == WallFormula::plastic_mohr_coulomb && !design.friction_angle)
     n["friction_angle"].problem(R"(needed with "formula": "plastic_mohr_coulomb")");
   if (!layered && n["strength"].present() != n["pressure"].present())
     (n["strength"].present() ? n["pressure"] : n["strength"]).problem(R"(the wall check needs both "strength" and "pressure")");

@@ -14,7 +14,7 @@ namespace frostwall::project::detail {
 // layered: the project has layers, whose depths stand in for the design's.
 Design read_design(const Node& n, bool layered = false);
 // Frozen-soil strength: [[T, sigma_c], ...], {"a", "b"} or {"sigma_0", "k", "m"}.
-std::optional<design::StrengthLaw> read_strength(const Node& n);
+std::optional<StrengthLaw> read_strength(const Node& n);
 // Lateral pressure (MPa): a value, a gradient times the depth, or gamma z K;
 // depth_node names the depth a gradient needs when it is missing.
 std::optional<double> read_pressure(const Node& n, std::optional<double> depth, const Node& depth_node);

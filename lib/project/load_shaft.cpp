@@ -13,9 +13,9 @@ namespace {
 
 // {"inner_diameter", "outer_diameter", "flow_m3_per_h", "brine": {"density",
 // "viscosity", "conductivity", "heat_capacity"}}; nullopt on any problem.
-std::optional<design::Annulus> read_annulus(const Node& n, double pipe_diameter) {
+std::optional<Annulus> read_annulus(const Node& n, double pipe_diameter) {
   if (!n.object({"inner_diameter", "outer_diameter", "flow_m3_per_h", "brine"})) return std::nullopt;
-  design::Annulus a;
+  Annulus a;
   const auto di = n["inner_diameter"].required().positive(), d_o = n["outer_diameter"].required().positive();
   const auto flow = n["flow_m3_per_h"].required().positive();
   const Node b = n["brine"].required();
@@ -134,20 +134,12 @@ Pipe read_pipe(const Node& n) {
     pipe.annulus = read_annulus(n["annulus"], pipe.diameter);
   else
     pipe.heat_transfer_coefficient = n["heat_transfer_coefficient"].positive().value_or(0.0);
-  if (pipe.annulus) pipe.heat_transfer_coefficient = design::annulus_film(*pipe.annulus, pipe.diameter).h;
   if (pipe.model == PipeModel::point)
     n["boundary"].problem(R"("brine" needs "model": "disc" (a film needs the pipe's wall))");
   return pipe;
 }
 
 void warn_warm_pipe(const Node& n, const Pipe& pipe, double freezing_point, std::vector<std::string>& warnings) {
-  if (pipe.annulus) {
-    const auto film = design::annulus_film(*pipe.annulus, pipe.diameter);
-    if (film.regime == design::FlowRegime::transitional)
-      warnings.push_back(fmt::format("{}: Re = {:.0f} is transitional (2300 to 10000): h = {:.0f} W/(m2 K) is interpolated between "
-                                     "the laminar and the turbulent film and is uncertain",
-                                     n["annulus"].path(), film.reynolds, film.h));
-  }
   const Node temperature = n[pipe.boundary == PipeBoundary::brine ? "brine_temperature" : "temperature"];
   if (!temperature.present()) return;
   const bool is_schedule = temperature.json().is_array();

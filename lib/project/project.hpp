@@ -3,9 +3,6 @@
 // (seconds, metres) except temperatures, which stay in degrees Celsius.
 #pragma once
 
-#include "design/annulus_film.hpp"
-#include "design/wall_strength.hpp"
-
 #include <array>
 #include <optional>
 #include <stdexcept>
@@ -15,8 +12,10 @@
 #include <vector>
 
 #include "project/cfd_dem.hpp"
+#include "project/design.hpp"
 #include "project/groundwater.hpp"
 #include "project/mechanics.hpp"
+#include "project/numerics.hpp"
 
 namespace frostwall::project {
 
@@ -130,7 +129,7 @@ struct Pipe {
   PipeBoundary boundary = PipeBoundary::fixed;
   double heat_transfer_coefficient = 0.0;  // h, W/(m2 K), brine only
   // Brine: h from the annulus' geometry and flow instead of a number.
-  std::optional<design::Annulus> annulus;
+  std::optional<Annulus> annulus;
 };
 
 struct Shaft {
@@ -161,69 +160,6 @@ struct TimeSettings {
   double unit_seconds() const;      // 1, 3600 or 86400
 };
 
-enum class KernelKind { wendland_c2, cubic_spline };
-enum class IntegratorKind { explicit_euler, implicit, rkl2 };
-enum class ConductivityMean { harmonic, arithmetic };
-enum class LaplacianForm { renormalised, plain };
-enum class Placement { lattice, graded };
-// The particle method of heat conduction: SPH pair weights or PD thermal bonds.
-enum class Method { sph, pd };
-
-// numerics.placement "graded": the spacing grows from numerics.spacing
-// (finest, at the pipe walls) through a wall band to a coarse far field.
-struct Grading {
-  double coarsening = 8.0;       // coarsest spacing / finest
-  double growth = 1.2;           // largest ratio of the spacings of neighbouring particles
-  double band_coarsening = 1.0;  // spacing in the wall band / finest
-  // Half-width of the wall band, m: beyond the innermost and outermost pipe
-  // rings (shaft sections) or from the cooled face (rectangles). nullopt =
-  // frostwall chooses (2 m round the rings; a third of a rectangle).
-  std::optional<double> band_width;
-};
-
-struct Numerics {
-  std::optional<double> spacing;  // m; nullopt = frostwall chooses
-  KernelKind kernel = KernelKind::wendland_c2;
-  double smoothing_ratio = 1.3;   // h / spacing
-  IntegratorKind integrator = IntegratorKind::rkl2;
-  double beta = 0.1;              // explicit step: dt = beta h^2 / alpha_max
-  // RKL2 and implicit steps: the largest enthalpy change of a particle per
-  // step, as a fraction of the latent heat (the step adapts to hold it).
-  // Default 1 for RKL2, 0.25 for implicit (load_project).
-  double step_change = 0.25;
-  ConductivityMean conductivity_mean = ConductivityMean::harmonic;
-  LaplacianForm laplacian = LaplacianForm::renormalised;
-  Method method = Method::sph;
-  // PD horizon delta in spacings; 3.015 so that no neighbour sits exactly
-  // on it (the Madenci & Oterkus book code's choice).
-  double horizon = 3.015;
-  // Shaft sections: simulate the smallest mirror-symmetric wedge ("auto"),
-  // or the whole ring ("off"; a check of the wedge, or for asymmetric ground).
-  bool use_symmetry = true;
-  Placement placement = Placement::lattice;  // default graded for shaft sections (load_project)
-  Grading grading;
-  // Refuse a project estimated to need more free particles than this
-  // (nullopt: from the machine's memory, run/capacity.hpp).
-  std::optional<double> max_particles;
-};
-
-// The wall check (issue 18): a target thickness typed in, or the thickness
-// the ground pressure needs from the frozen soil's strength at the wall's
-// mean temperature (design/wall_strength.hpp).
-struct Design {
-  std::optional<double> required_thickness;    // m
-  std::optional<double> max_mean_temperature;  // degC
-  std::optional<design::StrengthLaw> strength;  // uniaxial compressive, MPa
-  double allowable_factor = 0.5;
-  std::optional<double> depth;                 // m
-  std::optional<double> pressure;              // lateral, MPa, at the depth
-  design::Formula formula = design::Formula::domke;  // the governing one
-  std::optional<double> friction_angle;        // degrees: Mohr-Coulomb's plastic limit
-  // The design isotherm (degC): the wall is also measured on the part of
-  // each ray colder than this, and the check then uses that wall.
-  std::optional<double> isotherm;
-  bool checks_strength() const { return strength && pressure; }
-};
 
 // One layer of the ground the shaft passes (issue 18): a cross-section of
 // its own at its depth, with its soil, pressure and strength. The JSON of

@@ -12,7 +12,7 @@
 #include "report/flow_arrows.hpp"
 #include "report/nice_scale.hpp"
 #include "report/report_sections.hpp"
-#include "run/shaft_results.hpp"
+#include "geometry/interface_planes.hpp"
 
 namespace frostwall::report::detail {
 
@@ -114,7 +114,7 @@ void add_maps(const RunRecord& run, json& view) {
     where = "the whole ring";
   } else {
     // Around OA's pipe, wide enough for the neighbouring pipes and the wall.
-    const auto planes = run::interface_planes(pipes);
+    const auto planes = geometry::interface_planes(pipes);
     const double mid = 0.5 * (ring + inner), gap = std::abs(planes.OB - planes.OA) * 2 * planes.ring_radius;
     const double half = std::max(1.5 * gap, 0.5 * (ring - inner) + 1.5);
     window.x0 = mid * std::cos(planes.OA) - half;

@@ -7,7 +7,7 @@
 #include "report/layout_drawing.hpp"
 #include "report/report_sections.hpp"
 #include "report/svg_chart.hpp"
-#include "run/shaft_results.hpp"
+#include "geometry/interface_planes.hpp"
 
 namespace frostwall::report::detail {
 
@@ -83,7 +83,7 @@ void add_layout(const RunRecord& run, const project::ShaftSection& section, json
   drawing.pipes = pipes;
   drawing.wedge = symmetric ? w : WedgeSymmetry{};
   if (!pipes.empty()) {
-    const auto planes = run::interface_planes(pipes);
+    const auto planes = geometry::interface_planes(pipes);
     drawing.OA = planes.OA, drawing.OB = planes.OB;
   }
   drawing.sensors = run.project->monitoring;
@@ -174,7 +174,7 @@ void add_design_and_sensors(const project::Project& p, json& view) {
     std::string where = p.design.depth ? " at " + number(*p.design.depth, 1) + " m depth" : "";
     rows.push_back(row("wall check", fmt::format("{} with the lateral pressure {} MPa{}, allowable {} of the frozen soil's strength at "
                                                  "the thinnest wall's mean temperature",
-                                                 design::name(p.design.formula), number(*p.design.pressure, 3), where,
+                                                 project::name(p.design.formula), number(*p.design.pressure, 3), where,
                                                  number(p.design.allowable_factor, 2))));
   }
   view["design_rows"] = rows;

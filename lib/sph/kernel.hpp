@@ -6,7 +6,7 @@
 #include <numbers>
 #include <string>
 
-#include "project/project.hpp"
+#include "project/numerics.hpp"
 
 namespace frostwall::sph {
 

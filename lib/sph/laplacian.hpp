@@ -17,7 +17,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "project/project.hpp"
+#include "project/numerics.hpp"
 #include "sph/kernel.hpp"
 #include "particles/pair_weights.hpp"
 #include "particles/particle_set.hpp"

@@ -5,7 +5,7 @@
 
 #include "io/atomic_file.hpp"
 #include "report/report.hpp"
-#include "run/run_project.hpp"
+#include "io/output_directory.hpp"
 
 namespace frostwall::study {
 
@@ -36,7 +36,7 @@ std::size_t governing_layer(const std::vector<json>& summaries) {
 }
 
 StudyRun run_layers(const project::Project& p, const std::string& project_text, const StudyOptions& options) {
-  run::check_output_directory(p.output.directory);
+  io::check_output_directory(p.output.directory);
   const fs::path out = p.output.directory;
   const json base = json::parse(project_text);
   Study study;

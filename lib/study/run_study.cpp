@@ -8,6 +8,7 @@
 #include <thread>
 
 #include "project/project.hpp"
+#include "report/report.hpp"
 #include "report/run_files.hpp"
 #include "run/run_project.hpp"
 
@@ -30,6 +31,7 @@ VariantOutcome run_variant(const Variant& v, const std::function<void(const std:
     options.project_text = text;
     options.note = [&](const std::string&) {};  // the wedge notes of every variant would only clutter
     run::run_project(p, options);
+    if (p.output.report) report::write_report(out.directory);  // from the files just written
     out.summary = report::read_json(out.directory / "summary.json");
     out.ok = true;
   } catch (const project::ProjectError& e) {

@@ -1,6 +1,6 @@
 // The heat that flowing groundwater carries, rho_w c_w div(q T), on the
 // conduction pairs with the Darcy solver's pair fluxes Q_e (i to j, m^2/s
-// per metre of depth; porous_flow/darcy_cloud.hpp). Each pair's heat,
+// per metre of depth; groundwater/darcy_cloud.hpp). Each pair's heat,
 // rho_w c_w |Q_e| T_face, is computed once, from its upstream end u to its
 // downstream end d, and taken from one and given to the other:
 //  - upwind: T_face = T_u (first order);

@@ -13,10 +13,14 @@
 #include "particles/pair_weights.hpp"
 #include "particles/parallel.hpp"
 #include "sph/wall_extrapolation.hpp"
-#include "thermal/boundary.hpp"
+#include "geometry/boundary.hpp"
 #include "thermal/phase_change.hpp"
 
 namespace frostwall::thermal {
+
+// The fixed-temperature and film walls are laid by geometry with the scene.
+using geometry::FilmWall;
+using geometry::FixedTemperatureBoundary;
 
 struct ConductionOptions {
   project::ConductivityMean mean = project::ConductivityMean::harmonic;

@@ -1,0 +1,21 @@
+// A "physics": "cfd-dem" run (run::run_project calls it): grains in LAMMPS,
+// pore water on the coarse grid, coupled both ways; under mpirun the
+// grains are shared among the ranks and rank 0 writes the files.
+#pragma once
+
+#include "project/project.hpp"
+#include "project/run_options.hpp"
+
+namespace frostwall::cfd_dem {
+
+// The DEM step: project's, else a fifth of the smallest grain's Rayleigh time.
+double dem_timestep(const project::CfdDem& c);
+// DEM steps per fluid update: project's, else from the Stokes relaxation
+// time and the time the flow takes to carry a grain a tenth of its size.
+int coupling_interval(const project::CfdDem& c, double dt, bool flowing);
+// Throws project::ProjectError when the grains or the grid would not fit.
+void check_cfd_dem_resources(const project::CfdDem& c);
+
+void run_cfd_dem(const project::Project& p, const project::RunOptions& options);
+
+}  // namespace frostwall::cfd_dem

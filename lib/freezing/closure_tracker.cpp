@@ -1,0 +1,28 @@
+#include "freezing/closure_tracker.hpp"
+
+#include <algorithm>
+
+#include "thermal/super_time_stepping.hpp"
+
+namespace frostwall::freezing {
+
+ClosureTracker::ClosureTracker(const Model& m, double t_end, double longest_step)
+    : model_(m),
+      detector_(m.particles(), m.shaft->far_field_radius),
+      watch_(detector_),
+      check_interval_(t_end / 2000.0),
+      longest_step_(longest_step) {}
+
+void ClosureTracker::after_step(const thermal::ThermalModel& model, double t) {
+  if (!watch_.due(t)) return;
+  model.latent_left(latent_left_);
+  watch_.observe(t, latent_left_, check_interval_);
+  // Only RKL2 takes steps long enough to matter (the implicit integrator
+  // holds a quarter of the latent heat per step, explicit ones are short).
+  if (auto* rkl2 = thermal::find_integrator<thermal::SuperTimeStepping>(model_.integrator.get())) {
+    const auto resolve = watch_.time_to_fall(step_fall);
+    rkl2->limit_step(resolve ? std::min(*resolve, longest_step_) : longest_step_);
+  }
+}
+
+}  // namespace frostwall::freezing

@@ -1,0 +1,154 @@
+#include "freezing/groundwater_flow.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <fmt/core.h>
+
+#include "groundwater/darcy_velocity.hpp"
+#include "post/flow_side.hpp"
+#include "freezing/model.hpp"
+#include "thermal/backward_euler.hpp"
+
+namespace frostwall::freezing {
+
+namespace {
+
+// The potential each fixed particle holds: -q . x on the far field, none
+// (no flow) on the pipes.
+std::vector<double> fixed_potentials(const project::Groundwater& water, const Model& m) {
+  const auto& P = m.particles();
+  std::vector<double> fixed;
+  for (std::size_t j = P.n_free; j < P.size(); ++j)
+    fixed.push_back(P.boundary[j] == m.shaft->far_field_boundary
+                        ? -(water.darcy_flux[0] * P.position[j][0] + water.darcy_flux[1] * P.position[j][1])
+                        : std::nan(""));
+  return fixed;
+}
+
+thermal::AdvectionScheme scheme_of(project::Advection a) {
+  switch (a) {
+    case project::Advection::limited: return thermal::AdvectionScheme::limited;
+    case project::Advection::upwind: return thermal::AdvectionScheme::upwind;
+    case project::Advection::implicit: return thermal::AdvectionScheme::implicit;
+    case project::Advection::coupled: return thermal::AdvectionScheme::coupled;
+    default: return thermal::AdvectionScheme::limited;
+  }
+}
+
+}  // namespace
+
+GroundwaterFlow::GroundwaterFlow(const project::Groundwater& water, Model& m)
+    : water_(water),
+      law_(groundwater::permeability_law(water.law)),
+      conduction_(std::move(m.integrator)),
+      name_(std::string(conduction_->name()) + "+groundwater"),
+      darcy_(m.model->pairs(), m.particles().volume, fixed_potentials(water, m)),
+      heat_(water.water_density * water.water_heat_capacity, {}, scheme_of(water.advection)),
+      k_(m.particles().size(), 1.0) {
+  if (water.advection == project::Advection::coupled && water.speed() > 0.0) {
+    auto* implicit = thermal::find_integrator<thermal::BackwardEuler>(conduction_.get());
+    if (!implicit) throw std::logic_error("GroundwaterFlow: the coupled scheme needs the backward-Euler integrator");
+    implicit->couple(&heat_);
+  }
+  solve_if_changed(*m.model);
+}
+
+void GroundwaterFlow::solve_if_changed(const thermal::ThermalModel& model) {
+  if (water_.speed() == 0.0 && solves_ > 0) return;  // still water: the potential stays 0
+  const auto& f = model.liquid_fraction();
+  for (std::size_t i = 0; i < model.free_count(); ++i) k_[i] = law_.relative(f[i]);
+  if (!k_solved_.empty()) {
+    // The share of the water whose path has changed: each particle's
+    // throughflow weighted by its permeability's relative change (at most
+    // 1) since the last solve. Ice closing a gap changes few particles but
+    // those that carry the water; a particle frozen off long ago none.
+    double changed = 0.0, total = 0.0;
+    for (std::size_t i = 0; i < model.free_count(); ++i) {
+      total += throughflow_[i];
+      if (k_[i] != k_solved_[i]) changed += throughflow_[i] * std::min(1.0, std::abs(k_[i] / k_solved_[i] - 1.0));
+    }
+    if (changed <= water_.resolve_tolerance * total) return;
+  }
+  darcy_.solve(k_);
+  heat_.set_pair_flux(darcy_.pair_flux());
+  k_solved_ = k_;
+  const auto& P = model.pairs();
+  const auto& Q = darcy_.pair_flux();
+  throughflow_.assign(model.free_count(), 0.0);
+  for (std::size_t i = 0; i < model.free_count(); ++i)
+    for (std::size_t e = P.row_start[i]; e < P.row_start[i + 1]; ++e) throughflow_[i] += 0.5 * std::abs(Q[e]);
+  ++solves_;
+}
+
+double GroundwaterFlow::preferred_step(const thermal::ThermalModel& model) const {
+  const double conduction = conduction_->preferred_step(model);
+  if (water_.speed() == 0.0) return conduction;
+  return std::min(conduction, courant_ * heat_.stable_step(model));  // unbounded when implicit
+}
+
+std::vector<double> GroundwaterFlow::advance(thermal::ThermalModel& model, double t, double dt) {
+  if (water_.speed() == 0.0) return conduction_->advance(model, t, dt);  // still water carries nothing
+  solve_if_changed(model);
+  if (heat_.scheme() == thermal::AdvectionScheme::coupled) return conduction_->advance(model, t, dt);  // both in one step
+  auto heat = heat_.advance(model, t, 0.5 * dt);
+  const auto conducted = conduction_->advance(model, t, dt);
+  const auto carried = heat_.advance(model, t + 0.5 * dt, 0.5 * dt);
+  for (std::size_t b = 0; b < heat.size(); ++b) heat[b] += conducted[b] + carried[b];
+  return heat;
+}
+
+void GroundwaterFlow::add_fields(io::PointCloudFrame& frame, const thermal::ThermalModel& model) const {
+  const std::size_t n = frame.points.size();
+  std::vector<double> flux(3 * n, 0.0), k(n, 1.0);
+  if (!darcy_.potential().empty()) {
+    const auto q = groundwater::darcy_flux_at_particles(model.pairs(), darcy_.potential(), k_solved_);
+    for (std::size_t i = 0; i < q.size(); ++i) flux[3 * i] = q[i][0], flux[3 * i + 1] = q[i][1];
+    for (std::size_t i = 0; i < std::min(n, k_solved_.size()); ++i) k[i] = k_solved_[i];
+  }
+  frame.vectors.emplace_back("darcy_flux", std::move(flux));
+  frame.fields.emplace_back("relative_permeability", std::move(k));
+}
+
+namespace {
+
+const char* side_of(const particles::Vec<2>& middle, const std::array<double, 2>& q) {
+  return post::name(post::flow_side(middle, q));
+}
+
+nlohmann::json gap_json(const post::Gap& gap, const std::array<double, 2>& q) {
+  nlohmann::json days = nlohmann::json::array(), flow = nlohmann::json::array();
+  for (const auto& [t, through] : gap.flow) days.push_back(t / 86400.0), flow.push_back(through * 86400.0);
+  return {{"between", gap.between},
+          {"closure_day", gap.closed ? nlohmann::json(*gap.closed / 86400.0) : nlohmann::json(nullptr)},
+          {"position", side_of(gap.middle, q)},
+          {"middle", {gap.middle[0], gap.middle[1]}},
+          {"flow", {{"days", days}, {"m3_per_day_per_m", flow}}}};
+}
+
+}  // namespace
+
+nlohmann::json groundwater_summary(const project::Groundwater& g, const GroundwaterFlow& flow, const post::GapClosure& gaps,
+                                   const post::FrozenAreaTrend& frozen_area, std::optional<double> closure_time) {
+  nlohmann::json s = {
+      {"darcy_flux_m_per_day", {g.darcy_flux[0] * 86400.0, g.darcy_flux[1] * 86400.0}},
+      {"hydraulic_gradient", g.hydraulic_gradient ? nlohmann::json(*g.hydraulic_gradient) : nlohmann::json(nullptr)},
+      {"permeability_m2", g.permeability_m2()},
+      {"permeability_law", groundwater::permeability_law(g.law).name()},
+      {"impedance", g.law.model == groundwater::PermeabilityModel::impedance ? nlohmann::json(g.law.impedance) : nlohmann::json(nullptr)},
+      {"floor", g.law.floor},
+      {"flow_solves", flow.flow_solves()}};
+  s["gaps"] = nlohmann::json::array();
+  for (const auto& gap : gaps.gaps()) s["gaps"].push_back(gap_json(gap, g.darcy_flux));
+  const post::Gap* last = gaps.last();
+  s["last_gap"] = last ? gap_json(*last, g.darcy_flux) : nlohmann::json(nullptr);
+  if (!closure_time) s["verdict"] = frozen_area.no_closure_verdict();
+  else if (last && last->closed)
+    s["verdict"] = fmt::format("closed on day {:.1f}; the last gap, {} ({}), on day {:.1f}", *closure_time / 86400.0,
+                               last->between, side_of(last->middle, g.darcy_flux), *last->closed / 86400.0);
+  else s["verdict"] = fmt::format("closed on day {:.1f}", *closure_time / 86400.0);
+  s["frozen_area_growth_per_day"] = frozen_area.recent_growth_per_day();
+  return s;
+}
+
+}  // namespace frostwall::freezing

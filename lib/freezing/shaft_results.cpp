@@ -1,0 +1,303 @@
+#include "freezing/shaft_results.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <fmt/core.h>
+#include <numbers>
+
+#include "particles/mirror_images.hpp"
+#include "io/atomic_file.hpp"
+#include "io/polyline_vtk.hpp"
+#include "post/closure.hpp"
+#include "post/flow_side.hpp"
+#include "post/isoline.hpp"
+#include "freezing/design_check.hpp"
+#include "sph/laplacian.hpp"
+#include "particles/symmetry_group.hpp"
+#include "design/wall_strength.hpp"
+
+namespace frostwall::freezing {
+
+namespace {
+constexpr double day = 86400.0;
+using nlohmann::json;
+
+json or_null(const std::optional<double>& v) { return v ? json(*v) : json(nullptr); }
+json stretch_json(const post::FrozenStretch& s) {
+  return {{"inner", or_null(s.inner)}, {"outer", or_null(s.outer)}, {"thickness", s.thickness}};
+}
+std::string csv_number(const std::optional<double>& v) { return v ? fmt::format("{:.6g}", *v) : ""; }
+}  // namespace
+
+ShaftResults::ShaftResults(const project::Project& p, const Model& m)
+    : project_(p), model_(m), planes_(interface_planes(m.shaft->pipes)), sampler_(m.particles(), *m.kernel, m.smoothing) {
+  const auto& shaft = *m.shaft;
+  const double dx = m.particles().spacing, R = shaft.far_field_radius;
+  // The fan over the simulated wedge finds the weakest ray; a second gauge
+  // with just OA and OB gives their extents and OB's mean temperature.
+  post::RayFan fan{shaft.wedge.start_angle, shaft.wedge.angle,
+                   post::RayFan::rays_needed(shaft.wedge.angle, planes_.ring_radius, dx), 0.0, R, 0.5 * dx};
+  fan_gauge_ = std::make_unique<post::WallGauge>(sampler_, fan, planes_.ring_radii, p.design.isotherm);
+  planes_gauge_ = std::make_unique<post::WallGauge>(
+      sampler_, post::RayFan{planes_.OA, planes_.OB - planes_.OA, 2, 0.0, R, 0.5 * dx}, planes_.ring_radii);
+
+  // Profiles every 0.05 m along OA and OB (the paper's Fig. 5).
+  std::vector<particles::Vec<2>> on_OA, on_OB;
+  for (double r = 0.0; r <= R + 1e-9; r += 0.05) {
+    profile_radii_.push_back(r);
+    on_OA.emplace_back(r * std::cos(planes_.OA), r * std::sin(planes_.OA));
+    on_OB.emplace_back(r * std::cos(planes_.OB), r * std::sin(planes_.OB));
+  }
+  auto in_pipe = [&](const std::vector<particles::Vec<2>>& points) {
+    std::vector<char> inside(points.size(), 0);
+    if (std::get<project::ShaftSection>(p.geometry).pipe.model == project::PipeModel::point) return inside;
+    for (std::size_t k = 0; k < points.size(); ++k)
+      for (const auto& q : shaft.pipes) inside[k] |= (points[k] - particles::Vec<2>(q.x, q.y)).norm() < shaft.pipe_radius;
+    return inside;
+  };
+  in_pipe_OA_ = in_pipe(on_OA);
+  in_pipe_OB_ = in_pipe(on_OB);
+  profile_OA_ = std::make_unique<post::PointProbe>(sampler_, on_OA, true);
+  profile_OB_ = std::make_unique<post::PointProbe>(sampler_, on_OB, true);
+
+  // Sensors anywhere in the section: mapped into the wedge by its symmetry.
+  const auto group = particles::symmetry_group(m.particles().mirrors, R);
+  std::vector<particles::Vec<2>> where;
+  for (const auto& s : p.monitoring) {
+    particles::Vec<2> x(s.x, s.y), inside = x;
+    for (const auto& g : group)
+      if (geometry::inside_wedge(shaft.wedge, g(x))) {
+        inside = g(x);
+        break;
+      }
+    where.push_back(inside);
+  }
+  sensors_ = std::make_unique<post::PointProbe>(sampler_, where);
+  sensor_readings_.resize(p.monitoring.size());
+
+  // Front curves: wedge particles with their images; the full ring as copies.
+  const auto& P = m.particles();
+  curve_points_ = P.position;
+  for (std::uint32_t i = 0; i < P.size(); ++i) curve_source_.push_back(i);
+  const auto images = particles::mirror_images(P, 3.0 * P.coarsest_spacing(), post::image_reach(P));
+  curve_points_.insert(curve_points_.end(), images.position.begin(), images.position.end());
+  curve_source_.insert(curve_source_.end(), images.source.begin(), images.source.end());
+  if (p.output.full_ring && !P.mirrors.empty())
+    for (const auto& g : group)
+      for (std::uint32_t i = 0; i < P.size(); ++i) {
+        ring_points_.push_back(g(P.position[i]));
+        ring_source_.push_back(i);
+      }
+}
+
+ShaftResults::~ShaftResults() = default;
+
+ShaftResults::Reading ShaftResults::read(double t, const std::vector<double>& liquid_fraction,
+                                         const std::vector<double>& temperature) const {
+  const auto fan = fan_gauge_->measure(liquid_fraction, temperature);
+  const auto planes = planes_gauge_->measure(liquid_fraction, temperature);
+  Reading r{t / day, planes.extents.OA(), planes.extents.OB(), fan.extents.min_thickness, planes.mean_temperature_OB,
+            fan.mean_temperature_thinnest, {}, {}, {}, {}};
+  if (project_.design.isotherm) {
+    r.isotherm_thickness = fan.isotherm.min_thickness;
+    r.isotherm_mean_temperature = fan.isotherm_mean_temperature;
+  }
+  if (project_.groundwater && project_.groundwater->speed() > 0.0) {
+    for (int k = 0; k < int(fan.extents.rays.size()); ++k) {
+      const double angle = fan_gauge_->fan().ray_angle(k), thick = fan.extents.rays[k].thickness;
+      const auto side = post::flow_side({std::cos(angle), std::sin(angle)}, project_.groundwater->darcy_flux);
+      if (side == post::FlowSide::flank) continue;
+      auto& thinnest = side == post::FlowSide::upstream ? r.upstream_thickness : r.downstream_thickness;
+      thinnest = thinnest ? std::min(*thinnest, thick) : thick;
+    }
+  }
+  return r;
+}
+
+void ShaftResults::sample(double t, const std::vector<double>& liquid_fraction, const std::vector<double>& temperature) {
+  series_.push_back(read(t, liquid_fraction, temperature));
+  const auto T = (*sensors_)(temperature);
+  for (std::size_t s = 0; s < T.size(); ++s) sensor_readings_[s].emplace_back(t / day, T[s]);
+}
+
+void ShaftResults::snapshot(double t, const thermal::ThermalModel& model, const std::filesystem::path& out,
+                            const std::string& stem) {
+  snapshots_.push_back(read(t, model.liquid_fraction(), model.temperature()));
+  const double pipe_T = std::get<project::ShaftSection>(project_.geometry).pipe.temperature.at(t);
+  auto profile = [&](const post::PointProbe& probe, const std::vector<char>& in_pipe) {
+    auto T = probe(model.temperature());
+    for (std::size_t k = 0; k < T.size(); ++k)
+      if (in_pipe[k]) T[k] = pipe_T;
+    return T;
+  };
+  profiles_OA_.push_back(profile(*profile_OA_, in_pipe_OA_));
+  profiles_OB_.push_back(profile(*profile_OB_, in_pipe_OB_));
+
+  // The 0.5 liquid-fraction isoline, kept inside the wedge. Triangles
+  // longer than three spacings (holes, hull) carry no front; on a graded
+  // cloud, three local spacings.
+  const auto& P = model_.particles();
+  // The triangulations are built at the first snapshot and reused.
+  auto mesh_of = [&](const std::vector<particles::Vec<2>>& points, const std::vector<std::uint32_t>& source) {
+    if (!P.graded()) return std::make_unique<post::IsolineMesh>(points, 3.0 * P.spacing);
+    std::vector<double> limit(points.size());
+    for (std::size_t k = 0; k < points.size(); ++k) limit[k] = 3.0 * P.spacing_of(source[k]);
+    return std::make_unique<post::IsolineMesh>(points, limit);
+  };
+  auto values = [&](const std::vector<std::uint32_t>& source) {
+    std::vector<double> v(source.size());
+    for (std::size_t k = 0; k < source.size(); ++k) v[k] = model.liquid_fraction()[source[k]];
+    return v;
+  };
+  const auto& wedge = model_.shaft->wedge;
+  if (!curve_mesh_) curve_mesh_ = mesh_of(curve_points_, curve_source_);
+  const auto kept = post::clip_polylines(curve_mesh_->isolines(values(curve_source_), 0.5),
+                                         [&](const particles::Vec<2>& x) { return geometry::inside_wedge(wedge, x); });
+  const std::string file = "interface" + stem.substr(5) + ".vtp";
+  io::write_vtp(out / file, kept);
+  json entry = {{"day", t / day}, {"file", file}};
+  if (!ring_points_.empty()) {
+    const std::string ring_file = "interface_ring" + stem.substr(5) + ".vtp";
+    if (!ring_mesh_) ring_mesh_ = mesh_of(ring_points_, ring_source_);
+    io::write_vtp(out / ring_file, ring_mesh_->isolines(values(ring_source_), 0.5));
+    entry["full_ring_file"] = ring_file;
+  }
+  interface_.push_back(entry);
+}
+
+json ShaftResults::finish(const std::filesystem::path& out) const {
+  json result;
+  // ---- wall: one entry per snapshot
+  json wall = json::array();
+  for (const auto& r : snapshots_)
+    wall.push_back({{"day", r.day}, {"OA", stretch_json(r.OA)}, {"OB", stretch_json(r.OB)},
+                    {"min_thickness", r.min_thickness}, {"mean_temperature_OB", or_null(r.mean_temperature_OB)}});
+  if (project_.design.isotherm)
+    for (std::size_t k = 0; k < snapshots_.size(); ++k) {
+      wall[k]["isotherm_thickness"] = or_null(snapshots_[k].isotherm_thickness);
+      wall[k]["isotherm_mean_temperature"] = or_null(snapshots_[k].isotherm_mean_temperature);
+    }
+  if (project_.groundwater && project_.groundwater->speed() > 0.0)
+    for (std::size_t k = 0; k < snapshots_.size(); ++k) {
+      wall[k]["min_thickness_upstream"] = or_null(snapshots_[k].upstream_thickness);
+      wall[k]["min_thickness_downstream"] = or_null(snapshots_[k].downstream_thickness);
+    }
+  // The wall check from the ground pressure and the frozen soil's strength.
+  const auto& design = project_.design;
+  std::optional<DesignMet> met;
+  if (design.checks_strength()) {
+    const double a = std::get<project::ShaftSection>(project_.geometry).shaft.excavation_radius.value_or(0.0);
+    // Measured on the design isotherm when there is one, else on the frozen front.
+    auto check = [&](const Reading& r) {
+      return design.isotherm ? check_wall(design, a, r.isotherm_thickness.value_or(0.0), r.isotherm_mean_temperature)
+                             : check_wall(design, a, r.min_thickness, r.mean_temperature_thinnest);
+    };
+    for (std::size_t k = 0; k < snapshots_.size(); ++k) {
+      const auto& r = snapshots_[k];
+      const WallCheck c = check(r);
+      wall[k]["mean_temperature_thinnest"] = or_null(r.mean_temperature_thinnest);
+      wall[k]["allowable_strength"] = or_null(c.allowable);
+      wall[k]["required_thickness"] = or_null(c.required);
+      wall[k]["required_by"] = c.required_by;
+      wall[k]["utilisation"] = or_null(c.utilisation);
+    }
+    // The day it is met: on the time series (every output interval), not
+    // only at the snapshots.
+    std::vector<double> days;
+    std::vector<WallCheck> checks;
+    for (const auto& r : series_) days.push_back(r.day), checks.push_back(check(r));
+    met = design_met(days, checks);
+  }
+  result["wall"] = wall;
+
+  // ---- design: the first time both targets hold, thickness interpolated
+  if (design.required_thickness || design.max_mean_temperature || met) {
+    auto meets = [&](const Reading& r) {
+      const bool thick = !design.required_thickness || r.min_thickness >= *design.required_thickness;
+      const bool cold = !design.max_mean_temperature ||
+                        (r.mean_temperature_OB && *r.mean_temperature_OB <= *design.max_mean_temperature);
+      return thick && cold;
+    };
+    std::optional<double> reached;
+    for (std::size_t k = 0; k < series_.size() && !reached; ++k) {
+      if (!meets(series_[k])) continue;
+      reached = series_[k].day;
+      // Where the thickness is what turned true, interpolate its crossing.
+      if (k > 0 && design.required_thickness) {
+        const auto& a = series_[k - 1];
+        const auto& b = series_[k];
+        Reading a_thick = a;
+        a_thick.min_thickness = b.min_thickness;
+        if (meets(a_thick) && b.min_thickness > a.min_thickness)
+          reached = a.day + (*design.required_thickness - a.min_thickness) / (b.min_thickness - a.min_thickness) *
+                                (b.day - a.day);
+      }
+    }
+    result["design"] = {{"required_thickness", or_null(design.required_thickness)},
+                        {"max_mean_temperature", or_null(design.max_mean_temperature)},
+                        {"reached_day", or_null(reached)},
+                        {"pass", reached.has_value()}};
+    if (met) {
+      if (!design.required_thickness && !design.max_mean_temperature)  // the strength check is the only target
+        result["design"]["reached_day"] = or_null(met->day), result["design"]["pass"] = met->day.has_value();
+      result["design"]["met_day"] = or_null(met->day);
+      result["design"]["stays_met"] = met->stays;
+      result["design"]["formula"] = std::string(design::name(design.formula));
+      result["design"]["pressure_MPa"] = *design.pressure;
+      result["design"]["allowable_factor"] = design.allowable_factor;
+      result["design"]["depth"] = or_null(design.depth);
+      result["design"]["isotherm"] = or_null(design.isotherm);
+      result["design"]["friction_angle"] = or_null(design.friction_angle);
+      result["design"]["measured_on"] = design.isotherm ? fmt::format("the {:g} degC isotherm", *design.isotherm)
+                                                        : std::string("the frozen front (liquid fraction 0.5)");
+    }
+  }
+
+  // ---- monitoring
+  json monitoring = json::object();
+  for (std::size_t s = 0; s < project_.monitoring.size(); ++s) {
+    json series = json::array();
+    for (const auto& [d, T] : sensor_readings_[s]) series.push_back({d, T});
+    monitoring[project_.monitoring[s].name] = series;
+  }
+  result["monitoring"] = monitoring;
+  result["interface"] = interface_;
+  result["ob_angle_deg"] = planes_.OB * 180.0 / std::numbers::pi;
+
+  // ---- CSV files
+  std::string csv =
+      "day,OA_inner_m,OA_outer_m,OA_thickness_m,OB_inner_m,OB_outer_m,OB_thickness_m,min_thickness_m,"
+      "mean_temperature_OB_C\n";
+  for (const auto& r : series_)
+    csv += fmt::format("{:.6g},{},{},{:.6g},{},{},{:.6g},{:.6g},{}\n", r.day, csv_number(r.OA.inner),
+                       csv_number(r.OA.outer), r.OA.thickness, csv_number(r.OB.inner), csv_number(r.OB.outer),
+                       r.OB.thickness, r.min_thickness, csv_number(r.mean_temperature_OB));
+  io::write_text_file(out / "wall.csv", csv);
+  auto profile_csv = [&](const std::vector<std::vector<double>>& profiles) {
+    std::string text = "r_m";
+    for (const auto& r : snapshots_) text += fmt::format(",T_day_{:g}_C", r.day);
+    text += "\n";
+    for (std::size_t i = 0; i < profile_radii_.size(); ++i) {
+      text += fmt::format("{:.4g}", profile_radii_[i]);
+      for (const auto& p : profiles) text += "," + csv_number(std::isnan(p[i]) ? std::nullopt : std::optional(p[i]));
+      text += "\n";
+    }
+    return text;
+  };
+  io::write_text_file(out / "profiles_OA.csv", profile_csv(profiles_OA_));
+  io::write_text_file(out / "profiles_OB.csv", profile_csv(profiles_OB_));
+  std::string sensors = "day";
+  for (const auto& s : project_.monitoring) sensors += "," + s.name + "_C";
+  sensors += "\n";
+  const std::size_t rows = sensor_readings_.empty() ? series_.size() : sensor_readings_.front().size();
+  for (std::size_t k = 0; k < rows; ++k) {
+    sensors += fmt::format("{:.6g}", series_[k].day);
+    for (const auto& s : sensor_readings_) sensors += fmt::format(",{:.6g}", s[k].second);
+    sensors += "\n";
+  }
+  io::write_text_file(out / "monitoring.csv", sensors);
+  return result;
+}
+
+}  // namespace frostwall::freezing

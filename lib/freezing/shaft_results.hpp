@@ -1,0 +1,78 @@
+// The engineering results of a shaft run, gathered while it runs: wall
+// extents on OA, OB and the weakest ray, the mean wall temperature on OB,
+// temperature profiles along OA and OB, sensor readings, the design check
+// and the frozen-front curves. Turned into summary.json entries and CSV
+// files at the end (project-format.md section 2).
+#pragma once
+
+#include "post/isoline.hpp"
+
+#include <filesystem>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "post/field_sampler.hpp"
+#include "post/wall_extent.hpp"
+#include "project/project.hpp"
+#include "freezing/model.hpp"
+#include "geometry/interface_planes.hpp"
+
+namespace frostwall::freezing {
+
+using geometry::InterfacePlanes;
+using geometry::interface_planes;
+
+class ShaftResults {
+ public:
+  ShaftResults(const project::Project& p, const Model& m);
+  ~ShaftResults();
+
+  // Every output interval: the liquid fraction and temperature of every
+  // particle at t (the model's state, or one interpolated between steps).
+  void sample(double t, const std::vector<double>& liquid_fraction, const std::vector<double>& temperature);
+  void snapshot(double t, const thermal::ThermalModel& model, const std::filesystem::path& out,
+                const std::string& stem);                         // at each snapshot day
+  // Summary entries (wall, design, monitoring, interface) and the CSV files.
+  nlohmann::json finish(const std::filesystem::path& out) const;
+
+ private:
+  struct Reading {
+    double day;
+    post::FrozenStretch OA, OB;
+    double min_thickness;
+    std::optional<double> mean_temperature_OB;
+    std::optional<double> mean_temperature_thinnest;  // the thinnest ray's frozen stretch
+    // With a design isotherm: the thinnest wall colder than it, and its mean temperature.
+    std::optional<double> isotherm_thickness, isotherm_mean_temperature;
+    // Under seepage: the thinnest ray within 60 degrees of against (upstream)
+    // and along (downstream) the flow.
+    std::optional<double> upstream_thickness, downstream_thickness;
+  };
+  Reading read(double t, const std::vector<double>& liquid_fraction, const std::vector<double>& temperature) const;
+
+  const project::Project& project_;
+  const Model& model_;
+  InterfacePlanes planes_;
+  post::FieldSampler sampler_;
+  std::unique_ptr<post::WallGauge> fan_gauge_, planes_gauge_;
+  std::unique_ptr<post::PointProbe> profile_OA_, profile_OB_, sensors_;
+  std::vector<double> profile_radii_;
+  // Profile points inside a pipe disc (OA passes through its pipe): they
+  // read the pipe's temperature, not the layers held beyond its wall.
+  std::vector<char> in_pipe_OA_, in_pipe_OB_;
+  std::vector<Reading> series_, snapshots_;
+  std::vector<std::vector<double>> profiles_OA_, profiles_OB_;  // per snapshot
+  std::vector<std::vector<std::pair<double, double>>> sensor_readings_;
+  nlohmann::json interface_ = nlohmann::json::array();
+  // Points for the front curves: the particles and their copies around the
+  // ring (full ring) or their mirror images (wedge), with the source index.
+  // Triangulated at the first snapshot, reused for every later one.
+  std::vector<particles::Vec<2>> curve_points_, ring_points_;
+  std::vector<std::uint32_t> curve_source_, ring_source_;
+  std::unique_ptr<post::IsolineMesh> curve_mesh_, ring_mesh_;
+};
+
+}  // namespace frostwall::freezing

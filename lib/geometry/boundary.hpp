@@ -1,0 +1,34 @@
+// A fixed-temperature boundary: the particles that carry its id hold the
+// schedule's temperature (pipe walls, far field, cooled faces). Adiabatic
+// sides are not here: they are mirror planes of the particle set.
+//
+// A wall behind a film (brine in a freeze pipe) is a Robin condition: the
+// schedule is then the fluid's temperature, and the wall's own temperature
+// follows from the heat the ground gives up to it, Q = h P (T_wall - T_fluid)
+// per metre, P the wall's perimeter. The wall has no heat capacity, so the
+// balance holds at every instant; one temperature per group (per pipe: the
+// steel is thin and conducts well, so its wall is taken as one temperature
+// around the pipe, as a fixed-temperature pipe is).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "project/project.hpp"
+
+namespace frostwall::geometry {
+
+struct FilmWall {
+  double heat_transfer_coefficient = 0.0;  // h, W/(m2 K)
+  std::vector<int> group;         // per fixed particle (index i - free count); -1: not on this wall
+  std::vector<double> perimeter;  // per group: m of its wall inside the simulated section
+};
+
+struct FixedTemperatureBoundary {
+  std::string name;  // "pipe", "far_field", "left", ...
+  project::TemperatureSchedule temperature;
+  std::optional<FilmWall> film = std::nullopt;  // set: the schedule is the fluid's, behind a film
+};
+
+}  // namespace frostwall::geometry

@@ -1,0 +1,12 @@
+// The output directory of a run, checked before any work.
+#pragma once
+
+#include <string>
+
+namespace frostwall::io {
+
+// Throws project::ProjectError naming output.directory when it cannot be
+// created (a file in its path, no permission); creates nothing.
+void check_output_directory(const std::string& directory);
+
+}  // namespace frostwall::io

@@ -1,0 +1,43 @@
+#include "pore_water/grain_forces.hpp"
+
+#include <numbers>
+#include <stdexcept>
+
+namespace frostwall::pore_water {
+
+namespace {
+double sphere_volume(double d) { return std::numbers::pi / 6.0 * d * d * d; }
+}  // namespace
+
+Vec3 DragForce::force(const Fluid& fluid, const Vec3&, double d, const Vec3& v, const FluidSample& s) const {
+  return law_->force(fluid, d, s.porosity, s.fluid_velocity - v);
+}
+
+Vec3 GridDragForce::force(const Fluid&, const Vec3&, double d, const Vec3& v, const FluidSample& s) const {
+  return sphere_volume(d) * s.drag_coefficient * (s.drag_velocity - v);
+}
+
+Vec3 PressureGradientForce::force(const Fluid&, const Vec3&, double d, const Vec3&, const FluidSample& s) const {
+  return -sphere_volume(d) * s.pressure_gradient;
+}
+
+Vec3 BuoyancyForce::force(const Fluid& fluid, const Vec3& gravity, double d, const Vec3&, const FluidSample&) const {
+  return -fluid.density * sphere_volume(d) * gravity;
+}
+
+std::unique_ptr<FluidForce> make_fluid_force(const std::string& name) {
+  if (name == "difelice_drag") return std::make_unique<DragForce>(std::make_unique<DiFeliceDrag>());
+  if (name == "gidaspow_drag") return std::make_unique<GridDragForce>();
+  if (name == "schiller_naumann_drag") return std::make_unique<DragForce>(std::make_unique<SchillerNaumannDrag>());
+  if (name == "pressure_gradient") return std::make_unique<PressureGradientForce>();
+  if (name == "buoyancy") return std::make_unique<BuoyancyForce>();
+  throw std::invalid_argument("unknown fluid force '" + name + "'");
+}
+
+std::vector<std::unique_ptr<FluidForce>> make_fluid_forces(const std::vector<std::string>& names) {
+  std::vector<std::unique_ptr<FluidForce>> forces;
+  for (const auto& n : names) forces.push_back(make_fluid_force(n));
+  return forces;
+}
+
+}  // namespace frostwall::pore_water
