@@ -6,7 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "design/annulus_film.hpp"
-#include "run_project_cli.hpp"
+#include "cli.hpp"
 
 using namespace frostwall::design;
 
@@ -16,7 +16,7 @@ const BrineProperties brine{1290.0, 0.0098, 0.52, 2700.0};
 Annulus annulus(double flow_m3_per_h) { return {0.0603, 0.1143, flow_m3_per_h / 3600.0, brine}; }
 }  // namespace
 
-TEST_CASE("Annulus film: laminar Nu 4.9, Gnielinski turbulent, the band between continuous", "[brine]") {
+TEST_CASE("Annulus film: laminar Nu 4.9, Gnielinski turbulent, the band between continuous", "[freezing][brine]") {
   // Hand values: D_h = 0.054 m, area = pi/4 (0.1143^2 - 0.0603^2) = 7.4051e-3 m2,
   // 1.5 m3/h: v = 0.05627 m/s, Re = 1290 * 0.05627 * 0.054 / 0.0098 = 400.0,
   // Pr = 0.0098 * 2700 / 0.52 = 50.885; h = 4.9 * 0.52 / 0.054 = 47.19 on the
@@ -47,7 +47,7 @@ TEST_CASE("Annulus film: laminar Nu 4.9, Gnielinski turbulent, the band between 
   }
 }
 
-TEST_CASE("A brine pipe may take its film from the annulus flow: the run uses that h and reports the flow", "[brine][cli]") {
+TEST_CASE("A brine pipe may take its film from the annulus flow: the run uses that h and reports the flow", "[freezing][brine][cli]") {
   nlohmann::json p = {
       {"name", "brine film from the flow"},
       {"layout", {{"pattern", "single"}, {"outer_ring", {{"radius", 0.8}, {"count", 6}, {"start_angle_deg", 0.0}}}}},

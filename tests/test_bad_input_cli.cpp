@@ -3,6 +3,7 @@
 // output directory behind.
 #include <catch2/catch.hpp>
 
+#include "cli.hpp"
 #include "temp_dir.hpp"
 
 #include <cstdlib>
@@ -44,13 +45,8 @@ struct Run {
 // each here), so a run that places particles or steps in time instead
 // fails the test rather than hanging it (timeout's status is 124).
 Run run_frostwall(const fs::path& dir, const std::string& file) {
-  const std::string command = "cd '" + dir.string() + "' && timeout 10 '" FROSTWALL_EXE "' run '" + file +
-                              "' >stdout.txt 2>stderr.txt";
-  const int status = std::system(command.c_str());
-  Run run;
-  if (status != -1 && WIFEXITED(status)) run.exit_status = WEXITSTATUS(status);
-  run.stderr_lines = lines_of(dir / "stderr.txt");
-  return run;
+  const auto cli = frostwall::test::frostwall_cli(dir, "run '" + file + "'", {"", 10});
+  return {cli.exit_status, cli.stderr_lines};
 }
 
 bool contains(const std::vector<std::string>& lines, const std::string& line) {
@@ -64,7 +60,7 @@ bool contains(const std::vector<std::string>& lines, const std::string& line) {
 // output); bad_run/: a valid file the run refuses before any work (more
 // particles than the machine holds, an output directory that cannot be
 // made). All must stop with status 2 and write nothing.
-TEST_CASE("bad project files stop the run with status 2 and write nothing", "[cli]") {
+TEST_CASE("bad project files stop the run with status 2 and write nothing", "[shared][cli]") {
   int cases = 0;
   for (const fs::path& bad_dir : {bad_dir, layout_dir, run_dir})
   for (const auto& entry : fs::directory_iterator(bad_dir)) {
@@ -90,7 +86,7 @@ TEST_CASE("bad project files stop the run with status 2 and write nothing", "[cl
 
 // Without numerics.max_particles the limit comes from this machine's
 // memory (run/capacity.hpp): a micrometre spacing is far beyond any.
-TEST_CASE("a project the machine cannot hold is refused before any work", "[cli]") {
+TEST_CASE("a project the machine cannot hold is refused before any work", "[shared][cli]") {
   ScratchDir dir;
   {
     std::ifstream in(run_dir / "spacing_too_fine.json");
@@ -108,7 +104,7 @@ TEST_CASE("a project the machine cannot hold is refused before any work", "[cli]
   CHECK_FALSE(fs::exists(dir.path / "out"));
 }
 
-TEST_CASE("a project file that does not exist stops the run with status 2", "[cli]") {
+TEST_CASE("a project file that does not exist stops the run with status 2", "[shared][cli]") {
   ScratchDir dir;
   const Run run = run_frostwall(dir.path, "missing.json");
   CHECK(run.exit_status == 2);

@@ -16,7 +16,7 @@
 
 using namespace frostwall::pore_water;
 
-TEST_CASE("bed resistance: Ergun's pressure drop in CFDEMcoupling's fixed bed", "[pore_water][verification]") {
+TEST_CASE("bed resistance: Ergun's pressure drop in CFDEMcoupling's fixed bed", "[cfd_dem][pore_water][verification]") {
   const Fluid fluid{10.0, 10.0 * 1.5e-4};
   const double d = 1e-3, porosity = 0.4513, length = 0.0156;
   const double U[3] = {0.002, 0.01, 0.02}, dP[3] = {23.0, 115.1, 230.5};
@@ -29,7 +29,7 @@ TEST_CASE("bed resistance: Ergun's pressure drop in CFDEMcoupling's fixed bed", 
   CHECK(ergun_gradient(fluid, porosity, d, -0.01) == Approx(-ergun_gradient(fluid, porosity, d, 0.01)));
 }
 
-TEST_CASE("bed resistance: Wen-Yu's dilute limit is the grains' own Schiller-Naumann drag", "[pore_water]") {
+TEST_CASE("bed resistance: Wen-Yu's dilute limit is the grains' own Schiller-Naumann drag", "[cfd_dem][pore_water]") {
   const Fluid water{1000.0, 1e-3};
   const double d = 4e-3, solid = 1e-4;  // a few grains per litre
   for (double U : {1e-4, 1e-2, 0.3}) {
@@ -40,7 +40,7 @@ TEST_CASE("bed resistance: Wen-Yu's dilute limit is the grains' own Schiller-Nau
   }
 }
 
-TEST_CASE("bed resistance: the blend is Ergun when dense, Wen-Yu when dilute, continuous at porosity 0.8", "[pore_water]") {
+TEST_CASE("bed resistance: the blend is Ergun when dense, Wen-Yu when dilute, continuous at porosity 0.8", "[cfd_dem][pore_water]") {
   const Fluid water{1000.0, 1e-3};
   const double d = 4e-3, U = 0.01;
   CHECK(bed_gradient(water, 0.4, d, U) == Approx(ergun_gradient(water, 0.4, d, U)).epsilon(0.01));

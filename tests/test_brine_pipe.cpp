@@ -8,7 +8,7 @@
 #include <fmt/core.h>
 #include <nlohmann/json.hpp>
 
-#include "run_project_cli.hpp"
+#include "cli.hpp"
 
 using nlohmann::json;
 
@@ -38,7 +38,7 @@ double heat_from_boundaries(const json& s) {
 }  // namespace
 
 TEST_CASE("Brine pipe at steady state round one pipe: wall temperature and heat per metre against the exact solution",
-          "[brine][cli]") {
+          "[freezing][brine][cli]") {
   // One pipe in a disc of radius R held at T_far, no latent heat and one
   // conductivity k: at steady state the film and the annulus carry the same
   // heat, h 2 pi r (T_w - T_b) = 2 pi k (T_far - T_w) / ln(R / r).
@@ -79,7 +79,7 @@ TEST_CASE("Brine pipe at steady state round one pipe: wall temperature and heat 
 }
 
 TEST_CASE("Brine pipes on a scaled ring: h to infinity is the fixed wall, a finite film closes later, the heat balances",
-          "[brine][cli]") {
+          "[freezing][brine][cli]") {
   json fixed_pipe = {{"diameter", 0.127}, {"temperature", -20.0}};
   const json fixed = frostwall::test::run_project(scaled_ring(fixed_pipe));
   const json stiff = frostwall::test::run_project(scaled_ring(brine(1e6)));

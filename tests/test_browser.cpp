@@ -100,7 +100,7 @@ std::vector<std::string> image_sources(const std::string& dom) {
 
 }  // namespace
 
-TEST_CASE("Headless Chromium renders report.html and study.html: right size, not blank, images inline", "[browser]") {
+TEST_CASE("Headless Chromium renders report.html and study.html: right size, not blank, images inline", "[shared][browser]") {
   INFO("chromium is required: CI installs it from .ci/setup (apt-get install chromium)");
   REQUIRE(have_chromium());
   fs::remove_all(artifacts);

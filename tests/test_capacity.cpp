@@ -15,7 +15,7 @@
 using namespace frostwall;
 using nlohmann::json;
 
-TEST_CASE("capacity: the estimated particle count is within 10 % of the placed one", "[capacity]") {
+TEST_CASE("capacity: the estimated particle count is within 10 % of the placed one", "[freezing][capacity]") {
   struct Case {
     const char* name;
     project::Project project;
@@ -42,7 +42,7 @@ TEST_CASE("capacity: the estimated particle count is within 10 % of the placed o
   }
 }
 
-TEST_CASE("capacity: a refused project names the field and a value that fits", "[capacity]") {
+TEST_CASE("capacity: a refused project names the field and a value that fits", "[freezing][capacity]") {
   auto refused = [](const project::Project& p) {
     try {
       freezing::check_capacity(p, freezing::resolved_spacing(p));

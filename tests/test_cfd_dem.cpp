@@ -40,10 +40,7 @@ json run_project(const frostwall::test::TempDir& dir, const std::string& name, c
   if (edit) edit(p);
   std::ofstream(dir.path / "p.json") << p.dump(2);
   setenv("FROSTWALL_CACHE", (dir.path / "cache").c_str(), 1);
-  const std::string command = "cd '" + dir.path.string() + "' && " + launcher + " '" FROSTWALL_EXE "' run p.json > log.txt 2>&1";
-  const int status = std::system(command.c_str());
-  REQUIRE(WIFEXITED(status));
-  REQUIRE(WEXITSTATUS(status) == 0);
+  frostwall::test::require_frostwall(dir.path, "run p.json", {launcher});
   return read_json(dir.path / "out" / "summary.json");
 }
 

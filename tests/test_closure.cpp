@@ -113,7 +113,7 @@ double theta(const Vec2& x) { return std::atan2(x.y(), x.x()); }
 
 }  // namespace
 
-TEST_CASE("closure: a frozen ring around the axis is closed, b = 0", "[closure]") {
+TEST_CASE("closure: a frozen ring around the axis is closed, b = 0", "[freezing][closure]") {
   const Disc disc;
   const ClosureDetector detector(disc.p, disc.size(), Disc::d, Disc::R);
   const auto f = disc.ring();
@@ -166,7 +166,7 @@ TEST_CASE("closure: a frozen ring around the axis is closed, b = 0", "[closure]"
   CHECK(cut.bottleneck(std::vector<double>(holed.size(), 1.0)) == -std::numeric_limits<double>::infinity());
 }
 
-TEST_CASE("closure: a one-particle gap through the ring sets b to its liquid fraction", "[closure]") {
+TEST_CASE("closure: a one-particle gap through the ring sets b to its liquid fraction", "[freezing][closure]") {
   const Disc disc;
   const ClosureDetector detector(disc.p, disc.size(), Disc::d, Disc::R);
   const auto gap = disc.column_gap();
@@ -204,7 +204,7 @@ TEST_CASE("closure: a one-particle gap through the ring sets b to its liquid fra
   CHECK(detector.bottleneck(f) == 0.8);
 }
 
-TEST_CASE("closure: links are the lattice's 8-neighbourhood (up to 1.5 spacings)", "[closure]") {
+TEST_CASE("closure: links are the lattice's 8-neighbourhood (up to 1.5 spacings)", "[freezing][closure]") {
   const Disc disc;
   const ClosureDetector detector(disc.p, disc.size(), Disc::d, Disc::R);
 
@@ -243,7 +243,7 @@ TEST_CASE("closure: links are the lattice's 8-neighbourhood (up to 1.5 spacings)
   CHECK(detector.bottleneck(f) == 0.0);
 }
 
-TEST_CASE("closure: the particle nearest the axis frozen closes", "[closure]") {
+TEST_CASE("closure: the particle nearest the axis frozen closes", "[freezing][closure]") {
   const Disc disc;
   const ClosureDetector detector(disc.p, disc.size(), Disc::d, Disc::R);
   std::size_t origin = disc.size();
@@ -284,7 +284,7 @@ TEST_CASE("closure: the particle nearest the axis frozen closes", "[closure]") {
   CHECK(shifted.bottleneck(g) == 1.0);
 }
 
-TEST_CASE("closure: wedge, band across the apex, side to side, one side only", "[closure]") {
+TEST_CASE("closure: wedge, band across the apex, side to side, one side only", "[freezing][closure]") {
   const bool rows_along_second = GENERATE(false, true);
   const bool fixed_layer = GENERATE(false, true);
   CAPTURE(rows_along_second, fixed_layer);
@@ -337,7 +337,7 @@ TEST_CASE("closure: wedge, band across the apex, side to side, one side only", "
   CHECK(detector.bottleneck(f) == 0.8);
 }
 
-TEST_CASE("closure: ClosureWatch interpolates contact (b = 0.5) and closure (b = 0)", "[closure]") {
+TEST_CASE("closure: ClosureWatch interpolates contact (b = 0.5) and closure (b = 0)", "[freezing][closure]") {
   // The watch is fed g = H / H_latent, unclamped: 1 at the start of
   // freezing, 0 fully frozen, negative once colder. The gap's g falls and
   // crosses 0.5 (the columns touch) and then 0 (closure).

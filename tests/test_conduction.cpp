@@ -22,7 +22,7 @@ double sine_mode_error(double dx, const std::string& laplacian) {
 
 }  // namespace
 
-TEST_CASE("Insulated sine mode decays as exp(-2 pi^2 t), second order", "[verification][conduction]") {
+TEST_CASE("Insulated sine mode decays as exp(-2 pi^2 t), second order", "[freezing][verification][conduction]") {
   const std::vector<double> spacings{1.0 / 10, 1.0 / 20, 1.0 / 40, 1.0 / 80};
   std::vector<double> renormalised, plain;
   for (double dx : spacings) {
@@ -46,7 +46,7 @@ TEST_CASE("Insulated sine mode decays as exp(-2 pi^2 t), second order", "[verifi
   CHECK(plain.back() > 20.0 * renormalised.back());
 }
 
-TEST_CASE("Suddenly cooled half-space follows the erf solution", "[verification][conduction]") {
+TEST_CASE("Suddenly cooled half-space follows the erf solution", "[freezing][verification][conduction]") {
   const std::vector<double> spacings{0.02, 0.01, 0.005, 0.0025};
   std::vector<double> errors;
   for (double dx : spacings) errors.push_back(test::cooled_half_space_error(dx, test::numerics(dx)));

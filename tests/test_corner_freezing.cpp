@@ -61,7 +61,7 @@ Fronts run_corner(const std::string& project, const json& numerics) {
 
 }  // namespace
 
-TEST_CASE("Corner freezing (PD): the front far from the corner is Neumann's", "[pd][verification][corner]") {
+TEST_CASE("Corner freezing (PD): the front far from the corner is Neumann's", "[mechanics][pd][verification][corner]") {
   for (const auto& [project, L] : {std::pair{"corner_freezing_L025.json", 0.25}, std::pair{"corner_freezing_L1.json", 1.0}}) {
     const double exact = 2.0 * neumann_lambda(L) * std::sqrt(0.1);
     std::vector<double> spacings{0.03, 0.015};

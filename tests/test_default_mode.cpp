@@ -16,7 +16,7 @@
 using namespace frostwall;
 using nlohmann::json;
 
-TEST_CASE("Default mode closes when paper mode does", "[shaft][accuracy]") {
+TEST_CASE("Default mode closes when paper mode does", "[freezing][shaft][accuracy]") {
   const json time = {{"end", 20}, {"unit", "d"}, {"snapshots", json::array({20})}};
   auto paper = freezing::build_model(test::shipped_project(
       "single_ring_sand.json",

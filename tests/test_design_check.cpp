@@ -13,7 +13,7 @@
 #include <nlohmann/json.hpp>
 #include <sys/wait.h>
 
-#include "run_project_cli.hpp"
+#include "cli.hpp"
 
 namespace fs = std::filesystem;
 using nlohmann::json;
@@ -40,7 +40,7 @@ json run(const json& project) { return frostwall::test::run_project(project); }
 
 }  // namespace
 
-TEST_CASE("The wall check: required thickness from pressure and strength, utilisation, the day it is met", "[design][cli]") {
+TEST_CASE("The wall check: required thickness from pressure and strength, utilisation, the day it is met", "[freezing][design][cli]") {
   const json weak = run(ring_with_design(0.3)), strong = run(ring_with_design(0.6));
   const double a = 0.5, P = 0.013 * 80.0;
   CHECK(weak["design"]["pressure_MPa"].get<double>() == Approx(P).epsilon(1e-12));
@@ -93,7 +93,7 @@ TEST_CASE("The wall check: required thickness from pressure and strength, utilis
 }
 
 TEST_CASE("The wall on a design isotherm: thinner than the frozen wall, the same at the front's temperature, and the check uses it",
-          "[design][cli]") {
+          "[freezing][design][cli]") {
   // The sand, freezing over 2 K below 0 degC: the liquid fraction is then
   // linear in temperature through the band of freezing particles, 0.5 at
   // -1 degC (with no range, T = 0 across the whole band and the 0 degC wall

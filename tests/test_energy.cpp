@@ -39,7 +39,7 @@ EnergyRun run_box(const std::string& boundaries, double initial_hot, double init
 
 }  // namespace
 
-TEST_CASE("Insulated box with a hot and a cold half conserves energy", "[verification][energy]") {
+TEST_CASE("Insulated box with a hot and a cold half conserves energy", "[freezing][verification][energy]") {
   const std::string integrator = GENERATE("explicit", "rkl2", "implicit");
   const auto r = run_box(R"({ "left": "adiabatic", "right": "adiabatic", "top": "adiabatic", "bottom": "adiabatic" })",
                          10.0, -10.0, integrator);
@@ -48,7 +48,7 @@ TEST_CASE("Insulated box with a hot and a cold half conserves energy", "[verific
   CHECK(drift < (integrator == "implicit" ? 1e-9 : 1e-12));
 }
 
-TEST_CASE("Cooled face: energy lost equals the boundary flux integrated in time", "[verification][energy]") {
+TEST_CASE("Cooled face: energy lost equals the boundary flux integrated in time", "[freezing][verification][energy]") {
   const std::string integrator = GENERATE("explicit", "rkl2", "implicit");
   const auto r = run_box(R"({ "left": { "temperature": -20 }, "right": "adiabatic", "top": "adiabatic", "bottom": "adiabatic" })",
                          10.0, 10.0, integrator);

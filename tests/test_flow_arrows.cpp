@@ -10,7 +10,7 @@
 
 using namespace frostwall;
 
-TEST_CASE("Flow arrows: the mirrored half of the section points the mirrored way", "[groundwater][report]") {
+TEST_CASE("Flow arrows: the mirrored half of the section points the mirrored way", "[shared][groundwater][report]") {
   report::FieldSnapshot field;
   for (int a = -20; a <= 20; ++a)
     for (int b = 0; b <= 20; ++b) {

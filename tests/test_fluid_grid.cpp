@@ -46,7 +46,7 @@ double diameter_for(double porosity, double h) { return std::cbrt(6.0 * (1.0 - p
 
 }  // namespace
 
-TEST_CASE("fluid grid: mixture mass is conserved cell by cell with moving grains", "[fluid_grid][pore_water]") {
+TEST_CASE("fluid grid: mixture mass is conserved cell by cell with moving grains", "[cfd_dem][fluid_grid][pore_water]") {
   GridShape shape{Vec3::Zero(), Vec3(0.10, 0.08, 0.06), {10, 8, 6}};
   const Fluid water{1000.0, 1e-3};
   const double U = 0.002;
@@ -69,7 +69,7 @@ TEST_CASE("fluid grid: mixture mass is conserved cell by cell with moving grains
   CHECK(net < 1e-8);
 }
 
-TEST_CASE("fluid grid: a uniform fixed bed gives Ergun's pressure drop", "[fluid_grid][pore_water][verification]") {
+TEST_CASE("fluid grid: a uniform fixed bed gives Ergun's pressure drop", "[cfd_dem][fluid_grid][pore_water][verification]") {
   // CFDEMcoupling's Ergun case: d 1 mm, porosity 0.4513, bed 0.0156 m,
   // rho_f 10, nu 1.5e-4. Grains on a lattice of 2 per cell per axis; the
   // cell's width is chosen so the porosity is exactly 0.4513.
@@ -108,7 +108,7 @@ TEST_CASE("fluid grid: a uniform fixed bed gives Ergun's pressure drop", "[fluid
   }
 }
 
-TEST_CASE("fluid grid: deposition keeps every grain's volume in the box", "[fluid_grid][pore_water]") {
+TEST_CASE("fluid grid: deposition keeps every grain's volume in the box", "[cfd_dem][fluid_grid][pore_water]") {
   GridShape shape{Vec3(-0.1, 0.2, 0.0), Vec3(0.05, 0.3, 0.06), {5, 4, 3}};
   const std::array<FaceCondition, 6> faces = flow_along(0, 0.0);
   FluidGrid grid(shape, faces, Fluid{}, 5e-3, 0.3);
@@ -160,7 +160,7 @@ TEST_CASE("fluid grid: deposition keeps every grain's volume in the box", "[flui
   CHECK(*hi <= 1.0);
 }
 
-TEST_CASE("fluid grid: the pressure drops of two layers in series add", "[fluid_grid][pore_water]") {
+TEST_CASE("fluid grid: the pressure drops of two layers in series add", "[cfd_dem][fluid_grid][pore_water]") {
   // Layers of porosity 0.40 (4 cells) and 0.55 (6 cells) along z, one grain
   // per cell at its centre so each layer's porosity is exactly uniform (the
   // tent kernel would otherwise blend the two across the interface). The
@@ -188,7 +188,7 @@ TEST_CASE("fluid grid: the pressure drops of two layers in series add", "[fluid_
   }
 }
 
-TEST_CASE("fluid grid: a box without a pressure face is refused", "[fluid_grid][pore_water]") {
+TEST_CASE("fluid grid: a box without a pressure face is refused", "[cfd_dem][fluid_grid][pore_water]") {
   GridShape shape{Vec3::Zero(), Vec3::Ones(), {2, 2, 2}};
   std::array<FaceCondition, 6> closed{};
   closed[0] = {FaceKind::inflow_velocity, 0.01};

@@ -47,7 +47,7 @@ FrostRun run_frost(const project::Project& p) {
 
 }  // namespace
 
-TEST_CASE("of two pores under a cold face the nearer freezes first, and damage starts between them", "[frost]") {
+TEST_CASE("of two pores under a cold face the nearer freezes first, and damage starts between them", "[mechanics][frost]") {
   // A 120 x 80 um crop of the mortar plate cooled from the top: pore A
   // (radius 15 um) 10 um under the face, pore B beside it, 4 um deeper,
   // 8 um from A's rim (the shipped case's top pair, one pore lowered).
@@ -92,7 +92,7 @@ double depth(const project::Pore& p, double width, double height) {
 }
 }  // namespace
 
-TEST_CASE("the shipped mortar plate's pores start to freeze in the order of their depth under the cold faces", "[frost]") {
+TEST_CASE("the shipped mortar plate's pores start to freeze in the order of their depth under the cold faces", "[mechanics][frost]") {
   // Heat alone (the mechanics does not move the heat), coarse: 6 um.
   const auto p = test::shipped_project("mortar_frost.json", {{"numerics", {{"spacing", 6e-6}}},
                                                              {"mechanics", nullptr},
@@ -117,7 +117,7 @@ TEST_CASE("the shipped mortar plate's pores start to freeze in the order of thei
   }
 }
 
-TEST_CASE("the shipped mortar plate, coarse: every pore freezes in depth order and damage gathers at the pores", "[frost][long]") {
+TEST_CASE("the shipped mortar plate, coarse: every pore freezes in depth order and damage gathers at the pores", "[mechanics][frost][long]") {
   // 5 um: about seven minutes on two cores (converged cascades). Fails
   // today: 44 % of the broken bonds lie within a pore radius of a rim
   // over the whole run at this spacing (README, frost damage).

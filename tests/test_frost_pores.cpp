@@ -54,7 +54,7 @@ double hoop(const std::array<double, 3>& s, const Vec2& d) {
 
 }  // namespace
 
-TEST_CASE("a frozen pore pushing its rim out gives the Lame hoop stress, falling off as 1/r^2", "[frost]") {
+TEST_CASE("a frozen pore pushing its rim out gives the Lame hoop stress, falling off as 1/r^2", "[mechanics][frost]") {
   const double dx = 1.0, a = 8.0, b = 48.0;
   const Vec2 c(60.0, 60.0);
   const auto g = disc(c, b, dx);
@@ -106,7 +106,7 @@ TEST_CASE("a frozen pore pushing its rim out gives the Lame hoop stress, falling
   CHECK(mean.norm() / g.position.size() < 1e-3 * ua);
 }
 
-TEST_CASE("an unconfined ice disc grows freely by the volume change in area and stays whole", "[frost]") {
+TEST_CASE("an unconfined ice disc grows freely by the volume change in area and stays whole", "[mechanics][frost]") {
   const double dx = 1.0, R = 12.0;
   const Vec2 c(20.0, 20.0);
   const auto g = disc(c, R, dx);
@@ -146,7 +146,7 @@ TEST_CASE("an unconfined ice disc grows freely by the volume change in area and 
   CHECK(solid.intact_bonds() == solid.bonds());
 }
 
-TEST_CASE("a frozen pore rides on the plate: a cooled plate on rollers contracts as if the pore were matrix", "[frost]") {
+TEST_CASE("a frozen pore rides on the plate: a cooled plate on rollers contracts as if the pore were matrix", "[mechanics][frost]") {
   // No push (volume_change 0): the exact field is the free contraction
   // u = -(1 + nu) alpha dT x of the plane-strain plate on rollers, the pore's
   // particles (one rigid group with the matrix's thermal strain) included.

@@ -31,7 +31,7 @@ int covered(const RgbaImage& im) {
 
 }  // namespace
 
-TEST_CASE("A sphere covers pi r^2 pixels at the box's scale", "[report][render]") {
+TEST_CASE("A sphere covers pi r^2 pixels at the box's scale", "[cfd_dem][report][render]") {
   const auto im = render_grains({{0.5, 0.5, 0.5}}, {0.5}, {Rgb{200, 100, 50}}, low, high, side_view());
   const double r = 0.25 * 192.0;
   CHECK(covered(im) == Approx(std::numbers::pi * r * r).epsilon(0.01));
@@ -40,7 +40,7 @@ TEST_CASE("A sphere covers pi r^2 pixels at the box's scale", "[report][render]"
   CHECK(const_cast<RgbaImage&>(im).at(5, 5)[3] == 0);
 }
 
-TEST_CASE("The nearer grain hides the farther whatever the order", "[report][render]") {
+TEST_CASE("The nearer grain hides the farther whatever the order", "[cfd_dem][report][render]") {
   // The camera sits on +x: the grain at x = 0.8 is the nearer.
   const Rgb red{250, 0, 0}, blue{0, 0, 250};
   for (bool near_first : {true, false}) {
@@ -62,7 +62,7 @@ TEST_CASE("The nearer grain hides the farther whatever the order", "[report][ren
   }
 }
 
-TEST_CASE("The lit side of a grain is the brighter and no pixel exceeds its colour", "[report][render]") {
+TEST_CASE("The lit side of a grain is the brighter and no pixel exceeds its colour", "[cfd_dem][report][render]") {
   auto im = render_grains({{0.5, 0.5, 0.5}}, {0.5}, {Rgb{200, 200, 200}}, low, high, side_view());
   // The light comes from the upper left: compare points 30 px from the centre.
   CHECK(int(im.at(104 - 21, 104 - 21)[0]) > int(im.at(104 + 21, 104 + 21)[0]));
@@ -73,6 +73,6 @@ TEST_CASE("The lit side of a grain is the brighter and no pixel exceeds its colo
   CHECK(brightest >= 190);
 }
 
-TEST_CASE("Mismatched grain arrays are refused", "[report][render]") {
+TEST_CASE("Mismatched grain arrays are refused", "[cfd_dem][report][render]") {
   CHECK_THROWS(render_grains({{0.5, 0.5, 0.5}}, {}, {Rgb{1, 1, 1}}, low, high, side_view()));
 }

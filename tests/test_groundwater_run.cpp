@@ -20,7 +20,7 @@
 #include "report/report.hpp"
 #include "report/templates.hpp"
 #include "report_view_check.hpp"
-#include "run_project_cli.hpp"
+#include "cli.hpp"
 #include "temp_dir.hpp"
 
 namespace fs = std::filesystem;
@@ -57,15 +57,12 @@ void run_shipped_seepage_study(const json& patch, const fs::path& dir) {
   study["base"] = ((fs::path(FROSTWALL_SOURCE_DIR) / "projects") / "single_ring_sand.json").string();
   study["output"]["directory"] = "out";
   std::ofstream(dir / "study.json") << study.dump(2);
-  const std::string line = "cd '" + dir.string() + "' && '" FROSTWALL_EXE "' study study.json > log.txt 2>&1";
-  const int status = std::system(line.c_str());
-  REQUIRE(WIFEXITED(status));
-  REQUIRE(WEXITSTATUS(status) == 0);
+  frostwall::test::require_frostwall(dir, "study study.json");
 }
 
 }  // namespace
 
-TEST_CASE("Groundwater without flow is still water, and flowing water delays closure", "[groundwater][cli]") {
+TEST_CASE("Groundwater without flow is still water, and flowing water delays closure", "[freezing][groundwater][cli]") {
   const json still = run(scaled_ring(nullptr)), zero = run(scaled_ring({0.0, 0.0}));
   const json slow = run(scaled_ring({0.5, 0.0})), fast = run(scaled_ring({1.0, 0.0}));
   WARN(fmt::format("closure {:.3f} / {:.3f} / {:.3f} / {:.3f} d (none, 0, 0.5, 1 m/d)", closure(still), closure(zero),
@@ -137,7 +134,7 @@ TEST_CASE("Groundwater without flow is still water, and flowing water delays clo
 // first order in time, so closure comes a little late at the default step
 // change and converges on the explicit run as the step shrinks; the heat
 // balance holds through the water's walls.
-TEST_CASE("Groundwater: the coupled step closes with the explicit scheme as its step shrinks", "[groundwater][cli]") {
+TEST_CASE("Groundwater: the coupled step closes with the explicit scheme as its step shrinks", "[freezing][groundwater][cli]") {
   json explicit_run = scaled_ring({1.0, 0.0});
   json coupled = explicit_run, fine = explicit_run;
   explicit_run["groundwater"]["advection"] = "limited";
@@ -166,7 +163,7 @@ TEST_CASE("Groundwater: the coupled step closes with the explicit scheme as its 
 // water is twice what crosses their halves in the section: q |dy| of the
 // pipe centres (0.8 m3/d per m) less what the pipes block (about 4 % on
 // the ring facing the flow, above).
-TEST_CASE("Groundwater: a gap cut by the mirror line carries the water of both halves", "[groundwater][cli]") {
+TEST_CASE("Groundwater: a gap cut by the mirror line carries the water of both halves", "[freezing][groundwater][cli]") {
   json p = scaled_ring({1.0, 0.0});
   p["layout"]["outer_ring"]["start_angle_deg"] = 30.0;
   p["time"] = {{"end", 0.01}, {"unit", "d"}, {"snapshots", {0.01}}};
@@ -184,7 +181,7 @@ TEST_CASE("Groundwater: a gap cut by the mirror line carries the water of both h
 // The regional flow from the heads far from the shaft (the hydraulic
 // gradient measured by piezometers) is Darcy's q = K i: the same run as the
 // flux given, to the last digit.
-TEST_CASE("Groundwater: a hydraulic gradient is the flux K i", "[groundwater][cli]") {
+TEST_CASE("Groundwater: a hydraulic gradient is the flux K i", "[freezing][groundwater][cli]") {
   json by_flux = scaled_ring({1.0, 0.0});
   by_flux["time"] = {{"end", 1}, {"unit", "d"}, {"snapshots", {1}}};
   json by_gradient = by_flux;
@@ -204,7 +201,7 @@ TEST_CASE("Groundwater: a hydraulic gradient is the flux K i", "[groundwater][cl
 // (0.01 d): beyond 1.5 m the six small pipes (6 cm radius, 0.8 m out)
 // disturb a uniform flow by under 1 % (a dipole, (a / d)^2), so the mean
 // flux there is the regional 1 m/d; the fixed particles carry none.
-TEST_CASE("Groundwater: the Darcy flux in the VTU is the regional flow away from the ring", "[groundwater][cli]") {
+TEST_CASE("Groundwater: the Darcy flux in the VTU is the regional flow away from the ring", "[freezing][groundwater][cli]") {
   json p = scaled_ring({1.0, 0.0});
   p["time"] = {{"end", 0.01}, {"unit", "d"}, {"snapshots", {0.01}}};
   p["output"]["vtk"] = true;
@@ -261,7 +258,7 @@ TEST_CASE("Groundwater: the Darcy flux in the VTU is the regional flow away from
 // Check 6's last clause on the scaled ring (long: about 80 s): at some rate
 // the wall stops closing. At 4 m/d no gap closes in 24 days and the frozen
 // area levels off, which the verdict says; closure stays null.
-TEST_CASE("Groundwater: at 4 m/d the scaled ring does not close and the verdict says the frozen area stopped growing", "[groundwater][cli][long]") {
+TEST_CASE("Groundwater: at 4 m/d the scaled ring does not close and the verdict says the frozen area stopped growing", "[freezing][groundwater][cli][long]") {
   json p = scaled_ring({4.0, 0.0});
   p["time"] = {{"end", 24}, {"unit", "d"}, {"snapshots", {24}}};
   const json s = run(p);
@@ -277,7 +274,7 @@ TEST_CASE("Groundwater: at 4 m/d the scaled ring does not close and the verdict 
 // kept, on the scaled ring for 8 days: closure comes later as the flow
 // grows, 2 and 4 m/d do not close by then, and study.html shows closure against the
 // seepage with a row per variant.
-TEST_CASE("The shipped seepage study, on the scaled ring, delays closure with the flow", "[groundwater][study][cli]") {
+TEST_CASE("The shipped seepage study, on the scaled ring, delays closure with the flow", "[freezing][groundwater][study][cli]") {
   frostwall::test::TempDir dir;
   json patch = scaled_ring(nullptr);
   for (const char* key : {"name", "output", "soil", "pipe"}) patch.erase(key);
@@ -306,7 +303,7 @@ TEST_CASE("The shipped seepage study, on the scaled ring, delays closure with th
 // minutes on one core of a shared machine (README: the table), so a long test. Closure must come later as the
 // seepage grows, the wall facing the flow must be the thinner, and at some
 // rate the wall must stop closing.
-TEST_CASE("Seepage sweep on the single ring in sand: later closure, thinner upstream wall, no closure at some rate", "[groundwater][study][cli][long]") {
+TEST_CASE("Seepage sweep on the single ring in sand: later closure, thinner upstream wall, no closure at some rate", "[freezing][groundwater][study][cli][long]") {
   frostwall::test::TempDir dir;
   run_shipped_seepage_study({{"numerics", {{"spacing", 0.04}}}, {"output", {{"vtk", false}, {"report", false}}}}, dir.path);
   std::vector<double> closures;

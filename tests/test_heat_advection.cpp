@@ -133,7 +133,7 @@ double coupled_steady_error(double s, double q, double courant, double* newton =
 
 }  // namespace
 
-TEST_CASE("Coupled water and conduction: the steady profile within 1 % at any step, second order", "[groundwater][advection]") {
+TEST_CASE("Coupled water and conduction: the steady profile within 1 % at any step, second order", "[freezing][groundwater][advection]") {
   // One backward-Euler system for both: its steady state is the discrete
   // balance itself, so the step (Courant 1 to 100) must not move it; the
   // limited faces keep second order (20 -> 40 particles across).
@@ -153,7 +153,7 @@ TEST_CASE("Coupled water and conduction: the steady profile within 1 % at any st
   CHECK(fine < 0.35 * at_10);
 }
 
-TEST_CASE("Advection-conduction between two faces reaches the exponential profile within 1 %", "[groundwater][advection]") {
+TEST_CASE("Advection-conduction between two faces reaches the exponential profile within 1 %", "[freezing][groundwater][advection]") {
   // Limited: second order (the error falls about fourfold from 20 to 40
   // particles across). Upwind converges too, but its own diffusion,
   // rho_w c_w q s / 2, keeps it several times further off.
@@ -177,7 +177,7 @@ TEST_CASE("Advection-conduction between two faces reaches the exponential profil
   CHECK(implicit_1 < 0.5 * implicit_4);
 }
 
-TEST_CASE("The water's heat: a sharp front makes no new extremum, and energy balances every step", "[groundwater][advection]") {
+TEST_CASE("The water's heat: a sharp front makes no new extremum, and energy balances every step", "[freezing][groundwater][advection]") {
   // The implicit scheme at Courant 1, 4 and 10 (its step in upwind stable
   // steps; the explicit ones at the conduction's step, within theirs).
   using S = thermal::AdvectionScheme;

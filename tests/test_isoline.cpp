@@ -109,7 +109,7 @@ std::vector<Polyline> clip(const std::vector<Polyline>& lines, const Vec2& p, co
 
 }  // namespace
 
-TEST_CASE("isoline of a circle: one closed counterclockwise curve, O(d^2) error", "[isoline]") {
+TEST_CASE("isoline of a circle: one closed counterclockwise curve, O(d^2) error", "[shared][isoline]") {
   const Vec2 c(0.0123, -0.0071);  // off the lattice, so no symmetric ties
   const double R = 1.0;
   std::vector<double> errors;
@@ -135,7 +135,7 @@ TEST_CASE("isoline of a circle: one closed counterclockwise curve, O(d^2) error"
   CHECK(errors[1] / errors[2] == Approx(4.0).margin(0.8));
 }
 
-TEST_CASE("isoline of a linear field is exact and open", "[isoline]") {
+TEST_CASE("isoline of a linear field is exact and open", "[shared][isoline]") {
   const double L = 2.0, level = 0.37, d = 0.1;
   const auto p = lattice(0.0, 1.0, 0.0, 1.0, d);
   const auto lines = isolines(p, sample(p, [&](const Vec2& x) { return x[0] / L; }), level);
@@ -147,7 +147,7 @@ TEST_CASE("isoline of a linear field is exact and open", "[isoline]") {
   CHECK(lines[0].points.back()[1] == Approx(1.0).margin(1e-12));
 }
 
-TEST_CASE("isoline through lattice values equal to the level", "[isoline]") {
+TEST_CASE("isoline through lattice values equal to the level", "[shared][isoline]") {
   // d = 1/8: lattice values are exact, so a whole column sits at the level.
   const double d = 0.125;
   const auto p = lattice(0.0, 1.0, 0.0, 1.0, d);
@@ -171,7 +171,7 @@ TEST_CASE("isoline through lattice values equal to the level", "[isoline]") {
   CHECK(loop[0].closed);
 }
 
-TEST_CASE("isolines of two circles are two closed curves", "[isoline]") {
+TEST_CASE("isolines of two circles are two closed curves", "[shared][isoline]") {
   const Vec2 c1(-1.2, 0.03), c2(1.3, -0.02);
   const double R = 0.8, d = 0.05;
   const auto p = lattice(-2.5, 2.5, -1.5, 1.5, d);
@@ -187,7 +187,7 @@ TEST_CASE("isolines of two circles are two closed curves", "[isoline]") {
   CHECK((lines[0].points[0][0] < 0.0) != (lines[1].points[0][0] < 0.0));
 }
 
-TEST_CASE("isoline: max_edge keeps the front out of a hole without particles", "[isoline]") {
+TEST_CASE("isoline: max_edge keeps the front out of a hole without particles", "[shared][isoline]") {
   // A pipe disc with no particles inside: Delaunay fills it with long
   // triangles, which would carry the front straight across.
   const double d = 0.1;
@@ -211,7 +211,7 @@ TEST_CASE("isoline: max_edge keeps the front out of a hole without particles", "
   CHECK_THROWS_AS(isolines(p, std::vector<double>(3, 0.0), 1.03), std::invalid_argument);
 }
 
-TEST_CASE("write_vtp: polylines read back, closed ones repeat their first id", "[isoline]") {
+TEST_CASE("write_vtp: polylines read back, closed ones repeat their first id", "[shared][isoline]") {
   frostwall::test::TempDir dir("frostwall-isoline");
   const Vec2 c1(-1.2, 0.03), c2(1.3, -0.02);
   const auto p = lattice(-2.5, 2.5, -1.5, 1.5, 0.1);
@@ -266,7 +266,7 @@ TEST_CASE("write_vtp: polylines read back, closed ones repeat their first id", "
   vtkObject::SetGlobalWarningDisplay(warnings);
 }
 
-TEST_CASE("isoline with mirror images reaches the symmetry plane", "[isoline]") {
+TEST_CASE("isoline with mirror images reaches the symmetry plane", "[shared][isoline]") {
   // A 30 deg wedge (planes y = 0 and theta = 30 deg through the origin) and
   // a circle centred on the 30 deg plane, which the lattice does not follow:
   // with the images (carrying their source's value) the front crosses the

@@ -15,7 +15,7 @@
 #include "report/report_sections.hpp"
 #include "report/templates.hpp"
 #include "report_view_check.hpp"
-#include "run_project_cli.hpp"
+#include "cli.hpp"
 
 namespace fs = std::filesystem;
 using nlohmann::json;
@@ -64,7 +64,7 @@ void same_numbers(const json& a, const json& b, const std::string& where) {
 }  // namespace
 
 TEST_CASE("Layers: a two-layer shaft gives each layer the results of its own run, and the deeper clay governs",
-          "[design][layers][cli]") {
+          "[freezing][design][layers][cli]") {
   json layered = scaled_shaft();
   layered["layers"] = {{{"name", "sand 60 m"}, {"depth", 60}},
                        {{"name", "clay 120 m"}, {"depth", 120}, {"soil", "clay"}, {"strength", {{"a", 0.8}, {"b", 0.25}}}}};
@@ -125,7 +125,7 @@ TEST_CASE("Layers: a two-layer shaft gives each layer the results of its own run
                    alone[1]["design"]["met_day"].dump()));
 }
 
-TEST_CASE("The design verdict says when a wall that passed fails again", "[design][report]") {
+TEST_CASE("The design verdict says when a wall that passed fails again", "[freezing][design][report]") {
   json s = {{"design", {{"met_day", 40.0}, {"stays_met", false}}}, {"wall", {{{"day", 120.0}, {"utilisation", 1.2}}}}};
   CHECK(frostwall::report::detail::design_verdict(s) ==
         "design met on day 40 (but not for good: it fails again later); utilisation 1.20 on day 120");

@@ -76,7 +76,7 @@ const fs::path valid_dir = fs::path(FROSTWALL_SOURCE_DIR) / "tests" / "data" / "
 
 // ---- pipe positions ------------------------------------------------------------
 
-TEST_CASE("single ring: count pipes from the start angle, counter-clockwise", "[geometry]") {
+TEST_CASE("single ring: count pipes from the start angle, counter-clockwise", "[freezing][geometry]") {
   const auto pipes = geometry::pipe_positions(ring_pattern(Pattern::single, 5.0, 26, 10.0));
   REQUIRE(pipes.size() == 26);
   CHECK(pipes[0].x == Approx(5.0 * std::cos(10 * deg)));
@@ -89,7 +89,7 @@ TEST_CASE("single ring: count pipes from the start angle, counter-clockwise", "[
   CHECK(pipes[3].label == "outer 3");
 }
 
-TEST_CASE("three-hole: inner ring has the outer count, half a spacing on", "[geometry]") {
+TEST_CASE("three-hole: inner ring has the outer count, half a spacing on", "[freezing][geometry]") {
   const auto pipes = geometry::pipe_positions(ring_pattern(Pattern::three_hole, 5.0, 26, 10.0, 4.2));
   REQUIRE(pipes.size() == 52);
   const Pipe2& inner0 = pipes[26];
@@ -100,7 +100,7 @@ TEST_CASE("three-hole: inner ring has the outer count, half a spacing on", "[geo
   CHECK(angle_of(pipes[27]) == Approx((10 + 180.0 / 26 + 360.0 / 26) * deg));
 }
 
-TEST_CASE("four-hole: inner ring has twice the outer count, on and between outer angles", "[geometry]") {
+TEST_CASE("four-hole: inner ring has twice the outer count, on and between outer angles", "[freezing][geometry]") {
   const auto pipes = geometry::pipe_positions(ring_pattern(Pattern::four_hole, 5.0, 26, 10.0, 4.2));
   REQUIRE(pipes.size() == 78);
   CHECK(pipes[26].label == "inner 0");
@@ -111,7 +111,7 @@ TEST_CASE("four-hole: inner ring has twice the outer count, on and between outer
   CHECK(pipes[77].label == "inner 51");
 }
 
-TEST_CASE("rings and measured pipes as given", "[geometry]") {
+TEST_CASE("rings and measured pipes as given", "[freezing][geometry]") {
   const auto rings = geometry::pipe_positions(free_rings({{5.0, 24, 0.0}, {6.0, 36, 5.0}}));
   REQUIRE(rings.size() == 60);
   CHECK(rings[24].ring == 1);
@@ -130,7 +130,7 @@ TEST_CASE("rings and measured pipes as given", "[geometry]") {
 
 // ---- layout problems ---------------------------------------------------------
 
-TEST_CASE("layout problems: overlapping pipes", "[geometry]") {
+TEST_CASE("layout problems: overlapping pipes", "[freezing][geometry]") {
   SECTION("26 pipes on a 0.3 m ring: one line for the ring") {
     const auto problems = geometry::layout_problems(section(ring_pattern(Pattern::single, 0.3, 26, 0.0), 2.0));
     REQUIRE(problems.size() == 1);
@@ -162,7 +162,7 @@ TEST_CASE("layout problems: overlapping pipes", "[geometry]") {
   }
 }
 
-TEST_CASE("layout problems: excavation and far field", "[geometry]") {
+TEST_CASE("layout problems: excavation and far field", "[freezing][geometry]") {
   const Layout ring = ring_pattern(Pattern::single, 5.0, 26, 0.0);
   SECTION("pipe discs reaching into the excavation") {
     auto s = section(ring);
@@ -206,7 +206,7 @@ TEST_CASE("layout problems: excavation and far field", "[geometry]") {
   }
 }
 
-TEST_CASE("layout problems: the shipped layouts have none", "[geometry]") {
+TEST_CASE("layout problems: the shipped layouts have none", "[freezing][geometry]") {
   int shaft_sections = 0;
   for (const auto& entry : fs::directory_iterator(valid_dir)) {
     const auto project = project::load_project(entry.path().string());
@@ -221,7 +221,7 @@ TEST_CASE("layout problems: the shipped layouts have none", "[geometry]") {
 
 // ---- symmetry ------------------------------------------------------------------
 
-TEST_CASE("symmetry of a single ring of 26: 26 mirror lines from the start angle", "[geometry]") {
+TEST_CASE("symmetry of a single ring of 26: 26 mirror lines from the start angle", "[freezing][geometry]") {
   const auto pipes = geometry::pipe_positions(ring_pattern(Pattern::single, 5.0, 26, 0.0));
   const auto w = geometry::find_symmetry_wedge(pipes, 0.0);
   CHECK(w.mirror_count == 26);
@@ -231,7 +231,7 @@ TEST_CASE("symmetry of a single ring of 26: 26 mirror lines from the start angle
   CHECK(geometry::describe(w) == "symmetry: 26 mirror lines, wedge of 6.923 deg from 0.000 deg");
 }
 
-TEST_CASE("symmetry of a ring rotated by an arbitrary start angle", "[geometry]") {
+TEST_CASE("symmetry of a ring rotated by an arbitrary start angle", "[freezing][geometry]") {
   const auto pipes = geometry::pipe_positions(ring_pattern(Pattern::single, 5.0, 26, 13.7));
   const auto w = geometry::find_symmetry_wedge(pipes, 13.7 * deg);
   CHECK(w.mirror_count == 26);
@@ -240,7 +240,7 @@ TEST_CASE("symmetry of a ring rotated by an arbitrary start angle", "[geometry]"
   CHECK(pipe_on_ray(pipes, w.start_angle));
 }
 
-TEST_CASE("symmetry of the double rings: the wedge of the outer ring", "[geometry]") {
+TEST_CASE("symmetry of the double rings: the wedge of the outer ring", "[freezing][geometry]") {
   SECTION("three-hole: inner pipes on OB") {
     const auto pipes = geometry::pipe_positions(ring_pattern(Pattern::three_hole, 5.0, 26, 0.0, 4.2));
     const auto w = geometry::find_symmetry_wedge(pipes, 0.0);
@@ -260,7 +260,7 @@ TEST_CASE("symmetry of the double rings: the wedge of the outer ring", "[geometr
   }
 }
 
-TEST_CASE("symmetry of rings with a common divisor: M = gcd of the counts", "[geometry]") {
+TEST_CASE("symmetry of rings with a common divisor: M = gcd of the counts", "[freezing][geometry]") {
   const auto pipes = geometry::pipe_positions(free_rings({{5.0, 24, 0.0}, {6.0, 36, 0.0}}));
   const auto w = geometry::find_symmetry_wedge(pipes, 0.0);
   CHECK(w.mirror_count == 12);
@@ -269,7 +269,7 @@ TEST_CASE("symmetry of rings with a common divisor: M = gcd of the counts", "[ge
   CHECK(geometry::mirror_lines(pipes, geometry::default_symmetry_tolerance(pipes)).size() == 12);
 }
 
-TEST_CASE("symmetry of an odd ring: OA on the pipe, not on the gap opposite", "[geometry]") {
+TEST_CASE("symmetry of an odd ring: OA on the pipe, not on the gap opposite", "[freezing][geometry]") {
   SECTION("start 0") {
     const auto pipes = geometry::pipe_positions(ring_pattern(Pattern::single, 5.0, 5, 0.0));
     const auto w = geometry::find_symmetry_wedge(pipes, 0.0);
@@ -288,7 +288,7 @@ TEST_CASE("symmetry of an odd ring: OA on the pipe, not on the gap opposite", "[
   }
 }
 
-TEST_CASE("symmetry of a ring with one pipe 5 cm off", "[geometry]") {
+TEST_CASE("symmetry of a ring with one pipe 5 cm off", "[freezing][geometry]") {
   auto pipes = geometry::pipe_positions(ring_pattern(Pattern::single, 5.0, 26, 0.0));
   const double theta = angle_of(pipes[3]);  // 41.5 deg
   SECTION("radially: only the line through that pipe survives") {
@@ -313,7 +313,7 @@ TEST_CASE("symmetry of a ring with one pipe 5 cm off", "[geometry]") {
   }
 }
 
-TEST_CASE("symmetry of measured pipes comes from the positions", "[geometry]") {
+TEST_CASE("symmetry of measured pipes comes from the positions", "[freezing][geometry]") {
   SECTION("the shipped survey with deviations: full circle") {
     const auto project = project::load_project((valid_dir / "measured_pipes.json").string());
     const auto pipes = geometry::pipe_positions(std::get<project::ShaftSection>(project.geometry).layout);
@@ -330,7 +330,7 @@ TEST_CASE("symmetry of measured pipes comes from the positions", "[geometry]") {
   }
 }
 
-TEST_CASE("symmetry: rotational only is not used", "[geometry]") {
+TEST_CASE("symmetry: rotational only is not used", "[freezing][geometry]") {
   SECTION("two 6-pipe rings 10 deg apart on different radii: M = 0") {
     const auto pipes = geometry::pipe_positions(free_rings({{5.0, 6, 0.0}, {6.0, 6, 10.0}}));
     const auto w = geometry::find_symmetry_wedge(pipes, 0.0);
@@ -346,7 +346,7 @@ TEST_CASE("symmetry: rotational only is not used", "[geometry]") {
   }
 }
 
-TEST_CASE("symmetry of the shipped free rings: 26 and 30 pipes share the 0 and 90 deg lines", "[geometry]") {
+TEST_CASE("symmetry of the shipped free rings: 26 and 30 pipes share the 0 and 90 deg lines", "[freezing][geometry]") {
   const auto project = project::load_project((valid_dir / "two_rings.json").string());
   const auto pipes = geometry::pipe_positions(std::get<project::ShaftSection>(project.geometry).layout);
   const auto w = geometry::find_symmetry_wedge(pipes, 0.0);
@@ -355,7 +355,7 @@ TEST_CASE("symmetry of the shipped free rings: 26 and 30 pipes share the 0 and 9
   CHECK(w.start_angle == Approx(0.0).margin(1e-12));
 }
 
-TEST_CASE("Under seepage only the mirror line along the flow survives", "[layout][groundwater]") {
+TEST_CASE("Under seepage only the mirror line along the flow survives", "[freezing][layout][groundwater]") {
   // 26 pipes on a ring from 0 deg: mirror lines every 180/26 deg.
   std::vector<Pipe2> pipes;
   for (int k = 0; k < 26; ++k) pipes.push_back({std::cos(k * 2 * pi / 26), std::sin(k * 2 * pi / 26), 0, k});

@@ -12,6 +12,8 @@
 //    the zone above the cavity empties (porosity 1) and the surface settles
 //    most above the cavity.
 #include <catch2/catch.hpp>
+
+#include "cli.hpp"
 #include <cmath>
 #include <fmt/core.h>
 #include <fstream>
@@ -51,10 +53,7 @@ const fs::path& cache() {
 // `frostwall <command> <file>` in dir with the shared cache; it must succeed.
 void frostwall_in(const fs::path& dir, const std::string& command, const std::string& file) {
   setenv("FROSTWALL_CACHE", cache().c_str(), 1);
-  const std::string line = "cd '" + dir.string() + "' && '" FROSTWALL_EXE "' " + command + " " + file + " > log.txt 2>&1";
-  const int status = std::system(line.c_str());
-  REQUIRE(WIFEXITED(status));
-  REQUIRE(WEXITSTATUS(status) == 0);
+  frostwall::test::require_frostwall(dir, command + " " + file);
 }
 
 // Runs the project in dir (its output in dir/out).

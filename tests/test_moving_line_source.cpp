@@ -103,7 +103,7 @@ std::vector<double> line_source_errors(double s, std::string& log) {
 
 }  // namespace
 
-TEST_CASE("A line source in a Darcy flow against the moving line source solution", "[groundwater][advection][verification]") {
+TEST_CASE("A line source in a Darcy flow against the moving line source solution", "[freezing][groundwater][advection][verification]") {
   std::string log;
   const auto coarse = line_source_errors(1.0, log), fine = line_source_errors(0.5, log);
   INFO(log);

@@ -55,7 +55,7 @@ double sine_mode_error(double dx, const std::string& laplacian) {
 
 }  // namespace
 
-TEST_CASE("PD conduction: micro-conductivity and a quadratic field", "[pd][verification]") {
+TEST_CASE("PD conduction: micro-conductivity and a quadratic field", "[mechanics][pd][verification]") {
   // The continuum check of kappa = 6k / (pi delta^3): for T = x^2/2 the
   // bond integral int_0^delta int_0^2pi kappa (r cos)^2 / 2 / r r dtheta dr
   // = kappa pi delta^3 / 6 must be k.
@@ -70,7 +70,7 @@ TEST_CASE("PD conduction: micro-conductivity and a quadratic field", "[pd][verif
   CHECK(plain < 0.06);
 }
 
-TEST_CASE("PD conduction: insulated sine mode, second order with renormalised bonds", "[pd][verification]") {
+TEST_CASE("PD conduction: insulated sine mode, second order with renormalised bonds", "[mechanics][pd][verification]") {
   const std::vector<double> spacings{1.0 / 10, 1.0 / 20, 1.0 / 40};
   std::vector<double> renormalised, plain;
   for (double dx : spacings) {
@@ -90,7 +90,7 @@ TEST_CASE("PD conduction: insulated sine mode, second order with renormalised bo
   CHECK(plain.back() > 3.0 * renormalised.back());
 }
 
-TEST_CASE("PD conduction: suddenly cooled half-space follows erf", "[pd][verification]") {
+TEST_CASE("PD conduction: suddenly cooled half-space follows erf", "[mechanics][pd][verification]") {
   const std::vector<double> spacings{0.02, 0.01, 0.005};
   std::vector<double> errors;
   for (double dx : spacings) errors.push_back(test::cooled_half_space_error(dx, pd_numerics(dx)));
@@ -102,7 +102,7 @@ TEST_CASE("PD conduction: suddenly cooled half-space follows erf", "[pd][verific
   CHECK(errors.back() < 1e-4);
 }
 
-TEST_CASE("PD conduction: energy to round-off, insulated and through a cooled face", "[pd][energy]") {
+TEST_CASE("PD conduction: energy to round-off, insulated and through a cooled face", "[mechanics][pd][energy]") {
   // Latent heat on: the phase change runs through the same bookkeeping.
   for (const bool cooled : {false, true}) {
     const std::string sides = cooled ? R"({ "left": { "temperature": -1.0 }, "right": "adiabatic", "top": "adiabatic", "bottom": "adiabatic" })"
@@ -128,7 +128,7 @@ TEST_CASE("PD conduction: energy to round-off, insulated and through a cooled fa
 // A crack that insulates (mechanics.cracks_insulate): cutting every thermal
 // pair across x = 0.25 stops all heat between the halves, and the cut keeps
 // the flux antisymmetric, so the stored heat is still exact.
-TEST_CASE("PD conduction: a cut through the bonds stops the heat and keeps energy", "[pd][energy]") {
+TEST_CASE("PD conduction: a cut through the bonds stops the heat and keeps energy", "[mechanics][pd][energy]") {
   const std::string sides = R"({ "left": "adiabatic", "right": "adiabatic", "top": "adiabatic", "bottom": "adiabatic" })";
   auto m = freezing::build_model(test::rectangle_project(0.5, 0.3, sides, test::unit_soil(-100.0, 0.0), 0.0, 0.05, pd_numerics(0.02)));
   const auto& x = m.particles().position;

@@ -10,7 +10,7 @@
 
 using namespace frostwall::groundwater;
 
-TEST_CASE("Permeability falls as ice forms, on every law", "[groundwater][permeability]") {
+TEST_CASE("Permeability falls as ice forms, on every law", "[freezing][groundwater][permeability]") {
   for (auto model : {PermeabilityModel::impedance, PermeabilityModel::kozeny_carman, PermeabilityModel::threshold}) {
     PermeabilityLaw law{model};
     INFO(law.name());
@@ -32,7 +32,7 @@ TEST_CASE("Permeability falls as ice forms, on every law", "[groundwater][permea
   CHECK_FALSE(permeability_model_from_name("cubic", unknown));
 }
 
-TEST_CASE("Permeability laws against hand values", "[groundwater][permeability]") {
+TEST_CASE("Permeability laws against hand values", "[freezing][groundwater][permeability]") {
   // Hansson et al.'s Omega = 7 at half the pore water frozen: 10^-3.5.
   PermeabilityLaw hansson{PermeabilityModel::impedance, 7.0};
   CHECK(hansson.relative(0.5) == Approx(std::pow(10.0, -3.5)).epsilon(1e-12));

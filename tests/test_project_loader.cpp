@@ -57,7 +57,7 @@ std::vector<std::string> problems_of(const std::string& text, const std::string&
 
 }  // namespace
 
-TEST_CASE("single ring with every field of a soil object", "[project]") {
+TEST_CASE("single ring with every field of a soil object", "[shared][project]") {
   const Project p = load_valid("single_ring_sand.json");
   CHECK(p.name == "Single ring, 26 pipes, medium-coarse sand");
   CHECK_FALSE(p.description.empty());
@@ -123,7 +123,7 @@ TEST_CASE("single ring with every field of a soil object", "[project]") {
   CHECK(p.warnings.empty());
 }
 
-TEST_CASE("three-hole layout in built-in clay with a pipe schedule", "[project]") {
+TEST_CASE("three-hole layout in built-in clay with a pipe schedule", "[shared][project]") {
   const Project p = load_valid("three_hole_clay.json");
   const auto& s = std::get<ShaftSection>(p.geometry);
   CHECK(s.layout.pattern == Pattern::three_hole);
@@ -170,7 +170,7 @@ TEST_CASE("three-hole layout in built-in clay with a pipe schedule", "[project]"
   CHECK(p.warnings.empty());
 }
 
-TEST_CASE("rectangles: the Neumann strip and the soil column", "[project]") {
+TEST_CASE("rectangles: the Neumann strip and the soil column", "[shared][project]") {
   const Project neumann = load_valid("neumann_strip.json");
   REQUIRE(std::holds_alternative<Rectangle>(neumann.geometry));
   const auto& strip = std::get<Rectangle>(neumann.geometry);
@@ -210,7 +210,7 @@ TEST_CASE("rectangles: the Neumann strip and the soil column", "[project]") {
   CHECK(column.soil.latent_heat == 33500.0);
 }
 
-TEST_CASE("measured pipes, anisotropic soil, adiabatic far field, free rings", "[project]") {
+TEST_CASE("measured pipes, anisotropic soil, adiabatic far field, free rings", "[shared][project]") {
   const Project p = load_valid("measured_pipes.json");
   const auto& s = std::get<ShaftSection>(p.geometry);
   CHECK(s.layout.pattern == Pattern::pipes);
@@ -235,7 +235,7 @@ TEST_CASE("measured pipes, anisotropic soil, adiabatic far field, free rings", "
   CHECK(r.soil.density == 2090);  // built-in sand
 }
 
-TEST_CASE("built-in soils", "[project]") {
+TEST_CASE("built-in soils", "[shared][project]") {
   CHECK(builtin_soil_names() == std::vector<std::string>{"sand", "clay", "silty_clay"});
   const auto sand = builtin_soil("sand");
   REQUIRE(sand);
@@ -259,7 +259,7 @@ TEST_CASE("built-in soils", "[project]") {
   CHECK_FALSE(builtin_soil("Sand"));
 }
 
-TEST_CASE("every bad case fails with exactly its expected lines", "[project]") {
+TEST_CASE("every bad case fails with exactly its expected lines", "[shared][project]") {
   int cases = 0;
   for (const auto& entry : fs::directory_iterator(data_dir / "bad")) {
     if (entry.path().extension() != ".json") continue;
@@ -289,7 +289,7 @@ TEST_CASE("every bad case fails with exactly its expected lines", "[project]") {
   CHECK(cases >= 20);  // the directory was really read
 }
 
-TEST_CASE("files that cannot be read, text that is no project", "[project]") {
+TEST_CASE("files that cannot be read, text that is no project", "[shared][project]") {
   const std::string missing = (data_dir / "no_such_project.json").string();
   try {
     load_project(missing);
@@ -307,7 +307,7 @@ TEST_CASE("files that cannot be read, text that is no project", "[project]") {
   CHECK_THROWS_AS(parse_project("{"), ProjectError);
 }
 
-TEST_CASE("implausible but computable input loads with warnings", "[project]") {
+TEST_CASE("implausible but computable input loads with warnings", "[shared][project]") {
   SECTION("the paper's latent heat of clay, decimal point slipped") {
     const Project p = load_edited("single_ring_sand.json", {{"soil", {{"latent_heat", 530718}}}});
     CHECK(p.soil.latent_heat == 530718);
@@ -393,7 +393,7 @@ const nlohmann::json generator = {{"count", 30}, {"radius", {8e-6, 1.5e-5}}, {"m
 
 }  // namespace
 
-TEST_CASE("porous plate: listed pores read back, freezing expansion set by default", "[project][pores]") {
+TEST_CASE("porous plate: listed pores read back, freezing expansion set by default", "[shared][project][pores]") {
   const Project p = load_plate(nlohmann::json::object());
   const auto& plate = std::get<Rectangle>(p.geometry);
   REQUIRE(plate.pores.size() == 2);
@@ -428,7 +428,7 @@ TEST_CASE("porous plate: listed pores read back, freezing expansion set by defau
   CHECK_FALSE(load_plate({{"mechanics", nullptr}}).mechanics);
 }
 
-TEST_CASE("porous plate: drawn pores are reproducible and keep their gaps", "[project][pores]") {
+TEST_CASE("porous plate: drawn pores are reproducible and keep their gaps", "[shared][project][pores]") {
   const Project p = load_plate({{"geometry", {{"pores", generator}}}});
   const auto& plate = std::get<Rectangle>(p.geometry);
   REQUIRE(plate.pore_generator);
@@ -482,7 +482,7 @@ TEST_CASE("porous plate: drawn pores are reproducible and keep their gaps", "[pr
   for (const auto& pore : pores_of(single)) CHECK(pore.radius == 1e-5);
 }
 
-TEST_CASE("porous plate: pore fluid defaults and overrides", "[project][pores]") {
+TEST_CASE("porous plate: pore fluid defaults and overrides", "[shared][project][pores]") {
   const PoreFluid defaults = load_plate(nlohmann::json::object()).pore_fluid;
   CHECK(defaults.water_conductivity == 0.6);
   CHECK(defaults.ice_conductivity == 2.14);
@@ -511,7 +511,7 @@ TEST_CASE("porous plate: pore fluid defaults and overrides", "[project][pores]")
         std::vector<std::string>{"pore_fluid: the plate has no pores (geometry.pores); ignored"});
 }
 
-TEST_CASE("porous plate: every problem of pores, pore fluid and freezing expansion", "[project][pores]") {
+TEST_CASE("porous plate: every problem of pores, pore fluid and freezing expansion", "[shared][project][pores]") {
   CHECK(plate_problems({{"pore_fluid", {{"water", {{"conductivity", 0}, {"viscosity", 1e-3}}}, {"latent_heat", -1}}}}) ==
         std::vector<std::string>{"pore_fluid.water.viscosity: unknown field",
                                  "pore_fluid.water.conductivity: must be positive, got 0",

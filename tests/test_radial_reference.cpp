@@ -53,7 +53,7 @@ double neumann_lambda(const project::Soil& s, double T0, double Ti) {
 
 }  // namespace
 
-TEST_CASE("radial reference: steady state without phase change is the log profile", "[reference]") {
+TEST_CASE("radial reference: steady state without phase change is the log profile", "[freezing][reference]") {
   auto soil = sand();
   soil.latent_heat = 0.0;
   soil.freezing_point = -1000.0;  // never reached: unfrozen throughout
@@ -84,7 +84,7 @@ TEST_CASE("radial reference: steady state without phase change is the log profil
   CHECK(std::abs(ref.energy() - e0) < 1e-6 * q_exact * 1000.0 + 1e-9 * std::abs(e0));
 }
 
-TEST_CASE("radial reference: energy is conserved", "[reference]") {
+TEST_CASE("radial reference: energy is conserved", "[freezing][reference]") {
   SECTION("adiabatic far field: the change of sum V H is the heat through the pipe wall") {
     auto p = sand_case();
     p.adiabatic_far = true;
@@ -119,7 +119,7 @@ TEST_CASE("radial reference: energy is conserved", "[reference]") {
   }
 }
 
-TEST_CASE("radial reference: the frozen radius of the sand case converges", "[reference]") {
+TEST_CASE("radial reference: the frozen radius of the sand case converges", "[freezing][reference]") {
   // Two measures of the front: frozen_radius(), where f crosses 0.5 (the
   // definition the SPH front uses), and frozen_radius_by_volume(). With an
   // isothermal law one cell at a time is freezing, and interpolating f
@@ -178,7 +178,7 @@ TEST_CASE("radial reference: the frozen radius of the sand case converges", "[re
                days[d], crossing[3][d], volume[3][d], crossing[3][d] - p.pipe_radius);
 }
 
-TEST_CASE("radial reference: the time step is converged", "[reference]") {
+TEST_CASE("radial reference: the time step is converged", "[freezing][reference]") {
   // The default step (dt = t dr / 1 m) against one eight times smaller: the
   // time error falls with dr and sits far below the 2 % of the SPH check.
   const auto p = sand_case();
@@ -193,7 +193,7 @@ TEST_CASE("radial reference: the time step is converged", "[reference]") {
   CHECK(rel < 1e-3);
 }
 
-TEST_CASE("radial reference: plane limit is the two-phase Neumann solution", "[reference]") {
+TEST_CASE("radial reference: plane limit is the two-phase Neumann solution", "[freezing][reference]") {
   // A pipe of radius 1000 m: over a front depth of under a metre the
   // curvature is negligible (its effect is of order X / a, 0.06 % here;
   // with a = 100 m it is about 0.2 %). Far boundary 4 m out: the liquid

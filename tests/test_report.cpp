@@ -141,7 +141,7 @@ std::size_t polyline_points(const std::string& svg) {
 
 }  // namespace
 
-TEST_CASE("The report of a shaft run fills every placeholder, loads nothing and balances its tags", "[report]") {
+TEST_CASE("The report of a shaft run fills every placeholder, loads nothing and balances its tags", "[shared][report]") {
   test::TempDir dir("frostwall-report");
   const fs::path out = dir.path / "out";
   coarse_main_job(out);
@@ -199,7 +199,7 @@ TEST_CASE("The report of a shaft run fills every placeholder, loads nothing and 
   CHECK(seconds < 5.0);  // the report is part of a run; a coarse one must be quick
 }
 
-TEST_CASE("A plain-geometry run without project.json still gets a report", "[report]") {
+TEST_CASE("A plain-geometry run without project.json still gets a report", "[shared][report]") {
   test::TempDir dir("frostwall-report-plain");
   auto p = test::rectangle_project(
       0.2, 0.02, R"({ "left": { "temperature": -10 }, "right": "adiabatic", "top": "adiabatic", "bottom": "adiabatic" })",
@@ -216,7 +216,7 @@ TEST_CASE("A plain-geometry run without project.json still gets a report", "[rep
   CHECK(test::count(html, "<img ") == 0);
 }
 
-TEST_CASE("frostwall report on a folder without results is bad input", "[report][cli]") {
+TEST_CASE("frostwall report on a folder without results is bad input", "[shared][report][cli]") {
   test::TempDir dir("frostwall-report-bad");
   fs::create_directory(dir.path / "empty");
   const auto cli = test::frostwall_cli(dir.path, "report empty");
@@ -226,7 +226,7 @@ TEST_CASE("frostwall report on a folder without results is bad input", "[report]
   CHECK(fs::is_empty(dir.path / "empty"));
 }
 
-TEST_CASE("Axes get round ticks and journal labels", "[report][chart]") {
+TEST_CASE("Axes get round ticks and journal labels", "[shared][report][chart]") {
   const auto s = report::nice_scale(0.0, 13.6);
   CHECK(s.lo == 0.0);
   CHECK(s.hi == Approx(15.0));
@@ -269,7 +269,7 @@ TEST_CASE("Axes get round ticks and journal labels", "[report][chart]") {
   CHECK(test::html_balance_problem(svg) == "");
 }
 
-TEST_CASE("Base64 of the RFC 4648 test vectors", "[report]") {
+TEST_CASE("Base64 of the RFC 4648 test vectors", "[shared][report]") {
   CHECK(report::base64("") == "");
   CHECK(report::base64("f") == "Zg==");
   CHECK(report::base64("fo") == "Zm8=");
@@ -279,7 +279,7 @@ TEST_CASE("Base64 of the RFC 4648 test vectors", "[report]") {
   CHECK(report::base64("foobar") == "Zm9vYmFy");
 }
 
-TEST_CASE("Folding maps every copy of a wedge point back onto it", "[report][map]") {
+TEST_CASE("Folding maps every copy of a wedge point back onto it", "[shared][report][map]") {
   for (int M : {1, 3, 26}) {
     report::WedgeSymmetry w{M, 0.3, std::numbers::pi / M};
     for (double f : {0.1, 0.5, 0.9})
@@ -293,7 +293,7 @@ TEST_CASE("Folding maps every copy of a wedge point back onto it", "[report][map
   }
 }
 
-TEST_CASE("Colours turn from blue to red at the freezing point", "[report][map]") {
+TEST_CASE("Colours turn from blue to red at the freezing point", "[shared][report][map]") {
   const report::ColourScale c(-25.0, 15.0, 0.0);
   const auto cold = c(-25.0), zero = c(0.0), warm = c(15.0);
   CHECK(cold[2] > cold[0]);  // blue
@@ -310,7 +310,7 @@ TEST_CASE("Colours turn from blue to red at the freezing point", "[report][map]"
 // A PD thermo-mechanical run's report gets a mechanics section: one map of
 // the displacement and one of the damage per snapshot (inline PNG), a
 // colour bar for each, and the sensors' displacement and damage charts.
-TEST_CASE("The report of a PD plate run has displacement and damage maps", "[report][pd]") {
+TEST_CASE("The report of a PD plate run has displacement and damage maps", "[shared][report][pd]") {
   test::TempDir dir("frostwall-report-pd");
   std::ifstream in(std::string(FROSTWALL_SOURCE_DIR) + "/projects/plate_cooling.json");
   json project = json::parse(in);
@@ -341,7 +341,7 @@ TEST_CASE("The report of a PD plate run has displacement and damage maps", "[rep
 // pore (open when unfinished, a note when never started, a marker when all
 // froze), the damage over time from damage.csv and a table of the pores. A
 // run without pores has no such section.
-TEST_CASE("The report of a porous plate has a frost damage section", "[report][frost]") {
+TEST_CASE("The report of a porous plate has a frost damage section", "[shared][report][frost]") {
   test::TempDir dir("frostwall-report-frost");
   const fs::path out = dir.path / "out";
   json summary = write_frost_output(out, true);
@@ -417,7 +417,7 @@ TEST_CASE("The report of a porous plate has a frost damage section", "[report][f
 
 // The material map does not blend categories: every painted pixel has one
 // of the materials' colours (a kernel average would mix them at a rim).
-TEST_CASE("A category map paints each pixel with its nearest particle's colour", "[report][map]") {
+TEST_CASE("A category map paints each pixel with its nearest particle's colour", "[shared][report][map]") {
   report::FieldSnapshot lattice;
   const double s = 0.1;
   std::vector<std::array<std::uint8_t, 3>> colours;

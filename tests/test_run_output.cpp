@@ -19,7 +19,7 @@
 using namespace frostwall;
 namespace fs = std::filesystem;
 
-TEST_CASE("A run writes VTK snapshots that VTK reads back, and summary.json", "[run][io]") {
+TEST_CASE("A run writes VTK snapshots that VTK reads back, and summary.json", "[freezing][run][io]") {
   test::TempDir dir("frostwall-run");
   auto p = test::rectangle_project(
       0.495, 0.05, R"({ "left": { "temperature": -10 }, "right": "adiabatic", "top": "adiabatic", "bottom": "adiabatic" })",

@@ -49,7 +49,7 @@ std::pair<int, int> closed_and_open(const fs::path& file) {
 
 }  // namespace
 
-TEST_CASE("A shaft run writes the summary of the contract, CSV files and front curves", "[results]") {
+TEST_CASE("A shaft run writes the summary of the contract, CSV files and front curves", "[freezing][results]") {
   test::TempDir dir("frostwall-results");
   auto p = test::shipped_project(
       "single_ring_sand.json",
@@ -181,7 +181,7 @@ TEST_CASE("A shaft run writes the summary of the contract, CSV files and front c
 // that contains a ring of pipes, so it is positive from closure on (the
 // inner ring's stretch alone until both merge), never 0 while the shaft is
 // already cut off from the far field.
-TEST_CASE("A double ring's thinnest wall is positive from closure on", "[results]") {
+TEST_CASE("A double ring's thinnest wall is positive from closure on", "[freezing][results]") {
   test::TempDir dir("frostwall-four-hole");
   auto p = test::shipped_project(
       "four_hole_sand.json",

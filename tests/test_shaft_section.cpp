@@ -31,7 +31,7 @@ json coarse(double spacing, double end_days, const json& extra = json::object())
 // the discretisation error. (A full ring on a lattice of its own differs
 // by the lattice-placement error around each pipe: about 1.6 K near the
 // fronts at 0.1 m, and falls with the spacing.)
-TEST_CASE("Single ring: the symmetric wedge and the full ring agree", "[shaft]") {
+TEST_CASE("Single ring: the symmetric wedge and the full ring agree", "[freezing][shaft]") {
   const double end = 10 * 86400.0;
   auto wedge = freezing::build_model(test::shipped_project("single_ring_sand.json", coarse(0.1, 10)));
   auto full = freezing::build_model(
@@ -66,7 +66,7 @@ TEST_CASE("Single ring: the symmetric wedge and the full ring agree", "[shaft]")
   CHECK(worst < 1e-6);
 }
 
-TEST_CASE("Single ring: wedge and full ring close on the same day", "[shaft]") {
+TEST_CASE("Single ring: wedge and full ring close on the same day", "[freezing][shaft]") {
   auto wedge = freezing::build_model(test::shipped_project("single_ring_sand.json", coarse(0.1, 25)));
   auto full = freezing::build_model(
       test::shipped_project("single_ring_sand.json", coarse(0.1, 25, {{"numerics", {{"symmetry", "off"}}}})));
@@ -82,7 +82,7 @@ TEST_CASE("Single ring: wedge and full ring close on the same day", "[shaft]") {
 // Heat drawn by the pipes plus heat through the far field equals the change
 // of the stored enthalpy: the boundary pairs and the state are accounted
 // independently, so a leak (a mirror image missing its partner) shows.
-TEST_CASE("Shaft section: pipes + far field = change of stored heat", "[shaft][energy]") {
+TEST_CASE("Shaft section: pipes + far field = change of stored heat", "[freezing][shaft][energy]") {
   // On the lattice (explicit) and on a graded cloud with the default integrator.
   const bool graded = GENERATE(false, true);
   auto m = freezing::build_model(test::shipped_project(
@@ -105,7 +105,7 @@ TEST_CASE("Shaft section: pipes + far field = change of stored heat", "[shaft][e
 // converged finite-element solution; the paper's 40 days used point pipes
 // at an unstated spacing), clay later than sand (lower diffusivity and more
 // latent heat), and the denser layouts first: four-hole, three-hole, single.
-TEST_CASE("Shaft layouts close in the expected order and time", "[shaft][sanity]") {
+TEST_CASE("Shaft layouts close in the expected order and time", "[freezing][shaft][sanity]") {
   const double spacing = 0.05, end = 30.0;
   auto closure = [&](const std::string& project, const json& extra = json::object()) {
     auto m = freezing::build_model(test::shipped_project(project, coarse(spacing, end, extra)));
@@ -140,7 +140,7 @@ TEST_CASE("Shaft layouts close in the expected order and time", "[shaft][sanity]
 // definition, which they reproduce to 0.004 d over three meshes. Tolerance:
 // 1 %, and 0.02 d for the four-hole (closed after about a day, when its
 // inner ring of 52 pipes joins).
-TEST_CASE("Shipped shaft projects close within 1 % of two independent solvers", "[shaft][verification]") {
+TEST_CASE("Shipped shaft projects close within 1 % of two independent solvers", "[freezing][shaft][verification]") {
   struct Case {
     const char* project;
     double reference_days, tolerance_days;

@@ -87,15 +87,15 @@ void check_single_pipe(const std::string& integrator, const std::string& placeme
 
 }  // namespace
 
-TEST_CASE("One pipe alone: a circular front at the radial solution's radius", "[shaft][single_pipe]") {
+TEST_CASE("One pipe alone: a circular front at the radial solution's radius", "[freezing][shaft][single_pipe]") {
   check_single_pipe("rkl2");  // the default integrator
 }
 
-TEST_CASE("One pipe alone on a graded cloud (finest spacing at the pipe)", "[shaft][single_pipe][graded]") {
+TEST_CASE("One pipe alone on a graded cloud (finest spacing at the pipe)", "[freezing][shaft][single_pipe][graded]") {
   check_single_pipe("rkl2", "graded");
 }
 
-TEST_CASE("One pipe alone, explicit integrator (the paper's)", "[shaft][single_pipe][long]") {
+TEST_CASE("One pipe alone, explicit integrator (the paper's)", "[freezing][shaft][single_pipe][long]") {
   check_single_pipe("explicit");
 }
 
@@ -103,7 +103,7 @@ TEST_CASE("One pipe alone, explicit integrator (the paper's)", "[shaft][single_p
 // ray) and the front curve written to interface_XXXX.vtp (isoline on the
 // Delaunay triangulation) are two independent measures of one front: for a
 // single pipe both give its radius, within a fraction of the spacing.
-TEST_CASE("One pipe alone: the OA extent matches the radius of the front curve", "[results][single_pipe]") {
+TEST_CASE("One pipe alone: the OA extent matches the radius of the front curve", "[freezing][results][single_pipe]") {
   const double spacing = 0.04;
   test::TempDir dir("frostwall-pipe");
   json patch = single_pipe(spacing, 10.0);

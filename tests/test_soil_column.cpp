@@ -14,7 +14,7 @@
 
 using namespace frostwall;
 
-TEST_CASE("Soil column: steady frozen front at the flux-balance depth", "[verification][soil_column]") {
+TEST_CASE("Soil column: steady frozen front at the flux-balance depth", "[freezing][verification][soil_column]") {
   const auto soil = *project::builtin_soil("silty_clay");
   const double Ttop = -5.0, Tbot = 1.0, Hc = 0.20;
   const double ks = soil.frozen.conductivity[0], kl = soil.unfrozen.conductivity[0], Tf = soil.freezing_point;

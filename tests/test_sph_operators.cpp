@@ -23,7 +23,7 @@
 using namespace frostwall;
 using particles::Vec;
 
-TEST_CASE("Kernels are normalised and their derivative is consistent", "[sph]") {
+TEST_CASE("Kernels are normalised and their derivative is consistent", "[freezing][sph]") {
   const sph::WendlandC2<2> wendland;
   const sph::CubicSpline<2> spline;
   for (const sph::Kernel* k : {static_cast<const sph::Kernel*>(&wendland), static_cast<const sph::Kernel*>(&spline)}) {
@@ -45,7 +45,7 @@ TEST_CASE("Kernels are normalised and their derivative is consistent", "[sph]") 
   }
 }
 
-TEST_CASE("Cell list finds the same neighbours as brute force", "[sph]") {
+TEST_CASE("Cell list finds the same neighbours as brute force", "[freezing][sph]") {
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> u(-1.0, 3.0);
   std::vector<Vec<2>> points(2000);
@@ -77,7 +77,7 @@ particles::ParticleSet<2> insulated_square(int n) {
 }
 }  // namespace
 
-TEST_CASE("Mirror images: a corner particle sees its three images", "[sph]") {
+TEST_CASE("Mirror images: a corner particle sees its three images", "[freezing][sph]") {
   const auto P = insulated_square(10);
   const double reach = 0.15;  // the double image of the corner particle (0.05, 0.05) is 0.141 away
   const auto images = particles::mirror_images(P, reach);
@@ -87,7 +87,7 @@ TEST_CASE("Mirror images: a corner particle sees its three images", "[sph]") {
   CHECK(of_corner == 3);  // across x = 0, across y = 0, and across both
 }
 
-TEST_CASE("Mirror images: each particle's own reach bounds how far beyond a plane its images go", "[sph]") {
+TEST_CASE("Mirror images: each particle's own reach bounds how far beyond a plane its images go", "[freezing][sph]") {
   // Own reach 1.5 spacings for the left half of the square, 3 for the right:
   // the images kept are those of the full list that lie no further than
   // their source's own reach beyond every plane, no more, no fewer.
@@ -109,7 +109,7 @@ TEST_CASE("Mirror images: each particle's own reach bounds how far beyond a plan
   for (std::size_t k = 0; k < some.position.size(); ++k) CHECK(beyond(some.position[k]) <= own[some.source[k]]);
 }
 
-TEST_CASE("Renormalised Laplacian is exact for a quadratic field on a lattice", "[sph]") {
+TEST_CASE("Renormalised Laplacian is exact for a quadratic field on a lattice", "[freezing][sph]") {
   // Interior particles of a large lattice (far from the mirrors): apply the
   // operator with k_ij = 2 (unit conductivity) to T = x^2 + 3 y^2.
   const int n = 40;
@@ -137,7 +137,7 @@ TEST_CASE("Renormalised Laplacian is exact for a quadratic field on a lattice", 
   }
 }
 
-TEST_CASE("Moment-corrected Laplacian is exact for linear and quadratic fields on an irregular cloud", "[sph]") {
+TEST_CASE("Moment-corrected Laplacian is exact for linear and quadratic fields on an irregular cloud", "[freezing][sph]") {
   // The lattice shaken by up to a tenth of a spacing: the kernel sums' odd
   // moments no longer vanish, so the renormalised weights alone see a
   // gradient where there is none. Exact answers at interior particles, with
@@ -206,7 +206,7 @@ sph::MomentSystem<2> shaken_square_system(int m) {
 }
 }  // namespace
 
-TEST_CASE("Two-level block CG agrees with a direct solve, and its iterations do not grow with the cloud", "[sph]") {
+TEST_CASE("Two-level block CG agrees with a direct solve, and its iterations do not grow with the cloud", "[freezing][sph]") {
   int iterations[2];
   const int sizes[2] = {30, 90};
   for (int s = 0; s < 2; ++s) {

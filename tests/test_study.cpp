@@ -66,7 +66,7 @@ std::vector<std::string> problems_of(const test::TempDir& dir, const std::string
 
 }  // namespace
 
-TEST_CASE("A product of parameter lists expands to every combination, last parameter fastest", "[study]") {
+TEST_CASE("A product of parameter lists expands to every combination, last parameter fastest", "[shared][study]") {
   test::TempDir dir("frostwall-study");
   const auto s = parse(dir, R"({ "name": "S", "base": "base.json", "output": { "directory": "out/s" },
     "product": [ { "path": "soil", "values": ["sand", "clay"] },
@@ -87,7 +87,7 @@ TEST_CASE("A product of parameter lists expands to every combination, last param
   CHECK(s.base == dir.path / "base.json");
 }
 
-TEST_CASE("Named overrides merge into the base and multiply with the product", "[study]") {
+TEST_CASE("Named overrides merge into the base and multiply with the product", "[shared][study]") {
   test::TempDir dir("frostwall-study");
   const auto s = parse(dir, R"({ "name": "S", "base": "base.json", "output": { "directory": "o" },
     "patch": { "time": { "end": 20 } },
@@ -114,7 +114,7 @@ TEST_CASE("Named overrides merge into the base and multiply with the product", "
   CHECK(s.thickness_day == 12.0);
 }
 
-TEST_CASE("Paths: dotted with indices, or JSON pointers", "[study]") {
+TEST_CASE("Paths: dotted with indices, or JSON pointers", "[shared][study]") {
   std::string error;
   CHECK(study::parse_path("layout.rings[1].radius", error)->to_string() == "/layout/rings/1/radius");
   CHECK(study::parse_path("/pipe/temperature", error)->to_string() == "/pipe/temperature");
@@ -127,7 +127,7 @@ TEST_CASE("Paths: dotted with indices, or JSON pointers", "[study]") {
   CHECK_THROWS_AS(study::merge_at(doc, json::json_pointer("/a/x"), 3), std::invalid_argument);
 }
 
-TEST_CASE("A bad study file is refused with one line per problem, naming the JSON path", "[study]") {
+TEST_CASE("A bad study file is refused with one line per problem, naming the JSON path", "[shared][study]") {
   test::TempDir dir("frostwall-study-bad");
   const std::string head = R"("name": "S", "base": "base.json", "output": { "directory": "o" })";
   CHECK(problems_of(dir, "{ " + head + " }") ==
@@ -156,7 +156,7 @@ TEST_CASE("A bad study file is refused with one line per problem, naming the JSO
   CHECK(problems_of(dir, "[1]") == std::vector<std::string>{"study: must be a JSON object, got array"});
 }
 
-TEST_CASE("frostwall study with a bad study file exits 2 and writes nothing", "[study][cli]") {
+TEST_CASE("frostwall study with a bad study file exits 2 and writes nothing", "[shared][study][cli]") {
   test::TempDir dir("frostwall-study-cli");
   std::ofstream(dir.path / "bad.json") << R"({ "name": "S", "base": "nowhere.json", "output": { "directory": "out" },
                                              "variants": [ { "name": "a", "patch": {} } ] })";
@@ -167,7 +167,7 @@ TEST_CASE("frostwall study with a bad study file exits 2 and writes nothing", "[
   CHECK_FALSE(fs::exists(dir.path / "out"));
 }
 
-TEST_CASE("A variant that fails is reported failed while the others complete", "[study][cli]") {
+TEST_CASE("A variant that fails is reported failed while the others complete", "[shared][study][cli]") {
   test::TempDir dir("frostwall-study-fail");
   json s = {{"name", "One bad variant"},
             {"base", (projects / "single_ring_sand.json").string()},
@@ -196,7 +196,7 @@ TEST_CASE("A variant that fails is reported failed while the others complete", "
   CHECK(html.find("{{") == std::string::npos);
 }
 
-TEST_CASE("The shipped layout study, run coarse, ranks four-hole, three-hole, single", "[study]") {
+TEST_CASE("The shipped layout study, run coarse, ranks four-hole, three-hole, single", "[shared][study]") {
   test::TempDir dir("frostwall-study-layouts");
   json s = json::parse(read(projects / "study_layouts.json"));
   // Coarse and short: the order of closure already shows by day 20.

@@ -54,7 +54,7 @@ PointCloudFrame make_frame(std::size_t n) {
 
 }  // namespace
 
-TEST_CASE("write_vtu round-trips points, vertex cells and fields", "[io]") {
+TEST_CASE("write_vtu round-trips points, vertex cells and fields", "[shared][io]") {
   TempDir dir;
   const std::size_t n = 1000;
   const auto frame = make_frame(n);
@@ -91,7 +91,7 @@ TEST_CASE("write_vtu round-trips points, vertex cells and fields", "[io]") {
   CHECK(volume->GetTuple1(999) == frame.fields[1].second[999]);
 }
 
-TEST_CASE("write_vtu overwrites an existing file", "[io]") {
+TEST_CASE("write_vtu overwrites an existing file", "[shared][io]") {
   TempDir dir;
   const fs::path file = dir.path / "frame.vtu";
   write_vtu(file, make_frame(10));
@@ -104,7 +104,7 @@ TEST_CASE("write_vtu overwrites an existing file", "[io]") {
   CHECK_FALSE(has_temporaries(dir.path));
 }
 
-TEST_CASE("write_vtu rejects a field whose size differs from the point count", "[io]") {
+TEST_CASE("write_vtu rejects a field whose size differs from the point count", "[shared][io]") {
   TempDir dir;
   auto frame = make_frame(100);
   frame.fields[1].second.pop_back();
@@ -114,7 +114,7 @@ TEST_CASE("write_vtu rejects a field whose size differs from the point count", "
   CHECK_FALSE(has_temporaries(dir.path));
 }
 
-TEST_CASE("write_pvd lists every dataset with its time and file", "[io]") {
+TEST_CASE("write_pvd lists every dataset with its time and file", "[shared][io]") {
   TempDir dir;
   const std::vector<PvdEntry> entries = {
       {0.0, "frame_0000.vtu"}, {0.1, "frame_0001.vtu"}, {86400.5, "frame_0002.vtu"}};
@@ -143,7 +143,7 @@ TEST_CASE("write_pvd lists every dataset with its time and file", "[io]") {
   }
 }
 
-TEST_CASE("write_atomically leaves nothing behind when the writer throws", "[io]") {
+TEST_CASE("write_atomically leaves nothing behind when the writer throws", "[shared][io]") {
   TempDir dir;
   const fs::path file = dir.path / "out.txt";
   fs::path seen_tmp;
@@ -161,7 +161,7 @@ TEST_CASE("write_atomically leaves nothing behind when the writer throws", "[io]
   CHECK_FALSE(has_temporaries(dir.path));
 }
 
-TEST_CASE("a failed rewrite keeps the previous file intact", "[io]") {
+TEST_CASE("a failed rewrite keeps the previous file intact", "[shared][io]") {
   TempDir dir;
   const fs::path file = dir.path / "out.txt";
   write_text_file(file, "old\n");
@@ -172,7 +172,7 @@ TEST_CASE("a failed rewrite keeps the previous file intact", "[io]") {
   CHECK_FALSE(has_temporaries(dir.path));
 }
 
-TEST_CASE("write_text_file reports a path it cannot write", "[io]") {
+TEST_CASE("write_text_file reports a path it cannot write", "[shared][io]") {
   TempDir dir;
   const fs::path file = dir.path / "missing-dir" / "out.txt";
   try {
@@ -183,7 +183,7 @@ TEST_CASE("write_text_file reports a path it cannot write", "[io]") {
   }
 }
 
-TEST_CASE("write_vtu throws when VTK cannot write the file", "[io]") {
+TEST_CASE("write_vtu throws when VTK cannot write the file", "[shared][io]") {
   TempDir dir;
   const fs::path file = dir.path / "missing-dir" / "frame.vtu";
   // VTK reports the failure on stderr as well; silence it for this check.

@@ -45,7 +45,7 @@ std::vector<double> field_at(const particles::ParticleSet<2>& P, F&& f) {
 
 }  // namespace
 
-TEST_CASE("Shepard sampler: linear field exact at lattice-symmetric points", "[wall]") {
+TEST_CASE("Shepard sampler: linear field exact at lattice-symmetric points", "[freezing][wall]") {
   const int n = 40;
   const double d = 1.0 / n, h = smoothing_ratio * d;
   const auto P = lattice(n, n, d);
@@ -87,7 +87,7 @@ TEST_CASE("Shepard sampler: linear field exact at lattice-symmetric points", "[w
   }
 }
 
-TEST_CASE("Shepard sampler near a mirror plane: a symmetric field as in the interior", "[wall]") {
+TEST_CASE("Shepard sampler near a mirror plane: a symmetric field as in the interior", "[freezing][wall]") {
   const sph::WendlandC2<2> kernel;
   // Error of y^2 sampled at height s*d above the plane y = 0 (lattice rows
   // half a spacing off it, so the images continue the lattice), against the
@@ -131,7 +131,7 @@ TEST_CASE("Shepard sampler near a mirror plane: a symmetric field as in the inte
                                         [](double a, double b) { return std::abs(a) < std::abs(b); })));
 }
 
-TEST_CASE("Field sampler and point probe agree with a brute-force sum over all images", "[wall]") {
+TEST_CASE("Field sampler and point probe agree with a brute-force sum over all images", "[freezing][wall]") {
   // A 20 x 20 square insulated on all four sides: images across each side
   // and across each corner (both reflections), written out by hand.
   const int n = 20;
@@ -194,7 +194,7 @@ double band(double r, double inner, double outer, double ramp) {
 }
 }  // namespace
 
-TEST_CASE("Frozen stretch of a ray: analytic band, linear interpolation of the crossings", "[wall]") {
+TEST_CASE("Frozen stretch of a ray: analytic band, linear interpolation of the crossings", "[freezing][wall]") {
   // Samples every 0.013 (not aligned with the band), so the nearest sample
   // would be off by up to 0.0065; interpolation between the two samples on
   // the ramp is exact.
@@ -248,7 +248,7 @@ TEST_CASE("Frozen stretch of a ray: analytic band, linear interpolation of the c
   }
 }
 
-TEST_CASE("Mean temperature over the frozen stretch: exact for T linear in r", "[wall]") {
+TEST_CASE("Mean temperature over the frozen stretch: exact for T linear in r", "[freezing][wall]") {
   std::vector<double> r, f, T;
   for (double x = 3.0; x <= 7.0; x += 0.013) r.push_back(x);
   for (double x : r) {
@@ -266,7 +266,7 @@ TEST_CASE("Mean temperature over the frozen stretch: exact for T linear in r", "
   CHECK_FALSE(post::mean_over_frozen(r, f, T, post::frozen_stretch(r, f, 6.5)).has_value());
 }
 
-TEST_CASE("Ray fan: rays one spacing apart at the ring, first on OA, last on OB", "[wall]") {
+TEST_CASE("Ray fan: rays one spacing apart at the ring, first on OA, last on OB", "[freezing][wall]") {
   const double angle = std::numbers::pi / 13, R = 5.0, d = 0.02;
   const int K = post::RayFan::rays_needed(angle, R, d);
   CHECK(angle * R / (K - 1) <= d);
@@ -311,7 +311,7 @@ double polar_in_wedge(const Vec2& x, double start_angle) {
 
 }  // namespace
 
-TEST_CASE("Wall extents on a wedge lattice: thinnest section of an analytic frozen band", "[wall]") {
+TEST_CASE("Wall extents on a wedge lattice: thinnest section of an analytic frozen band", "[freezing][wall]") {
   // A frozen band around the ring r = R of half width w(theta), mirror
   // symmetric about both sides (w' = 0 there). Single ring: thinnest on OB.
   // Double ring or measured pipes: thinnest inside the wedge, missed by OA
@@ -397,7 +397,7 @@ TEST_CASE("Wall extents on a wedge lattice: thinnest section of an analytic froz
 // contains a ring radius. The inner ring's stretch alone while the two are
 // apart (even when the outer one is thicker: the longest wins); one stretch
 // over both once they merge; none when neither ring radius is frozen.
-TEST_CASE("frozen_stretch: the longest stretch containing a ring of a double ring", "[wall]") {
+TEST_CASE("frozen_stretch: the longest stretch containing a ring of a double ring", "[freezing][wall]") {
   // Samples every 0.01 m; the frozen stretches end halfway between two
   // samples, where the piecewise-linear interpolant crosses 0.5.
   std::vector<double> r;

@@ -10,7 +10,7 @@
 
 using namespace frostwall::design;
 
-TEST_CASE("Wall thickness formulas match hand values", "[design]") {
+TEST_CASE("Wall thickness formulas match hand values", "[freezing][design]") {
   // a = 3.5 m, P = 2.6 MPa, s = 5 MPa (issue 18): P / s = 0.52.
   CHECK(required_thickness(Formula::domke, 3.5, 2.6, 5.0).value() == Approx(2.70).margin(0.005));
   CHECK(required_thickness(Formula::plastic_tresca, 3.5, 2.6, 5.0).value() == Approx(2.39).margin(0.005));
@@ -25,7 +25,7 @@ TEST_CASE("Wall thickness formulas match hand values", "[design]") {
   CHECK_FALSE(required_thickness(Formula::plastic_mohr_coulomb, 3.5, 1.3, 8.0).has_value());
 }
 
-TEST_CASE("The Lame walls carry the pressure they were sized for", "[design]") {
+TEST_CASE("The Lame walls carry the pressure they were sized for", "[freezing][design]") {
   // Elastic thick cylinder, outer pressure P, inner face free: the hoop
   // stress at the inner face is 2 P b^2 / (b^2 - a^2), the radial one 0.
   // Tresca's stress difference there is the hoop stress; von Mises' stress
@@ -40,7 +40,7 @@ TEST_CASE("The Lame walls carry the pressure they were sized for", "[design]") {
   CHECK(std::sqrt(3.0) / 2.0 * hoop(Formula::lame_mises) == Approx(s).epsilon(1e-12));
 }
 
-TEST_CASE("A colder wall needs less thickness, on every formula", "[design]") {
+TEST_CASE("A colder wall needs less thickness, on every formula", "[freezing][design]") {
   const auto law = StrengthLaw::power(1.5, 0.8, 0.9);  // illustrative
   const MohrCoulomb mc_warm{0.5 * 0.5 * law.at(-5.0), 15.0}, mc_cold{0.5 * 0.5 * law.at(-15.0), 15.0};
   for (Formula f : all_formulas) {
@@ -53,7 +53,7 @@ TEST_CASE("A colder wall needs less thickness, on every formula", "[design]") {
   }
 }
 
-TEST_CASE("Mohr-Coulomb's plastic limit: Tresca without friction, thinner with it", "[design]") {
+TEST_CASE("Mohr-Coulomb's plastic limit: Tresca without friction, thinner with it", "[freezing][design]") {
   const double a = 3.5, P = 2.0, c = 1.5;
   const MohrCoulomb frictionless{c, 0.0}, rough{c, 20.0};
   CHECK(required_thickness(Formula::plastic_mohr_coulomb, a, P, 1.0, &frictionless).value() ==
@@ -71,7 +71,7 @@ TEST_CASE("Mohr-Coulomb's plastic limit: Tresca without friction, thinner with i
   CHECK(sigma_c / (N - 1.0) * (std::pow(b / a, N - 1.0) - 1.0) == Approx(P).epsilon(1e-12));
 }
 
-TEST_CASE("Strength laws: table, linear and power, and a table must not weaken as it gets colder", "[design]") {
+TEST_CASE("Strength laws: table, linear and power, and a table must not weaken as it gets colder", "[freezing][design]") {
   const auto table = StrengthLaw::table({{-20.0, 9.0}, {-2.0, 2.0}, {-10.0, 6.0}});
   CHECK(table.at(-10.0) == Approx(6.0));
   CHECK(table.at(-6.0) == Approx(4.0));    // halfway between -10 and -2

@@ -37,6 +37,8 @@ using Formula = project::WallFormula;
 inline constexpr std::array<Formula, 5> all_formulas = {Formula::lame_tresca, Formula::lame_mises, Formula::domke,
                                                         Formula::plastic_tresca, Formula::plastic_mohr_coulomb};
 using project::name;  // the formula's name in the project file
+using project::StrengthLaw;
+using project::table_problem;
 
 // Mohr-Coulomb parameters of the frozen soil (the cohesion at the wall's
 // mean temperature, MPa, already times the allowable factor).

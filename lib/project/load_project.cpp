@@ -304,9 +304,8 @@ Project read_project(const Node& root) {
         if (!numerics["step_change"].present()) project.numerics.step_change = 0.25;
       }
       project.warnings.push_back(
-          "groundwater: the coupling is new (issue 17 in progress): beside frozen ground the flow is 7-9 % off, "
-          "not the 2 % asked, and a full-size run takes more than an hour (the coupled step's Newton "
-          "iterations on the half section the flow leaves)");
+          "groundwater: a full-size run under flow takes one to two hours on two cores, and beside frozen ground "
+          "the Darcy flux is 7-9 % off (docs/groundwater.md, Limits)");
     }
   }
   detail::read_pore_settings(root, project);
