@@ -19,6 +19,13 @@ using nlohmann::json;
 namespace detail {
 
 std::string number(double v, int decimals) { return std::isfinite(v) ? tick_label(v, decimals) : "–"; }
+
+double smoothing_length(const json& run_facts) {
+  const auto h = run_facts.find("smoothing_length");
+  if (h == run_facts.end() || !h->is_number() || h->get<double>() <= 0.0)
+    throw std::runtime_error("summary.json: run.smoothing_length is missing; it is needed to draw the maps");
+  return h->get<double>();
+}
 std::string number(const json& v, int decimals) { return v.is_number() ? number(v.get<double>(), decimals) : "–"; }
 
 namespace {

@@ -109,7 +109,7 @@ void add_frost_maps(const RunRecord& run, const std::string& unit, json& view) {
   }
   const json facts = run.summary.value("run", json::object());
   const auto& first = snapshots.front().second.particles;
-  const double spacing = facts.value("spacing", 0.0), h = facts.value("smoothing_length", 1.3 * spacing);
+  const double spacing = facts.value("spacing", 0.0), h = smoothing_length(facts);
   // A square window over the plate (its particles' extent).
   particles::Vec<2> a = first.position.front(), b = a;
   for (const auto& x : first.position) a = a.cwiseMin(x), b = b.cwiseMax(x);

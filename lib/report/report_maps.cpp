@@ -63,7 +63,7 @@ void add_maps(const RunRecord& run, json& view) {
     return;
   }
   const auto& facts = run.summary["run"];
-  const double spacing = facts.value("spacing", 0.0), h = facts.value("smoothing_length", 1.3 * spacing);
+  const double spacing = facts.value("spacing", 0.0), h = smoothing_length(facts);
   const std::string kernel = facts.value("kernel", "wendland_c2");
   const WedgeSymmetry symmetry = wedge_of(run.summary);
 

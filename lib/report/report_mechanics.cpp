@@ -45,7 +45,7 @@ void add_mechanics(const RunRecord& run, json& view) {
   if (snapshots.empty() || snapshots.front().second.damage.empty() || !run.project) return;
   const auto* rect = std::get_if<project::Rectangle>(&run.project->geometry);
   if (!rect) return;
-  const double spacing = facts.value("spacing", 0.0), h = facts.value("smoothing_length", 1.3 * spacing);
+  const double spacing = facts.value("spacing", 0.0), h = smoothing_length(facts);
   const std::string unit = facts.value("time_unit", "s");
   MapWindow window;
   window.pixels = 300;

@@ -22,6 +22,11 @@ struct RunRecord {
 };
 
 // "1.23" with a true minus sign; "–" for null/NaN.
+// The run's smoothing length (summary.json run.smoothing_length, m): the
+// maps sample the particles' fields with the run's own kernel width.
+// Throws std::runtime_error when the summary lacks it.
+double smoothing_length(const nlohmann::json& run_facts);
+
 std::string number(double v, int decimals);
 std::string number(const nlohmann::json& v, int decimals);
 
