@@ -137,7 +137,7 @@ int study_command(const std::string& file, int jobs, int threads) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"frostwall: design of artificial ground freezing (SPH heat conduction with latent heat)"};
+  CLI::App app{"frostwall: ground that freezes, cracks and washes away (freezing, PD mechanics and CFD-DEM engines)"};
   app.require_subcommand(1);
   auto* run = app.add_subcommand("run", "run a project file and write its results");
   std::string project_file;

@@ -6,6 +6,8 @@
 // A key added to a loader without its entry fails here.
 #include <catch2/catch.hpp>
 
+#include "text_file.hpp"
+
 #include <filesystem>
 #include <fstream>
 #include <regex>
@@ -17,12 +19,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string read(const fs::path& file) {
-  std::ifstream in(file);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+using frostwall::test::read_text;
 
 // The keys the loaders read, with the file that reads each.
 std::set<std::pair<std::string, std::string>> accepted_keys() {
@@ -34,7 +31,7 @@ std::set<std::pair<std::string, std::string>> accepted_keys() {
       read_key(R"re(\[\s*"([A-Za-z_][A-Za-z0-9_]*)"\s*\])re"), ring_angle(R"re(read_ring\([^,]+,\s*"([A-Za-z_]+)")re");
   std::set<std::pair<std::string, std::string>> keys;
   for (const auto& file : loaders) {
-    const std::string text = read(file), name = file.filename().string();
+    const std::string text = read_text(file), name = file.filename().string();
     for (auto it = std::sregex_iterator(text.begin(), text.end(), list); it != std::sregex_iterator(); ++it) {
       const std::string inside = (*it)[1];
       for (auto k = std::sregex_iterator(inside.begin(), inside.end(), literal); k != std::sregex_iterator(); ++k)
@@ -53,7 +50,7 @@ std::set<std::string> documented_keys() {
   const std::regex heading(R"(\n### `([^`]+)`)");
   for (const auto& f : fs::directory_iterator(fs::path(FROSTWALL_SOURCE_DIR) / "docs" / "reference")) {
     if (f.path().extension() != ".md") continue;
-    const std::string text = "\n" + read(f.path());
+    const std::string text = "\n" + read_text(f.path());
     for (auto it = std::sregex_iterator(text.begin(), text.end(), heading); it != std::sregex_iterator(); ++it) {
       std::string path = (*it)[1];
       while (path.size() > 2 && path.ends_with("[]")) path.resize(path.size() - 2);

@@ -5,6 +5,8 @@
 // in lib/ names its own folder or one it may reach.
 #include <catch2/catch.hpp>
 
+#include "text_file.hpp"
+
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -18,12 +20,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string read(const fs::path& file) {
-  std::ifstream in(file);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+using frostwall::test::read_text;
 
 struct Layer {
   std::string name;
@@ -32,7 +29,7 @@ struct Layer {
 
 // frostwall_layer(NAME ... DEPENDS a b c [LIBS ...] [PRIVATE_LIBS ...]), in file order.
 std::vector<Layer> declared_layers() {
-  const std::string text = read(fs::path(FROSTWALL_SOURCE_DIR) / "lib" / "CMakeLists.txt");
+  const std::string text = read_text(fs::path(FROSTWALL_SOURCE_DIR) / "lib" / "CMakeLists.txt");
   std::vector<Layer> layers;
   const std::regex call(R"(\nfrostwall_layer\(([^)]*)\))");
   for (auto it = std::sregex_iterator(text.begin(), text.end(), call); it != std::sregex_iterator(); ++it) {
@@ -77,7 +74,7 @@ TEST_CASE("The layers hold: lib/ includes only downward, as lib/CMakeLists.txt d
     INFO("folder lib/" << name);
     REQUIRE(reach.count(name) == 1);
     for (const auto& file : fs::directory_iterator(folder)) {
-      const std::string text = read(file.path());
+      const std::string text = read_text(file.path());
       for (auto it = std::sregex_iterator(text.begin(), text.end(), include); it != std::sregex_iterator(); ++it) {
         const std::string target = (*it)[1];
         if (!fs::is_directory(lib / target)) continue;  // a system header in a subfolder

@@ -132,6 +132,88 @@ void write_fluid(const fs::path& file, const pore_water::FluidGrid& grid) {
   io::write_vti(file, frame);
 }
 
+// What the flow after settling leaves: the series, the soil record, the
+// grains lost and the snapshot files.
+struct FlowRecord {
+  CfdDemResults results;
+  SoilRecord soil_record;
+  double lost_cavity = 0.0, lost_outflow = 0.0, start_volume = -1.0;
+  std::vector<io::PvdEntry> grain_pvd, fluid_pvd;
+};
+
+// The coupled steps to the end time: a sample 200 times, the snapshots on
+// their times, and the grains that leave counted after every chunk.
+void run_flow(const project::Project& p, dem::LammpsSession& lammps, CfdDemCoupling& coupling, const SoilWatch& soil,
+              double dt, int interval, long total_steps, const fs::path& out,
+              const std::function<void(double, double)>& progress, FlowRecord& rec) {
+  const auto& c = *p.cfd_dem;
+  const bool root = lammps.rank() == 0;
+  std::vector<double> samples;
+  for (int k = 0; k <= 200; ++k) samples.push_back(p.time.end * k / 200.0);
+  const auto& snapshots = p.time.snapshots;
+  std::size_t next_sample = 0, next_snapshot = 0;
+  long step = 0;
+  while (true) {
+    const double t = step * dt;
+    const double u = c.flow ? c.flow->velocity_at(t) : 0.0;
+    const pore_water::SolveReport report = coupling.update(u);
+    const bool last = step >= total_steps;
+    const bool is_sample = next_sample < samples.size() && t >= samples[next_sample] - 0.5 * dt;
+    const bool is_snapshot = next_snapshot < snapshots.size() && (t >= snapshots[next_snapshot] - 0.5 * dt || last);
+    if (is_sample || is_snapshot || last) {
+      const auto totals = coupling.totals();
+      if (rec.start_volume < 0.0) rec.start_volume = totals.volume;
+      rec.results.add(rec.results.sample(t, u, totals, coupling.grid(), report), is_snapshot);
+      rec.soil_record.add(
+          {t, totals.count - totals.in_cavity, rec.lost_cavity, rec.lost_outflow, totals.contacts, soil.measure(coupling)},
+          is_snapshot);
+      while (next_sample < samples.size() && samples[next_sample] <= t + 0.5 * dt) ++next_sample;
+    }
+    if (is_snapshot) {
+      const std::string stem = fmt::format("{:04d}", next_snapshot + 1);
+      if (p.output.vtk) {
+        write_grains(out / ("grains_" + stem + ".vtu"), lammps, coupling, soil);
+        if (root) write_fluid(out / ("fluid_" + stem + ".vti"), coupling.grid());
+        rec.grain_pvd.push_back({t, "grains_" + stem + ".vtu"});
+        rec.fluid_pvd.push_back({t, "fluid_" + stem + ".vti"});
+      }
+      ++next_snapshot;
+    }
+    if (progress && root) progress(std::min(t, p.time.end), p.time.end);
+    if (last) break;
+    long steps = std::min<long>(interval, total_steps - step);
+    // A snapshot lands on its time: the chunk before it is cut short.
+    if (next_snapshot < snapshots.size()) {
+      const long to_snapshot = std::lround(std::ceil((snapshots[next_snapshot] - t) / dt - 1e-9));
+      if (to_snapshot >= 1) steps = std::min(steps, to_snapshot);
+    }
+    const long before = lammps.grain_count();
+    coupling.advance(steps);
+    step += steps;
+    // Grains gone through an open outflow face, then those fallen into the
+    // cavity (the leak carries them away: deleted).
+    const long after_run = lammps.grain_count();
+    if (c.cavity) lammps.command(dem::delete_in_cavity);
+    rec.lost_outflow += static_cast<double>(before - after_run);
+    rec.lost_cavity += static_cast<double>(after_run - lammps.grain_count());
+  }
+}
+
+// The set-up as LAMMPS input (runs and the cache's write_data left out):
+// `lmp -in dem_commands.txt` rebuilds the assembly from this directory's
+// working directory.
+std::string dem_commands(const dem::LammpsSession& lammps, const project::CfdDem& c, int interval, long total_steps) {
+  std::string commands = fmt::format("# frostwall {}: the LAMMPS commands of this run's grain assembly\n", FROSTWALL_VERSION);
+  for (const auto& line : lammps.commands())
+    if (!line.starts_with("run ") && !line.starts_with("write_data ") && line != dem::delete_in_cavity) commands += line + "\n";
+  commands += fmt::format("# then, every {} steps: the fluid grid is solved and each grain's fluid force set\n"
+                          "# (fix {} external, from frostwall), and `run {}` follows; {} steps in all.\n"
+                          "# To run the grains without the water: unfix {}\n{}",
+                          interval, dem::fluid_fix, interval, total_steps, dem::fluid_fix,
+                          c.cavity ? fmt::format("# after every run: {}\n", dem::delete_in_cavity) : "");
+  return commands;
+}
+
 }  // namespace
 
 void run_cfd_dem(const project::Project& p, const project::RunOptions& options) {
@@ -159,9 +241,7 @@ void run_cfd_dem(const project::Project& p, const project::RunOptions& options) 
     if (root && options.note) options.note(s);
   };
   const fs::path out = p.output.directory;
-  if (root) {
-    if (!options.project_text.empty()) io::write_text_file(out / "project.json", options.project_text);
-  }
+  if (root && !options.project_text.empty()) io::write_text_file(out / "project.json", options.project_text);
   const GrainSetup setup = set_up_grains(p, lammps, grains, out, dt, settle_interval, note);
   CfdDemCoupling coupling(c, lammps);
   lammps.command("run 0 post no");  // forces, neighbour lists and computes set up before anything reads them
@@ -173,61 +253,10 @@ void run_cfd_dem(const project::Project& p, const project::RunOptions& options) 
   // The run proper (after any settling) is what the rates are of.
   const auto flow_start = std::chrono::steady_clock::now();
   const double coupling_before = coupling.coupling_seconds();
-  CfdDemResults results(p);
+  FlowRecord rec{CfdDemResults(p), SoilRecord(c)};
   const SoilWatch soil(c, lammps);
-  SoilRecord soil_record(c);
-  double lost_cavity = 0.0, lost_outflow = 0.0, start_volume = -1.0;
-  std::vector<double> samples;
-  for (int k = 0; k <= 200; ++k) samples.push_back(p.time.end * k / 200.0);
-  const auto& snapshots = p.time.snapshots;
-  std::vector<io::PvdEntry> grain_pvd, fluid_pvd;
   const long total_steps = std::max(1L, std::lround(p.time.end / dt));
-  std::size_t next_sample = 0, next_snapshot = 0;
-  long step = 0;
-  pore_water::SolveReport report;
-  while (true) {
-    const double t = step * dt;
-    const double u = c.flow ? c.flow->velocity_at(t) : 0.0;
-    report = coupling.update(u);
-    const bool last = step >= total_steps;
-    const bool is_sample = next_sample < samples.size() && t >= samples[next_sample] - 0.5 * dt;
-    const bool is_snapshot = next_snapshot < snapshots.size() && (t >= snapshots[next_snapshot] - 0.5 * dt || last);
-    if (is_sample || is_snapshot || last) {
-      const auto totals = coupling.totals();
-      if (start_volume < 0.0) start_volume = totals.volume;
-      results.add(results.sample(t, u, totals, coupling.grid(), report), is_snapshot);
-      soil_record.add({t, totals.count - totals.in_cavity, lost_cavity, lost_outflow, totals.contacts, soil.measure(coupling)},
-                      is_snapshot);
-      while (next_sample < samples.size() && samples[next_sample] <= t + 0.5 * dt) ++next_sample;
-    }
-    if (is_snapshot) {
-      const std::string stem = fmt::format("{:04d}", next_snapshot + 1);
-      if (p.output.vtk) {
-        write_grains(out / ("grains_" + stem + ".vtu"), lammps, coupling, soil);
-        if (root) write_fluid(out / ("fluid_" + stem + ".vti"), coupling.grid());
-        grain_pvd.push_back({t, "grains_" + stem + ".vtu"});
-        fluid_pvd.push_back({t, "fluid_" + stem + ".vti"});
-      }
-      ++next_snapshot;
-    }
-    if (options.progress && root) options.progress(std::min(t, p.time.end), p.time.end);
-    if (last) break;
-    long steps = std::min<long>(interval, total_steps - step);
-    // A snapshot lands on its time: the chunk before it is cut short.
-    if (next_snapshot < snapshots.size()) {
-      const long to_snapshot = std::lround(std::ceil((snapshots[next_snapshot] - t) / dt - 1e-9));
-      if (to_snapshot >= 1) steps = std::min(steps, to_snapshot);
-    }
-    const long before = lammps.grain_count();
-    coupling.advance(steps);
-    step += steps;
-    // Grains gone through an open outflow face, then those fallen into the
-    // cavity (the leak carries them away: deleted).
-    const long after_run = lammps.grain_count();
-    if (c.cavity) lammps.command(dem::delete_in_cavity);
-    lost_outflow += static_cast<double>(before - after_run);
-    lost_cavity += static_cast<double>(after_run - lammps.grain_count());
-  }
+  run_flow(p, lammps, coupling, soil, dt, interval, total_steps, out, options.progress, rec);
 
   const auto now = std::chrono::steady_clock::now();
   const double wall = std::chrono::duration<double>(now - wall_start).count();
@@ -235,23 +264,12 @@ void run_cfd_dem(const project::Project& p, const project::RunOptions& options) 
   const double coupling_seconds = coupling.coupling_seconds() - coupling_before;
   if (!root) return;
   if (p.output.vtk) {
-    io::write_pvd(out / "grains.pvd", grain_pvd);
-    io::write_pvd(out / "fluid.pvd", fluid_pvd);
+    io::write_pvd(out / "grains.pvd", rec.grain_pvd);
+    io::write_pvd(out / "fluid.pvd", rec.fluid_pvd);
   }
-  // The set-up as LAMMPS input (runs and the cache's write_data left out):
-  // `lmp -in dem_commands.txt` rebuilds the assembly from this directory's
-  // working directory.
-  std::string commands = fmt::format("# frostwall {}: the LAMMPS commands of this run's grain assembly\n", FROSTWALL_VERSION);
-  for (const auto& line : lammps.commands())
-    if (!line.starts_with("run ") && !line.starts_with("write_data ") && line != dem::delete_in_cavity) commands += line + "\n";
-  commands += fmt::format("# then, every {} steps: the fluid grid is solved and each grain's fluid force set\n"
-                          "# (fix {} external, from frostwall), and `run {}` follows; {} steps in all.\n"
-                          "# To run the grains without the water: unfix {}\n{}",
-                          interval, dem::fluid_fix, interval, total_steps, dem::fluid_fix,
-                          c.cavity ? fmt::format("# after every run: {}\n", dem::delete_in_cavity) : "");
-  io::write_text_file(out / "dem_commands.txt", commands);
-  io::write_text_file(out / "series.csv", results.csv());
-  io::write_text_file(out / "soil.csv", soil_record.csv());
+  io::write_text_file(out / "dem_commands.txt", dem_commands(lammps, c, interval, total_steps));
+  io::write_text_file(out / "series.csv", rec.results.csv());
+  io::write_text_file(out / "soil.csv", rec.soil_record.csv());
   const json facts = {{"grains", lammps.grain_count()},
                       {"ranks", lammps.ranks()},
                       {"dem_timestep_s", dt},
@@ -264,8 +282,8 @@ void run_cfd_dem(const project::Project& p, const project::RunOptions& options) 
                       {"run_wall_time_s", flow_wall},  // after settling: the DEM steps counted in dem_steps
                       {"coupling_seconds", coupling_seconds},
                       {"coupling_share", flow_wall > 0 ? coupling_seconds / flow_wall : 0.0}};
-  auto summary = results.summary(facts);
-  summary["soil"] = soil_record.summary(packing_regime(c, std::max(0.0, start_volume)), soil.bins(), soil.initial_surface());
+  auto summary = rec.results.summary(facts);
+  summary["soil"] = rec.soil_record.summary(packing_regime(c, std::max(0.0, rec.start_volume)), soil.bins(), soil.initial_surface());
   io::write_text_file(out / "summary.json", summary.dump(2) + "\n");
 }
 

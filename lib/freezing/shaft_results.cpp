@@ -166,8 +166,9 @@ void ShaftResults::snapshot(double t, const thermal::ThermalModel& model, const 
   interface_.push_back(entry);
 }
 
-json ShaftResults::finish(const std::filesystem::path& out) const {
-  json result;
+// One entry per snapshot; with a strength check, each entry's check, and
+// `met` when and whether the wall carries the pressure.
+json ShaftResults::wall_entries(std::optional<DesignMet>& met) const {
   // ---- wall: one entry per snapshot
   json wall = json::array();
   for (const auto& r : snapshots_)
@@ -185,7 +186,6 @@ json ShaftResults::finish(const std::filesystem::path& out) const {
     }
   // The wall check from the ground pressure and the frozen soil's strength.
   const auto& design = project_.design;
-  std::optional<DesignMet> met;
   if (design.checks_strength()) {
     const double a = std::get<project::ShaftSection>(project_.geometry).shaft.excavation_radius.value_or(0.0);
     // Measured on the design isotherm when there is one, else on the frozen front.
@@ -209,9 +209,15 @@ json ShaftResults::finish(const std::filesystem::path& out) const {
     for (const auto& r : series_) days.push_back(r.day), checks.push_back(check(r));
     met = design_met(days, checks);
   }
-  result["wall"] = wall;
 
-  // ---- design: the first time both targets hold, thickness interpolated
+  return wall;
+}
+
+// The first time both targets hold (thickness interpolated) and the
+// strength check's verdict; null when the project sets no target.
+json ShaftResults::design_entry(const std::optional<DesignMet>& met) const {
+  const auto& design = project_.design;
+  json result;
   if (design.required_thickness || design.max_mean_temperature || met) {
     auto meets = [&](const Reading& r) {
       const bool thick = !design.required_thickness || r.min_thickness >= *design.required_thickness;
@@ -234,38 +240,30 @@ json ShaftResults::finish(const std::filesystem::path& out) const {
                                 (b.day - a.day);
       }
     }
-    result["design"] = {{"required_thickness", or_null(design.required_thickness)},
+    result = {{"required_thickness", or_null(design.required_thickness)},
                         {"max_mean_temperature", or_null(design.max_mean_temperature)},
                         {"reached_day", or_null(reached)},
                         {"pass", reached.has_value()}};
     if (met) {
       if (!design.required_thickness && !design.max_mean_temperature)  // the strength check is the only target
-        result["design"]["reached_day"] = or_null(met->day), result["design"]["pass"] = met->day.has_value();
-      result["design"]["met_day"] = or_null(met->day);
-      result["design"]["stays_met"] = met->stays;
-      result["design"]["formula"] = std::string(design::name(design.formula));
-      result["design"]["pressure_MPa"] = *design.pressure;
-      result["design"]["allowable_factor"] = design.allowable_factor;
-      result["design"]["depth"] = or_null(design.depth);
-      result["design"]["isotherm"] = or_null(design.isotherm);
-      result["design"]["friction_angle"] = or_null(design.friction_angle);
-      result["design"]["measured_on"] = design.isotherm ? fmt::format("the {:g} degC isotherm", *design.isotherm)
+        result["reached_day"] = or_null(met->day), result["pass"] = met->day.has_value();
+      result["met_day"] = or_null(met->day);
+      result["stays_met"] = met->stays;
+      result["formula"] = std::string(design::name(design.formula));
+      result["pressure_MPa"] = *design.pressure;
+      result["allowable_factor"] = design.allowable_factor;
+      result["depth"] = or_null(design.depth);
+      result["isotherm"] = or_null(design.isotherm);
+      result["friction_angle"] = or_null(design.friction_angle);
+      result["measured_on"] = design.isotherm ? fmt::format("the {:g} degC isotherm", *design.isotherm)
                                                         : std::string("the frozen front (liquid fraction 0.5)");
     }
   }
 
-  // ---- monitoring
-  json monitoring = json::object();
-  for (std::size_t s = 0; s < project_.monitoring.size(); ++s) {
-    json series = json::array();
-    for (const auto& [d, T] : sensor_readings_[s]) series.push_back({d, T});
-    monitoring[project_.monitoring[s].name] = series;
-  }
-  result["monitoring"] = monitoring;
-  result["interface"] = interface_;
-  result["ob_angle_deg"] = planes_.OB * 180.0 / std::numbers::pi;
+  return result;
+}
 
-  // ---- CSV files
+void ShaftResults::write_tables(const std::filesystem::path& out) const {
   std::string csv =
       "day,OA_inner_m,OA_outer_m,OA_thickness_m,OB_inner_m,OB_outer_m,OB_thickness_m,min_thickness_m,"
       "mean_temperature_OB_C\n";
@@ -297,6 +295,25 @@ json ShaftResults::finish(const std::filesystem::path& out) const {
     sensors += "\n";
   }
   io::write_text_file(out / "monitoring.csv", sensors);
+}
+
+json ShaftResults::finish(const std::filesystem::path& out) const {
+  json result;
+  std::optional<DesignMet> met;
+  result["wall"] = wall_entries(met);
+  if (json design = design_entry(met); !design.is_null()) result["design"] = std::move(design);
+  // ---- monitoring
+  json monitoring = json::object();
+  for (std::size_t s = 0; s < project_.monitoring.size(); ++s) {
+    json series = json::array();
+    for (const auto& [d, T] : sensor_readings_[s]) series.push_back({d, T});
+    monitoring[project_.monitoring[s].name] = series;
+  }
+  result["monitoring"] = monitoring;
+  result["interface"] = interface_;
+  result["ob_angle_deg"] = planes_.OB * 180.0 / std::numbers::pi;
+
+  write_tables(out);
   return result;
 }
 

@@ -17,6 +17,7 @@
 #include "post/field_sampler.hpp"
 #include "post/wall_extent.hpp"
 #include "project/project.hpp"
+#include "freezing/design_check.hpp"
 #include "freezing/model.hpp"
 #include "geometry/interface_planes.hpp"
 
@@ -39,6 +40,9 @@ class ShaftResults {
   nlohmann::json finish(const std::filesystem::path& out) const;
 
  private:
+  nlohmann::json wall_entries(std::optional<DesignMet>& met) const;
+  nlohmann::json design_entry(const std::optional<DesignMet>& met) const;
+  void write_tables(const std::filesystem::path& out) const;
   struct Reading {
     double day;
     post::FrozenStretch OA, OB;

@@ -34,7 +34,7 @@ std::string PermeabilityLaw::name() const {
 }
 
 PermeabilityLaw permeability_law(const project::PermeabilitySettings& s) {
-  return {s.model, s.impedance, s.porosity, s.threshold_liquid_fraction, s.floor};
+  return {s};
 }
 
 bool permeability_model_from_name(const std::string& name, PermeabilityModel& model) {

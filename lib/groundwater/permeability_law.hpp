@@ -19,13 +19,9 @@ namespace frostwall::groundwater {
 
 using project::PermeabilityModel;
 
-struct PermeabilityLaw {
-  PermeabilityModel model = PermeabilityModel::impedance;
-  double impedance = 7.0;                   // Omega
-  double porosity = 0.35;                   // n, for kozeny_carman
-  double threshold_liquid_fraction = 0.1;   // f_c, for threshold
-  double floor = 1e-6;                      // smallest k_r
-
+// The settings as the project file gives them (model, impedance, porosity,
+// threshold liquid fraction, floor), evaluated.
+struct PermeabilityLaw : project::PermeabilitySettings {
   // k / k_sat at liquid fraction f in [0, 1] (clamped): 1 at f = 1, never
   // rising as ice forms (f falls), never below `floor`.
   double relative(double liquid_fraction) const;

@@ -204,6 +204,78 @@ Numerics read_numerics(const Node& n, bool shaft) {
   return numerics;
 }
 
+// The domain block: the initial temperature; a shaft section's outer
+// radius and far field.
+void read_domain(const Node& domain, bool shaft, ShaftSection& section, Project& project) {
+  if (domain.object({"outer_radius", "initial_temperature", "far_field"})) {
+    project.domain.initial_temperature = domain["initial_temperature"].required().number().value_or(0.0);
+    if (shaft) {
+      const Node outer = domain["outer_radius"].required();
+      section.outer_radius = outer.positive().value_or(0.0);
+      const double pipes = outermost_pipe_radius(section.layout);
+      if (section.outer_radius > 0 && section.outer_radius <= pipes)
+        outer.problem(fmt::format("must be larger than the outermost pipe's radius {}, got {}", pipes,
+                                  section.outer_radius));
+      // Default: the far field stays at the initial ground temperature.
+      project.domain.far_field_temperature = project.domain.initial_temperature;
+      if (const Node far = domain["far_field"]; far.present()) {
+        const auto t = side_temperature(far);
+        project.domain.far_field_temperature = t ? t->number() : std::nullopt;
+      }
+    }
+  }
+}
+
+// Water flowing through the ground (shaft sections): the coupled scheme
+// (the default) is part of the backward-Euler step, so flowing water
+// brings that integrator and its step change. An explicit integrator asked
+// for keeps the explicit limited scheme; still water keeps the still-water run.
+void read_groundwater_block(const Node& root, bool shaft, Project& project) {
+  if (const Node water = root["groundwater"]; water.present()) {
+    if (!shaft) water.problem(R"(only used with "shaft" sections in this version)");
+    else {
+      project.groundwater = detail::read_groundwater(water);
+      auto& g = *project.groundwater;
+      const Node numerics = root["numerics"];
+      const bool other_integrator = numerics["integrator"].present() && project.numerics.integrator != IntegratorKind::implicit;
+      if (g.advection == Advection::coupled && other_integrator) {
+        if (water["advection"].present())
+          water["advection"].problem(R"("coupled" needs "numerics": {"integrator": "implicit"} (or no integrator))");
+        g.advection = Advection::limited;
+      }
+      if (g.advection == Advection::coupled && g.speed() > 0.0) {
+        project.numerics.integrator = IntegratorKind::implicit;
+        if (!numerics["step_change"].present()) project.numerics.step_change = 0.25;
+      }
+      project.warnings.push_back(
+          "groundwater: a full-size run under flow takes one to two hours on two cores, and beside frozen ground "
+          "the Darcy flux is 7-9 % off (docs/groundwater.md, Limits)");
+    }
+  }
+}
+
+// The wall check, the layers, and the design isotherm (in frozen ground).
+void read_design_and_layers(const Node& root, Project& project) {
+  project.design = read_design(root["design"], root["layers"].present());
+  if (project.design.strength) {
+    const auto* section = std::get_if<ShaftSection>(&project.geometry);
+    if (!section) root["design"]["strength"].problem("only used with shaft sections (the wall round an excavation)");
+    else if (!section->shaft.excavation_radius)
+      root["design"]["strength"].problem(R"(needs "shaft": {"excavation_radius"} (the formulas' a))");
+  }
+  project.layers = detail::read_layers(root["layers"], root, project);
+  if (const auto* section = std::get_if<ShaftSection>(&project.geometry);
+      section && !project.layers.empty() && !section->shaft.excavation_radius)
+    root["layers"].problem(R"(the layers' wall checks need "shaft": {"excavation_radius"} (the formulas' a))");
+  if (const auto iso = project.design.isotherm) {
+    double coldest_freezing = project.soil.freezing_point;
+    for (const auto& layer : project.layers) coldest_freezing = std::min(coldest_freezing, layer.soil.freezing_point);
+    if (*iso > coldest_freezing)
+      root["design"]["isotherm"].problem(
+          fmt::format("must be at or below the soil's freezing point ({} degC), got {}", coldest_freezing, *iso));
+  }
+}
+
 Project read_project(const Node& root) {
   Project project;
   if (root["physics"].choice<bool>("physics", {{"thermal", false}, {"cfd-dem", true}}).value_or(false)) {
@@ -238,23 +310,7 @@ Project read_project(const Node& root) {
     detail::warn_warm_pipe(root["pipe"], section.pipe, project.soil.freezing_point, project.warnings);
 
   const Node domain = root["domain"].required();
-  if (domain.object({"outer_radius", "initial_temperature", "far_field"})) {
-    project.domain.initial_temperature = domain["initial_temperature"].required().number().value_or(0.0);
-    if (shaft) {
-      const Node outer = domain["outer_radius"].required();
-      section.outer_radius = outer.positive().value_or(0.0);
-      const double pipes = outermost_pipe_radius(section.layout);
-      if (section.outer_radius > 0 && section.outer_radius <= pipes)
-        outer.problem(fmt::format("must be larger than the outermost pipe's radius {}, got {}", pipes,
-                                  section.outer_radius));
-      // Default: the far field stays at the initial ground temperature.
-      project.domain.far_field_temperature = project.domain.initial_temperature;
-      if (const Node far = domain["far_field"]; far.present()) {
-        const auto t = side_temperature(far);
-        project.domain.far_field_temperature = t ? t->number() : std::nullopt;
-      }
-    }
-  }
+  read_domain(domain, shaft, section, project);
   if (shaft) {
     project.geometry = std::move(section);
   } else {
@@ -283,51 +339,9 @@ Project read_project(const Node& root) {
     if (!shaft && project.numerics.placement == Placement::graded)
       mech.problem(R"(needs "placement": "lattice" (one horizon for the whole cloud))");
   }
-  if (const Node water = root["groundwater"]; water.present()) {
-    if (!shaft) water.problem(R"(only used with "shaft" sections in this version)");
-    else {
-      project.groundwater = detail::read_groundwater(water);
-      // The coupled scheme (the default) is part of the backward-Euler step:
-      // flowing water brings that integrator and its step change. An
-      // explicit integrator asked for keeps the explicit limited scheme;
-      // still water keeps the still-water run.
-      auto& g = *project.groundwater;
-      const Node numerics = root["numerics"];
-      const bool other_integrator = numerics["integrator"].present() && project.numerics.integrator != IntegratorKind::implicit;
-      if (g.advection == Advection::coupled && other_integrator) {
-        if (water["advection"].present())
-          water["advection"].problem(R"("coupled" needs "numerics": {"integrator": "implicit"} (or no integrator))");
-        g.advection = Advection::limited;
-      }
-      if (g.advection == Advection::coupled && g.speed() > 0.0) {
-        project.numerics.integrator = IntegratorKind::implicit;
-        if (!numerics["step_change"].present()) project.numerics.step_change = 0.25;
-      }
-      project.warnings.push_back(
-          "groundwater: a full-size run under flow takes one to two hours on two cores, and beside frozen ground "
-          "the Darcy flux is 7-9 % off (docs/groundwater.md, Limits)");
-    }
-  }
+  read_groundwater_block(root, shaft, project);
   detail::read_pore_settings(root, project);
-  project.design = read_design(root["design"], root["layers"].present());
-  if (project.design.strength) {
-    const auto* section = std::get_if<ShaftSection>(&project.geometry);
-    if (!section) root["design"]["strength"].problem("only used with shaft sections (the wall round an excavation)");
-    else if (!section->shaft.excavation_radius)
-      root["design"]["strength"].problem(R"(needs "shaft": {"excavation_radius"} (the formulas' a))");
-  }
-  project.layers = detail::read_layers(root["layers"], root, project);
-  if (const auto* section = std::get_if<ShaftSection>(&project.geometry);
-      section && !project.layers.empty() && !section->shaft.excavation_radius)
-    root["layers"].problem(R"(the layers' wall checks need "shaft": {"excavation_radius"} (the formulas' a))");
-  // The design isotherm lies in frozen ground (colder than freezing).
-  if (const auto iso = project.design.isotherm) {
-    double coldest_freezing = project.soil.freezing_point;
-    for (const auto& layer : project.layers) coldest_freezing = std::min(coldest_freezing, layer.soil.freezing_point);
-    if (*iso > coldest_freezing)
-      root["design"]["isotherm"].problem(
-          fmt::format("must be at or below the soil's freezing point ({} degC), got {}", coldest_freezing, *iso));
-  }
+  read_design_and_layers(root, project);
   project.monitoring = read_monitoring(root["monitoring"]);
   check_sensors_inside(project, root["monitoring"]);
   project.output = read_output(root["output"].required());

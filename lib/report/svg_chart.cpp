@@ -76,6 +76,55 @@ struct XAxis {
   }
 };
 
+// The plot area, px.
+struct PlotArea {
+  double left, top, pw, ph;
+};
+
+// Reference lines under the data, their labels with a white halo, readable
+// where a curve passes under them.
+template <class Px, class Py>
+std::string guides_svg(const Chart& chart, const Px& px, const Py& py, const PlotArea& area, const std::string& clip) {
+  const auto [left, top, pw, ph] = area;
+  std::string o;
+  o += fmt::format(R"svg(<g clip-path="url(#{})" stroke="#555" stroke-width="1" stroke-dasharray="5 3">)svg", clip);
+  for (const auto& g : chart.guides) {
+    if (g.vertical) o += fmt::format(R"(<line x1="{0}" y1="{1}" x2="{0}" y2="{2}"/>)", num(px(g.value)), num(top), num(top + ph));
+    else o += fmt::format(R"(<line x1="{1}" y1="{0}" x2="{2}" y2="{0}"/>)", num(py(g.value)), num(left), num(left + pw));
+  }
+  // Labels with a white halo, readable where a curve passes under them.
+  o += fmt::format(R"(</g>
+<g fill="#444" stroke="#fff" stroke-width="3" paint-order="stroke" font-size="{}">)", num(small_font));
+  for (const auto& g : chart.guides) {
+    if (g.label.empty()) continue;
+    if (g.vertical && px(g.value) > left + 0.7 * pw)  // near the right edge: label to the left of the line
+      o += fmt::format(R"(<text x="{}" y="{}" text-anchor="end">{}</text>)", num(px(g.value) - 3), num(top + 11), escape(g.label));
+    else if (g.vertical)
+      o += fmt::format(R"(<text x="{}" y="{}">{}</text>)", num(px(g.value) + 3), num(top + 11), escape(g.label));
+    else
+      o += fmt::format(R"(<text x="{}" y="{}" text-anchor="end">{}</text>)", num(left + pw - 3), num(py(g.value) - 4),
+                       escape(g.label));
+  }
+  o += "</g>\n";
+  return o;
+}
+
+// The legend beside the plot, top aligned, from x = lx.
+std::string legend_svg(const Chart& chart, const std::vector<std::string>& colour_of, double lx, double top) {
+  std::string o;
+  o += "<g>";
+  for (std::size_t k = 0, row = 0; k < chart.series.size(); ++k) {
+    const auto& s = chart.series[k];
+    if (s.label.empty()) continue;
+    const double y = top + 8 + legend_row * static_cast<double>(row++);
+    o += fmt::format(R"(<line x1="{0}" y1="{2}" x2="{1}" y2="{2}" stroke="{3}" stroke-width="2"{4}/>)", num(lx),
+                     num(lx + legend_swatch), num(y), colour_of[k], s.dashed ? R"( stroke-dasharray="6 3")" : "");
+    o += fmt::format(R"(<text x="{}" y="{}" fill="#222">{}</text>)", num(lx + legend_swatch + 6), num(y + 4), escape(s.label));
+  }
+  o += "</g>\n";
+  return o;
+}
+
 }  // namespace
 
 const std::vector<std::string>& categorical_colours() {
@@ -151,26 +200,7 @@ std::string render_svg(const Chart& chart) {
                    num(top + ph / 2), escape(chart.y_label));
   o += "</g>\n";
 
-  // Reference lines, under the data.
-  o += fmt::format(R"svg(<g clip-path="url(#{})" stroke="#555" stroke-width="1" stroke-dasharray="5 3">)svg", clip);
-  for (const auto& g : chart.guides) {
-    if (g.vertical) o += fmt::format(R"(<line x1="{0}" y1="{1}" x2="{0}" y2="{2}"/>)", num(px(g.value)), num(top), num(top + ph));
-    else o += fmt::format(R"(<line x1="{1}" y1="{0}" x2="{2}" y2="{0}"/>)", num(py(g.value)), num(left), num(left + pw));
-  }
-  // Labels with a white halo, readable where a curve passes under them.
-  o += fmt::format(R"(</g>
-<g fill="#444" stroke="#fff" stroke-width="3" paint-order="stroke" font-size="{}">)", num(small_font));
-  for (const auto& g : chart.guides) {
-    if (g.label.empty()) continue;
-    if (g.vertical && px(g.value) > left + 0.7 * pw)  // near the right edge: label to the left of the line
-      o += fmt::format(R"(<text x="{}" y="{}" text-anchor="end">{}</text>)", num(px(g.value) - 3), num(top + 11), escape(g.label));
-    else if (g.vertical)
-      o += fmt::format(R"(<text x="{}" y="{}">{}</text>)", num(px(g.value) + 3), num(top + 11), escape(g.label));
-    else
-      o += fmt::format(R"(<text x="{}" y="{}" text-anchor="end">{}</text>)", num(left + pw - 3), num(py(g.value) - 4),
-                       escape(g.label));
-  }
-  o += "</g>\n";
+  o += guides_svg(chart, px, py, {left, top, pw, ph}, clip);
 
   // Data.
   std::size_t next_colour = 0;
@@ -198,20 +228,7 @@ std::string render_svg(const Chart& chart) {
     o += fmt::format(R"(<text x="{}" y="{}" text-anchor="middle" fill="#777">{}</text>)", num(left + pw / 2),
                      num(top + ph / 2), escape(chart.empty_note));
 
-  // Legend beside the plot, top aligned.
-  if (!legend.empty()) {
-    const double lx = left + pw + 14;
-    o += "<g>";
-    for (std::size_t k = 0, row = 0; k < chart.series.size(); ++k) {
-      const auto& s = chart.series[k];
-      if (s.label.empty()) continue;
-      const double y = top + 8 + legend_row * static_cast<double>(row++);
-      o += fmt::format(R"(<line x1="{0}" y1="{2}" x2="{1}" y2="{2}" stroke="{3}" stroke-width="2"{4}/>)", num(lx),
-                       num(lx + legend_swatch), num(y), colour_of[k], s.dashed ? R"( stroke-dasharray="6 3")" : "");
-      o += fmt::format(R"(<text x="{}" y="{}" fill="#222">{}</text>)", num(lx + legend_swatch + 6), num(y + 4), escape(s.label));
-    }
-    o += "</g>\n";
-  }
+  if (!legend.empty()) o += legend_svg(chart, colour_of, left + pw + 14, top);
   o += "</svg>";
   return o;
 }

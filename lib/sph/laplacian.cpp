@@ -21,6 +21,59 @@ using particles::mirror_images;
 using particles::MirrorImages;
 
 
+namespace {
+
+// The moment correction of the renormalised pairs, each pair seen from i
+// (x_j an image or the particle itself, with the map to that image).
+template <int Dim>
+void correct_moments_on_images(LaplacianPairs& pairs, const ParticleSet<Dim>& particles, const MirrorImages<Dim>& images,
+                               const std::vector<Vec<Dim>>& points, const std::vector<std::uint32_t>& entry_point,
+                               const SmoothingLengths& h) {
+  const std::size_t n = particles.n_free, nnz = pairs.column.size();
+  std::vector<Vec<Dim>> pair_vector(nnz);  // x_j - x_i, j as the pair sees it (an image or the particle)
+  std::vector<Eigen::Matrix<double, Dim, Dim>> to_image(nnz, Eigen::Matrix<double, Dim, Dim>::Identity());
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t e = pairs.row_start[i]; e < pairs.row_start[i + 1]; ++e) {
+      const std::uint32_t k = entry_point[e];
+      pair_vector[e] = points[k] - particles.position[i];
+      if (k >= particles.size()) to_image[e] = images.linear[k - particles.size()];
+    }
+  std::vector<double> scale(n);
+  for (std::size_t i = 0; i < n; ++i) scale[i] = h.of(i);
+  const auto report = correct_pair_moments<Dim>(pairs, particles.position, particles.volume, pair_vector, to_image, scale);
+  pairs.moments_corrected = report.corrected;
+  pairs.smallest_weight_factor = report.smallest_factor;
+  pairs.largest_weight_factor = report.largest_factor;
+}
+
+// The own-image pairs carry no flux (T_i - T_i): dropped once the moments are set.
+template <int Dim>
+void drop_own_images(LaplacianPairs& pairs, const LaplacianOptions& options) {
+  const std::size_t n = pairs.n_free;
+  std::size_t out = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t begin = pairs.row_start[i], end = pairs.row_start[i + 1];
+    pairs.row_start[i] = out;
+    for (std::size_t e = begin; e < end; ++e) {
+      if (pairs.column[e] == i) continue;
+      pairs.column[out] = pairs.column[e];
+      pairs.weight[out] = pairs.weight[e];
+      if (options.keep_directions)
+        for (int d = 0; d < Dim; ++d) pairs.direction2[out * Dim + d] = pairs.direction2[e * Dim + d];
+      if (options.keep_vectors)
+        for (int d = 0; d < Dim; ++d) pairs.vector[out * Dim + d] = pairs.vector[e * Dim + d];
+      ++out;
+    }
+  }
+  pairs.row_start[n] = out;
+  pairs.column.resize(out);
+  pairs.weight.resize(out);
+  if (options.keep_directions) pairs.direction2.resize(out * Dim);
+  if (options.keep_vectors) pairs.vector.resize(out * Dim);
+}
+
+}  // namespace
+
 template <int Dim>
 LaplacianPairs build_laplacian_pairs(const ParticleSet<Dim>& particles, const Kernel& kernel,
                                      const LaplacianOptions& options) {
@@ -113,41 +166,8 @@ LaplacianPairs build_laplacian_pairs(const ParticleSet<Dim>& particles, const Ke
     });
   });
   if (options.correct_moments && options.form == project::LaplacianForm::renormalised) {
-    std::vector<Vec<Dim>> pair_vector(nnz);  // x_j - x_i, j as the pair sees it (an image or the particle)
-    std::vector<Eigen::Matrix<double, Dim, Dim>> to_image(nnz, Eigen::Matrix<double, Dim, Dim>::Identity());
-    for (std::size_t i = 0; i < n; ++i)
-      for (std::size_t e = pairs.row_start[i]; e < pairs.row_start[i + 1]; ++e) {
-        const std::uint32_t k = entry_point[e];
-        pair_vector[e] = points[k] - particles.position[i];
-        if (k >= particles.size()) to_image[e] = images.linear[k - particles.size()];
-      }
-    std::vector<double> scale(n);
-    for (std::size_t i = 0; i < n; ++i) scale[i] = h.of(i);
-    const auto report = correct_pair_moments<Dim>(pairs, particles.position, particles.volume, pair_vector, to_image, scale);
-    pairs.moments_corrected = report.corrected;
-    pairs.smallest_weight_factor = report.smallest_factor;
-    pairs.largest_weight_factor = report.largest_factor;
-    // Drop the own-image pairs (no flux).
-    std::size_t out = 0;
-    for (std::size_t i = 0; i < n; ++i) {
-      const std::size_t begin = pairs.row_start[i], end = pairs.row_start[i + 1];
-      pairs.row_start[i] = out;
-      for (std::size_t e = begin; e < end; ++e) {
-        if (pairs.column[e] == i) continue;
-        pairs.column[out] = pairs.column[e];
-        pairs.weight[out] = pairs.weight[e];
-        if (options.keep_directions)
-          for (int d = 0; d < Dim; ++d) pairs.direction2[out * Dim + d] = pairs.direction2[e * Dim + d];
-        if (options.keep_vectors)
-          for (int d = 0; d < Dim; ++d) pairs.vector[out * Dim + d] = pairs.vector[e * Dim + d];
-        ++out;
-      }
-    }
-    pairs.row_start[n] = out;
-    pairs.column.resize(out);
-    pairs.weight.resize(out);
-    if (options.keep_directions) pairs.direction2.resize(out * Dim);
-    if (options.keep_vectors) pairs.vector.resize(out * Dim);
+    correct_moments_on_images(pairs, particles, images, points, entry_point, h);
+    drop_own_images<Dim>(pairs, options);
   }
   return pairs;
 }

@@ -160,6 +160,42 @@ bool valid_variant_name(const std::string& name) {
   return true;
 }
 
+namespace {
+
+// The base project as JSON (study.base: its path, relative to the study
+// file's directory); null when it cannot be read (a problem is reported).
+json read_base(const Node& base_node, const fs::path& directory, Study& study) {
+  json base;
+  if (const auto base_file = base_node.string()) {
+    study.base = fs::path(*base_file).is_absolute() ? fs::path(*base_file) : directory / *base_file;
+    std::string error;
+    if (const auto base_text = read_file(study.base, error)) {
+      try {
+        base = json::parse(*base_text);
+        if (!base.is_object()) base_node.problem("the base project " + study.base.string() + " is not a JSON object"), base = json();
+      } catch (const json::exception&) {
+        base_node.problem("the base project " + study.base.string() + " is not valid JSON");
+      }
+    } else {
+      base_node.problem("cannot read " + study.base.string() + ": " + error);
+    }
+  }
+  return base;
+}
+
+// The base project's last snapshot, in days (the default ranking day).
+std::optional<double> last_snapshot_day(const json& base) {
+  if (!(base.contains("time") && base["time"].is_object() && base["time"].contains("snapshots") &&
+        base["time"]["snapshots"].is_array() && !base["time"]["snapshots"].empty() &&
+        base["time"]["snapshots"].back().is_number()))
+    return std::nullopt;
+  const std::string unit = base["time"].value("unit", "d");
+  const double factor = unit == "s" ? 1.0 / 86400 : (unit == "h" ? 1.0 / 24 : 1.0);
+  return base["time"]["snapshots"].back().get<double>() * factor;
+}
+
+}  // namespace
+
 Study parse_study(const std::string& text, const fs::path& directory, const std::string& source) {
   json document;
   try {
@@ -179,22 +215,7 @@ Study parse_study(const std::string& text, const fs::path& directory, const std:
   study.description = root["description"].string(true).value_or("");
 
   // The base project, as JSON; the study's own patch on top.
-  json base;
-  const Node base_node = root["base"].required();
-  if (const auto base_file = base_node.string()) {
-    study.base = fs::path(*base_file).is_absolute() ? fs::path(*base_file) : directory / *base_file;
-    std::string error;
-    if (const auto base_text = read_file(study.base, error)) {
-      try {
-        base = json::parse(*base_text);
-        if (!base.is_object()) base_node.problem("the base project " + study.base.string() + " is not a JSON object"), base = json();
-      } catch (const json::exception&) {
-        base_node.problem("the base project " + study.base.string() + " is not valid JSON");
-      }
-    } else {
-      base_node.problem("cannot read " + study.base.string() + ": " + error);
-    }
-  }
+  json base = read_base(root["base"].required(), directory, study);
   const Node output = root["output"].required();
   if (output.object({"directory"}))
     if (const auto dir = output["directory"].required().string()) study.output_directory = *dir;
@@ -218,13 +239,7 @@ Study parse_study(const std::string& text, const fs::path& directory, const std:
 
   // Default ranking day: the base's last snapshot (days).
   if (thickness_day) study.thickness_day = *thickness_day;
-  else if (base.contains("time") && base["time"].is_object() && base["time"].contains("snapshots") &&
-           base["time"]["snapshots"].is_array() && !base["time"]["snapshots"].empty() &&
-           base["time"]["snapshots"].back().is_number()) {
-    const std::string unit = base["time"].value("unit", "d");
-    const double factor = unit == "s" ? 1.0 / 86400 : (unit == "h" ? 1.0 / 24 : 1.0);
-    study.thickness_day = base["time"]["snapshots"].back().get<double>() * factor;
-  }
+  else if (const auto day = last_snapshot_day(base)) study.thickness_day = *day;
 
   // Expand: every override (or the base alone) times every combination.
   if (overrides.empty()) overrides.push_back({"", "", json::object()});
