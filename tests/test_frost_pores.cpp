@@ -52,9 +52,17 @@ double hoop(const std::array<double, 3>& s, const Vec2& d) {
   return s[0] * sn * sn + s[1] * c * c - 2.0 * s[2] * sn * c;
 }
 
-}  // namespace
+// A pore of radius a and saturation S, frozen through, in a free disc of
+// radius b (rim model, no fracture, no temperature change): the push it
+// gives, the relaxed field, and the mean hoop stress in bands round it
+// against Lame's for that push (plane strain, nu = 1/4: lambda = G;
+// u = A r + B / r with sigma_rr(b) = 0 and u(a) = u_a).
+struct PushedPore {
+  double push = 0.0, mean_shift = 0.0;  // u_a; the plate's mean displacement
+  std::vector<std::array<double, 3>> bands;  // r0, PD hoop, Lame hoop (Pa)
+};
 
-TEST_CASE("a frozen pore pushing its rim out gives the Lame hoop stress, falling off as 1/r^2", "[mechanics][frost]") {
+PushedPore push_pore(double saturation) {
   const double dx = 1.0, a = 8.0, b = 48.0;
   const Vec2 c(60.0, 60.0);
   const auto g = disc(c, b, dx);
@@ -65,45 +73,73 @@ TEST_CASE("a frozen pore pushing its rim out gives the Lame hoop stress, falling
     if ((g.position[i] - c).norm() < a) pore_of[i] = 0;
   project::FreezingExpansion fe;
   fe.model = project::FreezingExpansion::Model::rim_displacement;
-  pd::PoreExpansion pores(fe, E, {{c[0], c[1], a}}, pore_of);
+  pd::PoreExpansion pores(fe, E, {{c[0], c[1], a, saturation}}, pore_of);
   pores.prepare(solid);
   std::vector<double> u(2 * g.position.size(), 0.0), dT(g.position.size(), 0.0), f(g.position.size(), 0.0);
   pores.apply(solid, f, g.volume);  // every pore particle frozen
-  const double ua = a * (std::sqrt(1.09) - 1.0);
-  REQUIRE(pores.largest_push() == Approx(ua).epsilon(1e-12));
+  PushedPore out;
+  out.push = pores.largest_push();
   pores.shape(solid, dT, u);
   const auto r = pd::relax(solid, u, dT, 1e-9, 200000);
   REQUIRE(r.converged);
-
-  // Lame, plane strain, nu = 1/4 (lambda = G): u = A r + B / r with
-  // sigma_rr(b) = 0 and u(a) = ua.
-  const double G = E / 2.5, B = ua / (a / (2.0 * b * b) + 1.0 / a);
+  const double G = E / 2.5, B = out.push / (a / (2.0 * b * b) + 1.0 / a);
   auto lame = [&](double rr) { return 2.0 * G * B * (1.0 / (rr * rr) + 1.0 / (b * b)); };
   const auto sigma = solid.stress(u, dT);
-  // Mean hoop stress of the particles in a band, against Lame at their radii.
-  auto band = [&](double r0, double r1) {
+  for (const double r0 : {a, a + 4 * dx, 2 * a, 3 * a}) {
     double pd_sum = 0.0, exact = 0.0;
     int count = 0;
     for (std::size_t i = 0; i < g.position.size(); ++i) {
       const Vec2 d = g.position[i] - c;
-      if (d.norm() < r0 || d.norm() >= r1) continue;
+      if (d.norm() < r0 || d.norm() >= r0 + dx) continue;
       pd_sum += hoop(sigma[i], d);
       exact += lame(d.norm());
       ++count;
     }
-    return std::pair{pd_sum / count, exact / count};
-  };
-  for (const auto& [r0, r1] : {std::pair{a, a + dx}, std::pair{a + 4 * dx, a + 5 * dx}, std::pair{2 * a, 2 * a + dx},
-                               std::pair{3 * a, 3 * a + dx}}) {
-    const auto [got, want] = band(r0, r1);
-    INFO("band " << r0 << ".." << r1 << ": PD " << got / 1e6 << " MPa, Lame " << want / 1e6 << " MPa");
+    out.bands.push_back({r0, pd_sum / count, exact / count});
+  }
+  Vec2 mean = Vec2::Zero();
+  for (std::size_t i = 0; i < g.position.size(); ++i) mean += Vec2(u[2 * i], u[2 * i + 1]);
+  out.mean_shift = mean.norm() / g.position.size();
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("a frozen pore pushing its rim out gives the Lame hoop stress, falling off as 1/r^2", "[mechanics][frost]") {
+  const double a = 8.0;
+  const auto pushed = push_pore(1.0);
+  const double ua = a * (std::sqrt(1.09) - 1.0);  // a full pore: the area grows by 9 %
+  REQUIRE(pushed.push == Approx(ua).epsilon(1e-12));
+  for (const auto& [r0, got, want] : pushed.bands) {
+    INFO("band from r = " << r0 << ": PD " << got / 1e6 << " MPa, Lame " << want / 1e6 << " MPa");
     CHECK(std::abs(got / want - 1.0) < 0.05);
   }
   // The rim's mean displacement is radial: the pore moved with the plate,
   // and the plate, free, did not move as a whole.
-  Vec2 mean = Vec2::Zero();
-  for (std::size_t i = 0; i < g.position.size(); ++i) mean += Vec2(u[2 * i], u[2 * i + 1]);
-  CHECK(mean.norm() / g.position.size() < 1e-3 * ua);
+  CHECK(pushed.mean_shift < 1e-3 * ua);
+}
+
+TEST_CASE("a partly saturated pore pushes only with what its ice cannot fit into the air", "[mechanics][frost]") {
+  // Fagerlund's critical degree of saturation: ice takes 1.09 of its water's
+  // volume, so a pore at S takes 1.09 S of its own. At S = 0.95 the excess
+  // is 1.09 x 0.95 - 1 = 0.0355 of the area (against 0.09 full): the push
+  // a (sqrt(1.0355) - 1), and Lame's hoop stress for that push, within 5 %.
+  const double a = 8.0;
+  const auto partial = push_pore(0.95);
+  REQUIRE(partial.push == Approx(a * (std::sqrt(1.0 + (1.09 * 0.95 - 1.0)) - 1.0)).epsilon(1e-12));
+  for (const auto& [r0, got, want] : partial.bands) {
+    INFO("band from r = " << r0 << ": PD " << got / 1e6 << " MPa, Lame " << want / 1e6 << " MPa");
+    CHECK(std::abs(got / want - 1.0) < 0.05);
+  }
+  // Below S_cr = 1/1.09 = 0.917 the ice fits: no push, and with no
+  // temperature change no stress at all.
+  const auto dry = push_pore(0.9);
+  CHECK(dry.push == 0.0);
+  for (const auto& [r0, got, want] : dry.bands) {
+    INFO("band from r = " << r0);
+    CHECK(std::abs(got) < 1e-9 * E);
+    CHECK(want == 0.0);
+  }
 }
 
 TEST_CASE("an unconfined ice disc grows freely by the volume change in area and stays whole", "[mechanics][frost]") {

@@ -543,3 +543,34 @@ TEST_CASE("porous plate: every problem of pores, pore fluid and freezing expansi
   CHECK(plate_problems({{"mechanics", {{"freezing_expansion", {{"volume_change", 0.09}}}}}}) ==
         std::vector<std::string>{"mechanics.freezing_expansion.model: required field is missing"});
 }
+
+TEST_CASE("porous plate: degrees of saturation per pore, for the plate, and drawn from a range", "[shared][project][pores]") {
+  // Full pores unless told: the PD paper's case.
+  const auto full = std::get<Rectangle>(load_plate(nlohmann::json::object()).geometry);
+  for (const auto& pore : full.pores) CHECK(pore.saturation == 1.0);
+  // The plate's value for every pore; a pore's own wins.
+  auto listed = patched_plate({{"geometry", {{"saturation", 0.9}}}});
+  listed["geometry"]["pores"][1]["saturation"] = 0.95;
+  const auto plate = std::get<Rectangle>(parse_project(listed.dump()).geometry);
+  CHECK(plate.pores[0].saturation == 0.9);
+  CHECK(plate.pores[1].saturation == 0.95);
+  // A drawn range: every pore inside it, the same again from the same
+  // seed, and the pores where they are without the range.
+  nlohmann::json ranged = generator;
+  ranged["saturation"] = {0.85, 0.99};
+  const auto drawn = std::get<Rectangle>(load_plate({{"geometry", {{"pores", ranged}}}}).geometry);
+  const auto again = std::get<Rectangle>(load_plate({{"geometry", {{"pores", ranged}}}}).geometry);
+  const auto dry = std::get<Rectangle>(load_plate({{"geometry", {{"pores", generator}}}}).geometry);
+  REQUIRE(drawn.pores.size() == dry.pores.size());
+  double lowest = 1.0, highest = 0.0;
+  for (std::size_t k = 0; k < drawn.pores.size(); ++k) {
+    CHECK(drawn.pores[k].saturation >= 0.85);
+    CHECK(drawn.pores[k].saturation <= 0.99);
+    CHECK(drawn.pores[k].saturation == again.pores[k].saturation);
+    CHECK(drawn.pores[k].x == dry.pores[k].x);
+    CHECK(drawn.pores[k].radius == dry.pores[k].radius);
+    CHECK(dry.pores[k].saturation == 1.0);
+    lowest = std::min(lowest, drawn.pores[k].saturation), highest = std::max(highest, drawn.pores[k].saturation);
+  }
+  CHECK(highest - lowest > 0.05);  // 30 draws spread over the range
+}

@@ -253,7 +253,7 @@ void run_cfd_dem(const project::Project& p, const project::RunOptions& options) 
   // The run proper (after any settling) is what the rates are of.
   const auto flow_start = std::chrono::steady_clock::now();
   const double coupling_before = coupling.coupling_seconds();
-  FlowRecord rec{CfdDemResults(p), SoilRecord(c)};
+  FlowRecord rec{CfdDemResults(p), SoilRecord(c), 0.0, 0.0, -1.0, {}, {}};
   const SoilWatch soil(c, lammps);
   const long total_steps = std::max(1L, std::lround(p.time.end / dt));
   run_flow(p, lammps, coupling, soil, dt, interval, total_steps, out, options.progress, rec);

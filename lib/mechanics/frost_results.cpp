@@ -5,6 +5,7 @@
 #include <fmt/core.h>
 
 #include "geometry/pores.hpp"
+#include "pd/pore_expansion.hpp"
 #include "io/atomic_file.hpp"
 #include "io/polyline_vtk.hpp"
 
@@ -123,21 +124,30 @@ void FrostResults::add_fields(io::PointCloudFrame& frame, const thermal::Thermal
 json FrostResults::finish(const std::filesystem::path& out) const {
   json result;
   const auto rims = rim_damage();
+  // The ice's volume change (the solid's model, else water's 9 %).
+  const auto& expansion = project_.mechanics ? project_.mechanics->freezing_expansion : std::nullopt;
+  const double dV = expansion ? expansion->volume_change : project::FreezingExpansion{}.volume_change;
   json pores = json::array();
   for (std::size_t p = 0; p < rect_.pores.size(); ++p) {
     const auto& pore = rect_.pores[p];
+    const double S = pore.saturation;
     pores.push_back({{"id", p},
                      {"x", pore.x},
                      {"y", pore.y},
                      {"radius", pore.radius},
+                     {"saturation", S},
+                     {"imposed_volume_change", pd::pore_excess(dV, S, 1.0)},
                      {"freezing_start", optional_time(start_[p], unit_)},
                      {"freezing_end", optional_time(end_[p], unit_)},
-                     {"max_rim_damage", mechanics_ ? json(rims[p]) : json(nullptr)}});
+                     {"max_rim_damage", mechanics_ ? json(rims[p]) : json(nullptr)},
+                     // any broken bond within a horizon outside its rim
+                     {"cracked", mechanics_ ? json(rims[p] > 0.0) : json(nullptr)}});
   }
   result["pores"] = pores;
   if (const auto& g = rect_.pore_generator)
     result["pores_generated"] = {{"count", g->count}, {"radius", {g->radius_min, g->radius_max}},
-                                 {"min_gap", g->min_gap}, {"seed", g->seed}};
+                                 {"min_gap", g->min_gap}, {"seed", g->seed},
+                                 {"saturation", {g->saturation_min, g->saturation_max}}};
   std::optional<double> all = 0.0;
   for (const auto& e : end_) all = e && all ? std::optional(std::max(*all, *e)) : std::nullopt;
   result["all_pores_frozen"] = optional_time(all, unit_);

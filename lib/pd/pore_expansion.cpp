@@ -14,8 +14,12 @@ PoreExpansion::PoreExpansion(const project::FreezingExpansion& expansion, double
       pores_(std::move(pores)),
       pore_of_(std::move(pore_of)) {}
 
-double PoreExpansion::free_strain(double phi) const {
-  return std::sqrt(1.0 + expansion_.volume_change * std::clamp(phi, 0.0, 1.0)) - 1.0;
+double pore_excess(double volume_change, double saturation, double phi) {
+  return std::max(saturation * volume_change * std::clamp(phi, 0.0, 1.0) - (1.0 - saturation), 0.0);
+}
+
+double PoreExpansion::free_strain(double phi, double saturation) const {
+  return std::sqrt(1.0 + pore_excess(expansion_.volume_change, saturation, phi)) - 1.0;
 }
 
 std::vector<double> PoreExpansion::frozen_fraction(const std::vector<double>& f, const std::vector<double>& volume) const {
@@ -70,7 +74,7 @@ void PoreExpansion::apply(PdSolid& solid, const std::vector<double>& f, const st
   if (rim_displacement()) {
     const std::vector<double> F = frozen_fraction(f, volume);
     rim_u_.resize(pores_.size());
-    for (std::size_t p = 0; p < pores_.size(); ++p) rim_u_[p] = pores_[p].radius * free_strain(F[p]);
+    for (std::size_t p = 0; p < pores_.size(); ++p) rim_u_[p] = pores_[p].radius * free_strain(F[p], pores_[p].saturation);
     // A pore is a hole until it starts to freeze, then the loading device.
     std::vector<double> ratio(pore_of_.size(), 1.0);
     for (std::size_t i = 0; i < pore_of_.size(); ++i)
@@ -83,7 +87,7 @@ void PoreExpansion::apply(PdSolid& solid, const std::vector<double>& f, const st
     if (pore_of_[i] >= 0) {
       const double phi = 1.0 - f[i];
       ratio[i] = ice_ratio_ * phi;
-      eigen[i] = free_strain(phi);
+      eigen[i] = free_strain(phi, pores_[pore_of_[i]].saturation);
     }
   solid.set_stiffness_ratio(ratio);
   solid.set_eigenstrain(eigen);

@@ -15,6 +15,9 @@
 //    phi = 1 - f: stiffness E_ice phi (water carries no bonds) and a free
 //    areal strain sqrt(1 + dV phi) - 1 (a 2-D model takes the volume
 //    change as an area change: 4.40 % linear at 9 %).
+// A pore holds water to its degree of saturation S (project::Pore): the
+// ice fills the air first and loads the solid only with the excess, in
+// both models (Fagerlund's critical saturation S_cr = 1 / (1 + dV)).
 #pragma once
 
 #include <algorithm>
@@ -26,13 +29,22 @@
 
 namespace frostwall::pd {
 
+// The areal change a pore of saturation S imposes on the solid when its
+// water is frozen to phi: what ice and water take beyond the pore,
+// S dV phi - (1 - S), or 0 while the ice still fits in the air. Frozen
+// through (phi = 1): max(0, (1 + dV) S - 1).
+double pore_excess(double volume_change, double saturation, double phi);
+
 class PoreExpansion {
  public:
   PoreExpansion(const project::FreezingExpansion& expansion, double matrix_modulus, std::vector<project::Pore> pores,
                 std::vector<int> pore_of);
 
-  // The linear free strain of ice at frozen fraction phi (areal dV phi).
-  double free_strain(double phi) const;
+  // The linear free strain that loads the solid at frozen fraction phi in
+  // a pore of saturation S: the ice and water take S (1 + dV phi) of the
+  // pore, so the areal excess over the pore is S dV phi - (1 - S), none
+  // until the ice has filled the air (dV phi at S = 1).
+  double free_strain(double phi, double saturation = 1.0) const;
   // Each pore's frozen fraction: the volume-weighted mean of 1 - f.
   std::vector<double> frozen_fraction(const std::vector<double>& liquid_fraction, const std::vector<double>& volume) const;
   // Installs the model on the solid (rim_displacement: the pore particles

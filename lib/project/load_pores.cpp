@@ -48,6 +48,37 @@ std::optional<unsigned long long> seed_of(const Node& n) {
   return v.get<unsigned long long>();
 }
 
+// A degree of saturation: a number in (0, 1].
+std::optional<double> saturation_of(const Node& n) {
+  const auto S = n.number();
+  if (!S) return std::nullopt;
+  if (!(*S > 0.0 && *S <= 1.0)) {
+    n.problem(fmt::format("must be in (0, 1] (the share of the pore's volume the water fills), got {}", n.shown()));
+    return std::nullopt;
+  }
+  return S;
+}
+
+// "saturation" of a generator: a number S (every pore S) or [min, max],
+// 0 < min <= max <= 1.
+std::optional<std::pair<double, double>> saturation_range(const Node& n) {
+  if (n.json().is_array()) {
+    if (n.json().size() != 2) {
+      n.problem(fmt::format("must be a number or [min, max], got {}", n.shown()));
+      return std::nullopt;
+    }
+    const auto lo = saturation_of(n[0]), hi = saturation_of(n[1]);
+    if (!lo || !hi) return std::nullopt;
+    if (*lo > *hi) {
+      n.problem(fmt::format("must be [min, max] with min <= max, got {}", n.shown()));
+      return std::nullopt;
+    }
+    return std::pair{*lo, *hi};
+  }
+  const auto S = saturation_of(n);
+  return S ? std::optional{std::pair{*S, *S}} : std::nullopt;
+}
+
 // "radius": a number r (every pore r) or [min, max], 0 < min <= max.
 std::optional<std::pair<double, double>> radius_range(const Node& n) {
   if (!n.given()) return std::nullopt;
@@ -68,15 +99,17 @@ std::optional<std::pair<double, double>> radius_range(const Node& n) {
   return std::pair{*lo, *hi};
 }
 
-void read_generator(const Node& n, Rectangle& rectangle) {
-  n.object({"count", "radius", "min_gap", "seed"});
+void read_generator(const Node& n, Rectangle& rectangle, double plate_saturation) {
+  n.object({"count", "radius", "min_gap", "seed", "saturation"});
   const Node count_node = n["count"].required();
   const auto count = count_node.count();
   const auto radius = radius_range(n["radius"].required());
   const auto gap = n["min_gap"].present() ? n["min_gap"].non_negative() : std::optional{0.0};
   const auto seed = n["seed"].present() ? seed_of(n["seed"]) : std::optional{1ULL};
-  if (!count || !radius || !gap || !seed) return;
-  const PoreGenerator g{*count, radius->first, radius->second, *gap, *seed};
+  const auto saturation =
+      n["saturation"].present() ? saturation_range(n["saturation"]) : std::optional{std::pair{plate_saturation, plate_saturation}};
+  if (!count || !radius || !gap || !seed || !saturation) return;
+  const PoreGenerator g{*count, radius->first, radius->second, *gap, *seed, saturation->first, saturation->second};
   rectangle.pore_generator = g;
   if (!(rectangle.width > 0) || !(rectangle.height > 0)) return;  // reported with the width or height
   rectangle.pores = draw_pores(g, rectangle.width, rectangle.height);
@@ -88,7 +121,7 @@ void read_generator(const Node& n, Rectangle& rectangle) {
   }
 }
 
-void read_list(const Node& n, Rectangle& rectangle) {
+void read_list(const Node& n, Rectangle& rectangle, double plate_saturation) {
   const std::size_t size = n.array().value_or(0);
   if (size == 0) {
     n.problem(R"(must list at least one pore (leave "pores" out for a plate without pores))");
@@ -98,11 +131,12 @@ void read_list(const Node& n, Rectangle& rectangle) {
   std::vector<std::size_t> index;  // of each pore read, in n
   for (std::size_t i = 0; i < size; ++i) {
     const Node p = n[i];
-    if (!p.object({"x", "y", "radius"})) continue;
+    if (!p.object({"x", "y", "radius", "saturation"})) continue;
     const auto x = p["x"].required().number(), y = p["y"].required().number();
     const auto r = p["radius"].required().positive();
-    if (!x || !y || !r) continue;
-    const Pore pore{*x, *y, *r};
+    const auto S = p["saturation"].present() ? saturation_of(p["saturation"]) : std::optional{plate_saturation};
+    if (!x || !y || !r || !S) continue;
+    const Pore pore{*x, *y, *r, *S};
     if (plate_known && !inside(pore, rectangle.width, rectangle.height, 0.0)) {
       p.problem(fmt::format("the pore (x {}, y {}, radius {}) is not inside the {} x {} m plate", pore.x, pore.y,
                             pore.radius, rectangle.width, rectangle.height));
@@ -154,13 +188,23 @@ std::vector<Pore> draw_pores(const PoreGenerator& g, double width, double height
     cells[key(cell_of(p.x), cell_of(p.y))].push_back(pores.size());
     pores.push_back(p);
   }
+  // The saturations from a stream of their own: a range moves no pore.
+  std::mt19937_64 wet(g.seed ^ 0x5a7u);
+  for (auto& p : pores)
+    p.saturation = g.saturation_min == g.saturation_max
+                       ? g.saturation_min
+                       : g.saturation_min + (g.saturation_max - g.saturation_min) * unit(wet);
   return pores;
 }
 
-void read_pores(const Node& n, Rectangle& rectangle) {
-  if (!n.present()) return;
-  if (n.json().is_array()) return read_list(n, rectangle);
-  if (n.json().is_object()) return read_generator(n, rectangle);
+void read_pores(const Node& n, Rectangle& rectangle, const Node& plate_saturation) {
+  if (!n.present()) {
+    if (plate_saturation.present()) plate_saturation.problem("the plate has no pores (geometry.pores)");
+    return;
+  }
+  const double S = plate_saturation.present() ? saturation_of(plate_saturation).value_or(1.0) : 1.0;
+  if (n.json().is_array()) return read_list(n, rectangle, S);
+  if (n.json().is_object()) return read_generator(n, rectangle, S);
   n.problem(R"(must be a list of pores [{"x", "y", "radius"}, ...] or a generator {"count", "radius", ...}, got )" +
             n.type());
 }

@@ -14,7 +14,8 @@ namespace frostwall::project::detail {
 // when they are drawn; checks that each pore lies inside the plate and
 // that no two listed pores overlap. Needs the rectangle's width and height
 // (read first; the checks against the plate are skipped when one is bad).
-void read_pores(const Node& n, Rectangle& rectangle);
+// plate_saturation: geometry.saturation, every pore's unless it gives its own.
+void read_pores(const Node& n, Rectangle& rectangle, const Node& plate_saturation);
 
 // Random sequential addition, the same on every platform for a seed
 // (std::mt19937_64, its raw output turned into [0, 1) here): each pore

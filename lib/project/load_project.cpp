@@ -112,11 +112,11 @@ namespace {
 
 Rectangle read_rectangle(const Node& n) {
   Rectangle rectangle;
-  if (!n.object({"type", "width", "height", "boundaries", "pores"})) return rectangle;
+  if (!n.object({"type", "width", "height", "boundaries", "pores", "saturation"})) return rectangle;
   n["type"].required().choice<int>("geometry type", {{"rectangle", 0}});
   rectangle.width = n["width"].required().positive().value_or(0.0);
   rectangle.height = n["height"].required().positive().value_or(0.0);
-  detail::read_pores(n["pores"], rectangle);
+  detail::read_pores(n["pores"], rectangle, n["saturation"]);
   const Node sides = n["boundaries"].required();
   if (!sides.object({"left", "right", "top", "bottom"})) return rectangle;
   for (const auto& [key, side] : {std::pair{"left", &rectangle.left}, std::pair{"right", &rectangle.right},

@@ -58,19 +58,27 @@ using SideCondition = std::variant<Adiabatic, FixedTemperature>;
 
 // ---- pores of a porous plate (frost damage) ----------------------------------
 
-// A water-filled pore: a disc, m.
+// A pore: a disc, m, holding water to its degree of saturation S (the
+// water's share of the pore's volume, in (0, 1]; the rest is air). Ice
+// takes (1 + volume_change) of its water's volume, so a pore loads the
+// solid only above S_cr = 1 / (1 + volume_change), 0.917 at 9 %.
 struct Pore {
   double x = 0.0, y = 0.0, radius = 0.0;
+  double saturation = 1.0;
 };
 
 // Pores drawn at random (geometry.pores as an object): `count` discs of
 // radius uniform in [radius_min, radius_max], each at least min_gap from
 // every other pore and from the plate's sides; the same seed draws the
 // same pores. The drawn list is Rectangle::pores (and goes to summary.json).
+// Each pore's saturation is uniform in [saturation_min, saturation_max],
+// drawn from the same seed after the pores are placed (a range does not
+// move them).
 struct PoreGenerator {
   int count = 0;
   double radius_min = 0.0, radius_max = 0.0, min_gap = 0.0;  // m
   unsigned long long seed = 0;
+  double saturation_min = 1.0, saturation_max = 1.0;
 };
 
 // The fluid that fills the pores (project "pore_fluid"): water that

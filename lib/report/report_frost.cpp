@@ -27,6 +27,15 @@ namespace {
 constexpr double nan = std::numeric_limits<double>::quiet_NaN();
 
 double value_of(const json& v) { return v.is_number() ? v.get<double>() : nan; }
+// A pore's saturation, marked when it lies below the critical saturation
+// (its frozen water imposes nothing on the solid). Older summaries carry
+// none: their pores were full.
+std::string saturation_text(const json& pore) {
+  const double S = pore.contains("saturation") ? value_of(pore["saturation"]) : 1.0;
+  const json& imposed = pore.contains("imposed_volume_change") ? pore["imposed_volume_change"] : json();
+  return number(S, 3) + (imposed.is_number() && imposed.get<double>() <= 0.0 ? " \u2020" : "");
+}
+
 std::string time_text(double t) {
   if (!std::isfinite(t)) return "–";
   return std::abs(t) >= 1000 ? fmt::format("{:.0f}", t) : fmt::format("{:.3g}", t);
@@ -214,12 +223,18 @@ void add_frost(const RunRecord& run, json& view) {
                     {"centre_x", number(1e6 * value_of(p.value("x", json())), 1)},
                     {"centre_y", number(1e6 * value_of(p.value("y", json())), 1)},
                     {"radius", number(1e6 * value_of(p.value("radius", json())), 1)},
+                    {"saturation", saturation_text(p)},
                     {"freezing_start", time_text(start)},
                     {"freezing_end", time_text(stop)},
                     {"max_rim_damage", number(p.value("max_rim_damage", json()), 2)}});
   }
   bars.width = 720;
   view["pore_rows"] = rows;
+  view["pore_saturation_note"] =
+      "Saturation: the share of each pore's volume its water fills. Ice takes (1 + dV) times the volume of its water "
+      "(1.09 for water), so a pore below the critical saturation 1 / (1 + dV) (0.917 for water; marked \u2020) freezes "
+      "into its own air and does not load the solid; above it the solid takes the excess, (1 + dV) S - 1 of the pore's "
+      "volume.";
   view["pore_bars_svg"] = render_svg(bars);
   view["pore_bars_caption"] = fmt::format(
       "Each pore from its first ice to fully frozen, in the order of the list{}. A fading bar without a right end is still "
