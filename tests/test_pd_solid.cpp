@@ -132,6 +132,36 @@ TEST_CASE("PD solid: free thermal expansion breaks nothing, overstretched bonds 
   for (double phi : solid.damage()) CHECK(phi == 1.0);  // every bond stretched the same: all broke
 }
 
+// The energy of the broken bonds two ways: (1) a uniform stretch s past
+// the critical one breaks every bond, and what they took to break is the
+// strain energy the intact solid held at s (energy_density, summed over
+// the volume) scaled by (s0 / s)^2; (2) a cut along a line of length L
+// through the middle breaks exactly the bonds that cross it, which cost
+// G0 L in the continuum (the definition s0 is calibrated on), here to the
+// lattice's quadrature.
+TEST_CASE("PD solid: the broken bonds' energy is the work of their critical stretch, G0 per unit of cut", "[pd][mechanics][fracture]") {
+  const double L = 0.01, dx = L / 40, G0 = 5.0;
+  auto m = plate_mechanics();
+  m.material.fracture_energy = G0;
+  {
+    pd::PdSolid solid(square_lattice(L, dx), m, pd::make_bond_law(m, 3.015 * dx));
+    const double s0 = solid.law().critical_stretch, s = 3.0 * s0;
+    const std::vector<double> u = uniform_stretch(solid, s), dT(solid.size(), 0.0);
+    const auto w = solid.energy_density(u, dT);
+    double stored = 0.0;
+    for (std::size_t i = 0; i < solid.size(); ++i) stored += w[i] * solid.volume()[i];
+    REQUIRE(solid.broken_bond_energy() == 0.0);
+    REQUIRE(solid.break_bonds(u, dT) == solid.bonds());
+    CHECK(solid.broken_bond_energy() == Approx(stored * (s0 / s) * (s0 / s)).epsilon(1e-12));
+  }
+  pd::PdSolid solid(square_lattice(L, dx), m, pd::make_bond_law(m, 3.015 * dx));
+  const double y = 0.5 * L + 0.25 * dx, a = 0.25 * L, b = 0.75 * L;
+  REQUIRE(solid.cut(Vec2(a, y), Vec2(b, y)) > 0);
+  const double per_length = solid.broken_bond_energy() / (b - a);
+  fmt::print("PD cut: {:.4f} J/m2 per unit of cut against G0 = {}\n", per_length, G0);
+  CHECK(per_length == Approx(G0).epsilon(0.05));
+}
+
 // A plate with a central pre-crack pulled by its top edge (bottom on
 // rollers, sides free). The load at which the first intact bond reaches the
 // critical stretch follows from one equilibrium by linearity (the

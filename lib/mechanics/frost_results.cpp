@@ -18,6 +18,17 @@ namespace {
 json optional_time(const std::optional<double>& t, double unit) { return t ? json(*t / unit) : json(nullptr); }
 }  // namespace
 
+CrackMeasure crack_measure(const std::vector<geometry::Polyline>& lines, double area) {
+  CrackMeasure c;
+  for (const auto& line : lines) {
+    const auto& x = line.points;
+    for (std::size_t k = 1; k < x.size(); ++k) c.length += (x[k] - x[k - 1]).norm();
+    if (line.closed && x.size() > 2) c.length += (x.front() - x.back()).norm();
+  }
+  c.per_area = area > 0.0 ? c.length / area : 0.0;
+  return c;
+}
+
 FrostResults::FrostResults(const project::Project& p, const Model& m, const MechanicsRun* mechanics)
     : project_(p),
       rect_(std::get<project::Rectangle>(p.geometry)),
@@ -55,6 +66,7 @@ DamageState FrostResults::damage_now() const {
     broken += !intact;
   });
   d.broken_bond_share = all > 0 ? double(broken) / double(all) : 0.0;
+  d.broken_bond_energy = solid.broken_bond_energy();
   const auto phi = mechanics_->damage();
   const auto& V = model_.particles().volume;
   for (std::size_t i = 0; i < phi.size(); ++i) {
@@ -79,6 +91,24 @@ std::vector<double> FrostResults::rim_damage() const {
   return largest;
 }
 
+std::vector<double> FrostResults::crack_reach() const {
+  std::vector<double> reach(rect_.pores.size(), 0.0);
+  if (!mechanics_) return reach;
+  const auto phi = mechanics_->damage();
+  const auto& x = model_.particles().position;
+  for (std::size_t i = 0; i < phi.size(); ++i) {
+    if (model_.pore_of[i] >= 0 || phi[i] <= crack_damage) continue;
+    const auto rim = geometry::nearest_rim(x[i], rect_.pores);
+    if (rim.pore >= 0) reach[rim.pore] = std::max(reach[rim.pore], rim.distance);
+  }
+  return reach;
+}
+
+double FrostResults::crack_length_now() const {
+  if (!mechanics_) return 0.0;
+  return crack_measure(mesh_->isolines(mechanics_->damage(), crack_damage), rect_.width * rect_.height).length;
+}
+
 std::optional<double> FrostResults::broken_near_rims() const {
   if (!mechanics_) return std::nullopt;
   const auto& x = model_.particles().position;
@@ -95,18 +125,23 @@ std::optional<double> FrostResults::broken_near_rims() const {
 
 void FrostResults::after_equilibrium(double t) {
   const DamageState d = damage_now();
-  history_.push_back({t, d.broken_bond_share, d.largest_damage, d.damaged_area});
+  history_.push_back({t, d.broken_bond_share, d.largest_damage, d.damaged_area, d.broken_bond_energy});
 }
 
 void FrostResults::snapshot(double t, const std::filesystem::path& out, const std::string& stem) {
   if (!mechanics_) return;
   const DamageState d = damage_now();
+  const auto lines = mesh_->isolines(mechanics_->damage(), crack_damage);
+  const CrackMeasure c = crack_measure(lines, rect_.width * rect_.height);
   damage_.push_back({{"time", t / unit_},
                      {"broken_bond_share", d.broken_bond_share},
                      {"largest_damage", d.largest_damage},
-                     {"damaged_area", d.damaged_area}});
+                     {"damaged_area", d.damaged_area},
+                     {"crack_length", c.length},
+                     {"crack_length_per_area", c.per_area},
+                     {"broken_bond_energy", d.broken_bond_energy}});
   const std::string file = "cracks" + stem.substr(5) + ".vtp";
-  io::write_vtp(out / file, mesh_->isolines(mechanics_->damage(), crack_damage));
+  io::write_vtp(out / file, lines);
   cracks_.push_back({{"t", t / unit_}, {"file", file}});
 }
 
@@ -124,6 +159,7 @@ void FrostResults::add_fields(io::PointCloudFrame& frame, const thermal::Thermal
 json FrostResults::finish(const std::filesystem::path& out) const {
   json result;
   const auto rims = rim_damage();
+  const auto reach = crack_reach();
   // The ice's volume change (the solid's model, else water's 9 %).
   const auto& expansion = project_.mechanics ? project_.mechanics->freezing_expansion : std::nullopt;
   const double dV = expansion ? expansion->volume_change : project::FreezingExpansion{}.volume_change;
@@ -141,7 +177,8 @@ json FrostResults::finish(const std::filesystem::path& out) const {
                      {"freezing_end", optional_time(end_[p], unit_)},
                      {"max_rim_damage", mechanics_ ? json(rims[p]) : json(nullptr)},
                      // any broken bond within a horizon outside its rim
-                     {"cracked", mechanics_ ? json(rims[p] > 0.0) : json(nullptr)}});
+                     {"cracked", mechanics_ ? json(rims[p] > 0.0) : json(nullptr)},
+                     {"crack_reach", mechanics_ ? json(reach[p]) : json(nullptr)}});
   }
   result["pores"] = pores;
   if (const auto& g = rect_.pore_generator)
@@ -156,8 +193,9 @@ json FrostResults::finish(const std::filesystem::path& out) const {
     result["cracks"] = cracks_;
     const auto near = broken_near_rims();
     result["broken_bonds_near_rims"] = near ? json(*near) : json(nullptr);
-    std::string csv = "time,broken_bond_share,largest_damage,damaged_area\n";
-    for (const auto& h : history_) csv += fmt::format("{:.6g},{:.6g},{:.6g},{:.6g}\n", h[0] / unit_, h[1], h[2], h[3]);
+    std::string csv = "time,broken_bond_share,largest_damage,damaged_area,broken_bond_energy\n";
+    for (const auto& h : history_)
+      csv += fmt::format("{:.6g},{:.6g},{:.6g},{:.6g},{:.6g}\n", h[0] / unit_, h[1], h[2], h[3], h[4]);
     io::write_text_file(out / "damage.csv", csv);
   }
   return result;

@@ -28,7 +28,17 @@ struct DamageState {
   double broken_bond_share = 0.0;  // broken / all bonds between material points
   double largest_damage = 0.0;     // of a material point
   double damaged_area = 0.0;       // m2 per metre of depth with damage above crack_damage
+  double broken_bond_energy = 0.0; // J per metre of depth: the work to break the broken bonds
 };
+
+// The crack lines at one time: the damage-0.4 isolines' total length (m
+// per metre of depth; a thin crack band is bounded by two such lines, so
+// this is about twice the crack's own length) and that per unit area of
+// the plate (1/m).
+struct CrackMeasure {
+  double length = 0.0, per_area = 0.0;
+};
+CrackMeasure crack_measure(const std::vector<geometry::Polyline>& lines, double area);
 
 class FrostResults {
  public:
@@ -53,6 +63,12 @@ class FrostResults {
   // Share of the broken bonds whose midpoint lies within one pore radius
   // of that pore's rim (outside it); nullopt when none broke.
   std::optional<double> broken_near_rims() const;
+  // Each pore's crack reach (m): the farthest cracked point (damage above
+  // crack_damage) from its rim among the points whose nearest rim it is;
+  // 0 when none.
+  std::vector<double> crack_reach() const;
+  // The crack lines' total length now (m per metre of depth).
+  double crack_length_now() const;
   // Each pore's frozen fraction now, and its freezing start and end (s).
   const std::vector<double>& frozen() const { return frozen_; }
   const std::vector<std::optional<double>>& freezing_start() const { return start_; }
@@ -68,7 +84,7 @@ class FrostResults {
   double unit_;
   std::vector<double> frozen_;
   std::vector<std::optional<double>> start_, end_;
-  std::vector<std::array<double, 4>> history_;  // t (s), broken share, largest damage, damaged area
+  std::vector<std::array<double, 5>> history_;  // t (s), broken share, largest damage, damaged area, energy
   nlohmann::json damage_ = nlohmann::json::array(), cracks_ = nlohmann::json::array();
   std::unique_ptr<post::IsolineMesh> mesh_;
 };

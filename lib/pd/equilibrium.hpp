@@ -33,7 +33,12 @@ class DirectEquilibrium {
   // factored K) is below this times the RMS displacement of the unknowns.
   // refactor_after: CG iterations after which the next solve factors K
   // again; 0: factor K whenever it changed, so every solve is direct.
-  explicit DirectEquilibrium(double tolerance = 1e-8, int refactor_after = 60, int max_iterations = 400);
+  // 20 was the fastest of 0, 5, 10, 15, 20, 30 and 60 on the mortar plate
+  // at 3 um to 0.02 s (120 s against 259 s at 60 and 566 s at 0, 2
+  // threads; bench/README.md): a cascade's rounds need ever more CG
+  // iterations on an old factor, and a factorization costs about as much
+  // as twenty of them.
+  explicit DirectEquilibrium(double tolerance = 1e-8, int refactor_after = 20, int max_iterations = 400);
   ~DirectEquilibrium();
   DirectEquilibrium(DirectEquilibrium&&) noexcept;
   DirectEquilibrium& operator=(DirectEquilibrium&&) noexcept;

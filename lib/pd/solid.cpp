@@ -274,6 +274,7 @@ std::size_t PdSolid::break_bonds(const std::vector<double>& u, const std::vector
   // Rows in parallel (each touches only its own bonds), then the ends in
   // row order, so the list does not depend on the threads.
   std::vector<std::uint32_t> row_broken(n_, 0);
+  std::vector<double> row_energy(n_, 0.0);
   particles::for_each_particle(n_, [&](std::size_t i) {
     if (held(i)) return;
     std::uint32_t count = 0;
@@ -284,6 +285,7 @@ std::size_t PdSolid::break_bonds(const std::vector<double>& u, const std::vector
       if (intact_[e] && weight_[e] != 0.0 && !held(source(column_[e])) &&
           mechanical_stretch(i, e, u, dT) > law_.critical_stretch) {
         intact_[e] = 2;  // broken now
+        row_energy[i] += break_energy(i, e);
         weight_[e] = stiffness3_[e] = 0.0;  // the force loops need no test
         ++count;
       }
@@ -296,6 +298,7 @@ std::size_t PdSolid::break_bonds(const std::vector<double>& u, const std::vector
   for (std::size_t i = 0; i < n_; ++i) {
     if (row_broken[i] == 0) continue;
     broken += row_broken[i];
+    broken_energy_ += row_energy[i];
     for (std::size_t e = start_[i]; e < start_[i + 1]; ++e)
       if (intact_[e] == 2) {
         intact_[e] = 0;
@@ -316,6 +319,7 @@ std::size_t PdSolid::cut(const Vec2& a, const Vec2& b) {
       const double d1 = cross(b - a, p - a), d2 = cross(b - a, q - a), d3 = cross(q - p, a - p), d4 = cross(q - p, b - p);
       if (d1 * d2 < 0.0 && d3 * d4 < 0.0 && intact_[e]) {
         intact_[e] = 0;
+        broken_energy_ += break_energy(i, e);
         weight_[e] = stiffness3_[e] = 0.0;
         ++broken;
       }

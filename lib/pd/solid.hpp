@@ -21,6 +21,7 @@
 
 #include <Eigen/Core>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -83,6 +84,11 @@ class PdSolid {
   // s - s_T of every bond that can break (intact, bonded, not held), -inf
   // for the others: where a load step will first break one (MechanicsRun).
   std::vector<double> breakable_stretches(const std::vector<double>& u, const std::vector<double>& dT) const;
+  // The work it took to break the broken bonds (J per metre of depth):
+  // each bond's energy at its critical stretch s0, 1/2 c s0^2 |xi| V_i V_j
+  // per pair (its stiffness when it broke), pre-cracks included. A crack
+  // that cuts every bond across a line of length L costs G0 L.
+  double broken_bond_energy() const { return broken_energy_; }
   // The largest mechanical stretch s - s_T over the intact bonds.
   double largest_stretch(const std::vector<double>& u, const std::vector<double>& dT) const;
   // Share of broken bonds of each free particle, weighted by volume (bonds
@@ -171,6 +177,12 @@ class PdSolid {
     return (L - length_[e]) / length_[e] - thermal_stretch(i, k, dT);
   }
   std::uint32_t source(std::uint32_t k) const { return k < n_ ? k : ghosts_[k - n_].source; }
+  // Particle i's share of bond e's energy at its critical stretch (the
+  // row holds each pair twice; a ghost's row is not the body's).
+  double break_energy(std::size_t i, std::size_t e) const {
+    const double s0 = std::isfinite(law_.critical_stretch) ? law_.critical_stretch : 0.0;
+    return 0.25 * weight_[e] * s0 * s0 * length_[e] * volume_[i];
+  }
   double thermal_stretch(std::size_t i, std::uint32_t k, const std::vector<double>& dT) const {
     const std::uint32_t j = source(k);
     const double eigen = eigen_.empty() ? 0.0 : 0.5 * (eigen_[i] + eigen_[k]);
@@ -198,6 +210,7 @@ class PdSolid {
   mutable std::vector<std::uint8_t> intact_;
   std::vector<double> stiffness_;
   std::uint64_t stiffness_version_ = 0;
+  double broken_energy_ = 0.0;  // J/m
 };
 
 }  // namespace frostwall::pd
