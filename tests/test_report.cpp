@@ -120,9 +120,13 @@ json write_frost_output(const fs::path& out, bool pores) {
   if (pores) {
     summary["pores"] = pore_list;
     summary["all_pores_frozen"] = nullptr;
-    summary["damage"] = json::array();
-    for (double t : times)
-      summary["damage"].push_back({{"time", t}, {"broken_bond_share", 0.01}, {"largest_damage", 0.5}, {"damaged_area", 1e-11}});
+    summary["damage"] = summary["cracks"] = json::array();
+    for (std::size_t k = 0; k < times.size(); ++k) {
+      summary["damage"].push_back({{"time", times[k]}, {"broken_bond_share", 0.01}, {"largest_damage", 0.5}, {"damaged_area", 1e-11},
+                                   {"crack_length", 2.5e-4 * (k + 1)}, {"crack_length_per_area", 4e3 * (k + 1)},
+                                   {"broken_bond_energy", 1.5e-3 * (k + 1)}});
+      summary["cracks"].push_back({{"t", times[k]}, {"file", fmt::format("cracks_{:04d}.vtp", k + 1)}});
+    }
     std::ofstream csv(out / "damage.csv");
     csv << "time,broken_bond_share,largest_damage,damaged_area\n";
     for (int r = 0; r <= 9; ++r) csv << fmt::format("{},{},{},{}\n", 0.001 * (r + 1), 0.002 * r, 0.08 * r, 1e-12 * r);
@@ -376,6 +380,12 @@ TEST_CASE("The report of a porous plate has a frost damage section", "[shared][r
   for (const auto& p : pores) CHECK(bars.find(">pore " + p["id"].dump() + "<") != std::string::npos);
   CHECK(bars.find("all pores frozen") == std::string::npos);
   CHECK(test::html_balance_problem(bars) == "");
+  // The crack table: a row per snapshot, in the units of its header.
+  REQUIRE(view["crack_rows"].size() == snapshots);
+  CHECK(view["crack_rows"][1]["length"] == "500");         // 5e-4 m in um
+  CHECK(view["crack_rows"][1]["per_area"] == "8");         // 8e3 /m in /mm
+  CHECK(view["crack_rows"][1]["energy"] == "3");           // 3e-3 J/m in mJ/m
+  CHECK(view["crack_rows"][1]["file"] == "cracks_0002.vtp");
   // Broken bonds and largest damage, every row of damage.csv a point.
   REQUIRE(view["frost_charts"].size() == 2);
   for (const auto& c : view["frost_charts"]) CHECK(polyline_points(c["svg"].get<std::string>()) == rows);

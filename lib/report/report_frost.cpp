@@ -36,6 +36,7 @@ std::string saturation_text(const json& pore) {
   return number(S, 3) + (imposed.is_number() && imposed.get<double>() <= 0.0 ? " \u2020" : "");
 }
 
+// A time (or any positive measure) to three significant digits, whole above 1000.
 std::string time_text(double t) {
   if (!std::isfinite(t)) return "–";
   return std::abs(t) >= 1000 ? fmt::format("{:.0f}", t) : fmt::format("{:.3g}", t);
@@ -188,9 +189,9 @@ void add_crack_table(const RunRecord& run, json& view) {
     const std::size_t k = rows.size();
     rows.push_back({{"time", time_text(value_of(d.value("time", json())))},
                     {"broken", number(100.0 * value_of(d.value("broken_bond_share", json())), 3)},
-                    {"length", number(1e6 * value_of(d["crack_length"]), 1)},
-                    {"per_area", number(1e-3 * value_of(d.value("crack_length_per_area", json())), 3)},
-                    {"energy", number(1e3 * value_of(d.value("broken_bond_energy", json())), 3)},
+                    {"length", time_text(1e6 * value_of(d["crack_length"]))},
+                    {"per_area", time_text(1e-3 * value_of(d.value("crack_length_per_area", json())))},
+                    {"energy", time_text(1e3 * value_of(d.value("broken_bond_energy", json())))},
                     {"file", k < cracks.size() ? cracks[k].value("file", "") : ""}});
   }
   view["crack_rows"] = rows;
