@@ -190,7 +190,7 @@ Reach single_pore(double spacing) {
   Reach out;
   out.reach = r.frost->crack_reach()[0];
   out.energy = d.broken_bond_energy;
-  out.length = r.frost->crack_length_now();
+  out.length = r.frost->crack_measure_now().length;
   return out;
 }
 }  // namespace

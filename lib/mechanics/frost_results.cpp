@@ -104,9 +104,9 @@ std::vector<double> FrostResults::crack_reach() const {
   return reach;
 }
 
-double FrostResults::crack_length_now() const {
-  if (!mechanics_) return 0.0;
-  return crack_measure(mesh_->isolines(mechanics_->damage(), crack_damage), rect_.width * rect_.height).length;
+std::vector<geometry::Polyline> FrostResults::crack_lines() const {
+  if (!mechanics_) return {};
+  return mesh_->isolines(mechanics_->damage(), crack_damage);
 }
 
 std::optional<double> FrostResults::broken_near_rims() const {
@@ -131,7 +131,7 @@ void FrostResults::after_equilibrium(double t) {
 void FrostResults::snapshot(double t, const std::filesystem::path& out, const std::string& stem) {
   if (!mechanics_) return;
   const DamageState d = damage_now();
-  const auto lines = mesh_->isolines(mechanics_->damage(), crack_damage);
+  const auto lines = crack_lines();
   const CrackMeasure c = crack_measure(lines, rect_.width * rect_.height);
   damage_.push_back({{"time", t / unit_},
                      {"broken_bond_share", d.broken_bond_share},

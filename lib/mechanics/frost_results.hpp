@@ -67,8 +67,8 @@ class FrostResults {
   // crack_damage) from its rim among the points whose nearest rim it is;
   // 0 when none.
   std::vector<double> crack_reach() const;
-  // The crack lines' total length now (m per metre of depth).
-  double crack_length_now() const;
+  // The crack lines' measure now.
+  CrackMeasure crack_measure_now() const { return crack_measure(crack_lines(), rect_.width * rect_.height); }
   // Each pore's frozen fraction now, and its freezing start and end (s).
   const std::vector<double>& frozen() const { return frozen_; }
   const std::vector<std::optional<double>>& freezing_start() const { return start_; }
@@ -76,6 +76,7 @@ class FrostResults {
 
  private:
   std::vector<double> rim_damage() const;  // largest damage within a horizon outside each rim
+  std::vector<geometry::Polyline> crack_lines() const;  // the damage isolines at crack_damage
 
   const project::Project& project_;
   const project::Rectangle& rect_;

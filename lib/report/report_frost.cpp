@@ -36,8 +36,8 @@ std::string saturation_text(const json& pore) {
   return number(S, 3) + (imposed.is_number() && imposed.get<double>() <= 0.0 ? " \u2020" : "");
 }
 
-// A time (or any positive measure) to three significant digits, whole above 1000.
-std::string time_text(double t) {
+// A time or a measure to three significant digits, whole above 1000.
+std::string short_number(double t) {
   if (!std::isfinite(t)) return "–";
   return std::abs(t) >= 1000 ? fmt::format("{:.0f}", t) : fmt::format("{:.3g}", t);
 }
@@ -187,11 +187,11 @@ void add_crack_table(const RunRecord& run, json& view) {
   for (const auto& d : run.summary.value("damage", json::array())) {
     if (!d.contains("crack_length")) continue;  // older summaries
     const std::size_t k = rows.size();
-    rows.push_back({{"time", time_text(value_of(d.value("time", json())))},
+    rows.push_back({{"time", short_number(value_of(d.value("time", json())))},
                     {"broken", number(100.0 * value_of(d.value("broken_bond_share", json())), 3)},
-                    {"length", time_text(1e6 * value_of(d["crack_length"]))},
-                    {"per_area", time_text(1e-3 * value_of(d.value("crack_length_per_area", json())))},
-                    {"energy", time_text(1e3 * value_of(d.value("broken_bond_energy", json())))},
+                    {"length", short_number(1e6 * value_of(d["crack_length"]))},
+                    {"per_area", short_number(1e-3 * value_of(d.value("crack_length_per_area", json())))},
+                    {"energy", short_number(1e3 * value_of(d.value("broken_bond_energy", json())))},
                     {"file", k < cracks.size() ? cracks[k].value("file", "") : ""}});
   }
   view["crack_rows"] = rows;
@@ -254,8 +254,8 @@ void add_frost(const RunRecord& run, json& view) {
                     {"centre_y", number(1e6 * value_of(p.value("y", json())), 1)},
                     {"radius", number(1e6 * value_of(p.value("radius", json())), 1)},
                     {"saturation", saturation_text(p)},
-                    {"freezing_start", time_text(start)},
-                    {"freezing_end", time_text(stop)},
+                    {"freezing_start", short_number(start)},
+                    {"freezing_end", short_number(stop)},
                     {"max_rim_damage", number(p.value("max_rim_damage", json()), 2)},
                     {"crack_reach", number(value_of(p.value("crack_reach", json())) / value_of(p.value("radius", json())), 2)}});
   }
@@ -270,7 +270,7 @@ void add_frost(const RunRecord& run, json& view) {
   view["pore_bars_caption"] = fmt::format(
       "Each pore from its first ice to fully frozen, in the order of the list{}. A fading bar without a right end is still "
       "freezing at the end of the run ({} {}).",
-      std::isfinite(all_frozen) ? "; dashed: all pores frozen" : "", time_text(end), unit);
+      std::isfinite(all_frozen) ? "; dashed: all pores frozen" : "", short_number(end), unit);
 
   // Damage over time (none without mechanics).
   const std::string source = d.source == "damage.csv" ? "damage.csv, one point per mechanical equilibrium"
@@ -284,13 +284,13 @@ void add_frost(const RunRecord& run, json& view) {
           {"caption", "The largest damage of any particle, its share of broken bonds (" + source + ")."}}});
 
   std::string note = fmt::format("{} water-filled pores; ", pores.size());
-  if (std::isfinite(all_frozen)) note += fmt::format("all frozen at {} {}", time_text(all_frozen), unit);
+  if (std::isfinite(all_frozen)) note += fmt::format("all frozen at {} {}", short_number(all_frozen), unit);
   else note += fmt::format("{} of them fully frozen within the run, {} started", finished, started);
-  if (std::isfinite(first_start)) note += fmt::format(" (the first ice at {} {})", time_text(first_start), unit);
+  if (std::isfinite(first_start)) note += fmt::format(" (the first ice at {} {})", short_number(first_start), unit);
   note += ".";
   if (!d.time.empty())
     note += fmt::format(" At {} {}: {:.3g} % of the bonds broken, largest damage {}, damaged area (damage above 0.4) {}.",
-                        time_text(d.time.back()), unit, 100.0 * d.broken_share.back(), number(d.largest.back(), 2),
+                        short_number(d.time.back()), unit, 100.0 * d.broken_share.back(), number(d.largest.back(), 2),
                         area_text(d.area.back(), run));
   view["frost_note"] = note;
   add_crack_table(run, view);
