@@ -116,7 +116,10 @@ TEST_CASE("Groundwater without flow is still water, and flowing water delays clo
   WARN(fmt::format("water through the upstream gap: {:.4f} m3/d per m at the start (hand {:.4f}), {:.2g} at the end; {} solves",
                    flow["upstream"][0].get<double>(), hand, flow["upstream"].back().get<double>(), flow["upstream"].size()));
   CHECK(flow["upstream"][0].get<double>() == Approx(hand).epsilon(0.05));
-  CHECK(flow["upstream"].size() == fast["groundwater"]["flow_solves"].get<std::size_t>());
+  // One record per step that brought a new flow (a step may solve twice:
+  // at its start and for its own ice; the record is the flow it used).
+  CHECK(flow["upstream"].size() <= fast["groundwater"]["flow_solves"].get<std::size_t>());
+  CHECK(2 * flow["upstream"].size() > fast["groundwater"]["flow_solves"].get<std::size_t>());
   for (std::size_t k = 0; k < flow["upstream"].size(); ++k)
     CHECK(std::abs(flow["upstream"][k].get<double>() - flow["downstream"][k].get<double>()) ==
           Approx(flow["flank"][k].get<double>()).margin(1e-9 * hand));
@@ -125,7 +128,7 @@ TEST_CASE("Groundwater without flow is still water, and flowing water delays clo
     const auto& balance = (*s)["heat_balance"];
     double brought = 0.0;
     for (const auto& [name, heat] : balance["from_boundaries"].items()) brought += heat.get<double>();
-    CHECK(balance["stored_change"].get<double>() == Approx(brought).epsilon(1e-9));
+    CHECK(balance["stored_change"].get<double>() == Approx(brought).epsilon(1e-8));  // Newton's tolerance
   }
 }
 
@@ -134,28 +137,69 @@ TEST_CASE("Groundwater without flow is still water, and flowing water delays clo
 // first order in time, so closure comes a little late at the default step
 // change and converges on the explicit run as the step shrinks; the heat
 // balance holds through the water's walls.
-TEST_CASE("Groundwater: the coupled step closes with the explicit scheme as its step shrinks", "[freezing][groundwater][cli]") {
+// The coupled step against the explicit limited scheme (held to the
+// advective Courant limit, 592 short steps): the flow is solved again for
+// each step's own ice after two Newton iterations and the limiter is then
+// held, so the closure day stays within 1 % of the explicit run's at a
+// fraction of its steps, and the heat balance closes to the Newton
+// tolerance (1e-7 of the latent heat per particle and step).
+TEST_CASE("Groundwater: the coupled step closes within 1 % of the explicit scheme", "[freezing][groundwater][cli]") {
   json explicit_run = scaled_ring({1.0, 0.0});
-  json coupled = explicit_run, fine = explicit_run;
+  json coupled = explicit_run;
   explicit_run["groundwater"]["advection"] = "limited";
   coupled["groundwater"]["advection"] = "coupled";
-  fine["groundwater"]["advection"] = "coupled";
-  fine["numerics"]["step_change"] = 0.0625;
-  const json a = run(explicit_run), b = run(coupled), c = run(fine);
-  const double err = closure(b) / closure(a) - 1.0, err_fine = closure(c) / closure(a) - 1.0;
-  WARN(fmt::format("closure {:.4f} d explicit limited ({} steps); coupled {:.4f} d ({} steps, {:+.2f} %), "
-                   "{:.4f} d at a quarter of the step change ({} steps, {:+.2f} %)",
-                   closure(a), a["run"]["steps"].get<int>(), closure(b), b["run"]["steps"].get<int>(), 100.0 * err, closure(c),
-                   c["run"]["steps"].get<int>(), 100.0 * err_fine));
+  const json a = run(explicit_run), b = run(coupled);
+  const double err = closure(b) / closure(a) - 1.0;
+  WARN(fmt::format("closure {:.4f} d explicit limited ({} steps); coupled {:.4f} d ({} steps, {} Newton iterations, {:+.2f} %)",
+                   closure(a), a["run"]["steps"].get<int>(), closure(b), b["run"]["steps"].get<int>(),
+                   b["run"]["newton_iterations"].get<int>(), 100.0 * err));
   CHECK(b["run"]["integrator"] == "implicit");
-  CHECK(std::abs(err) < 0.03);
-  CHECK(std::abs(err_fine) < 0.3 * std::abs(err));
-  CHECK(b["run"]["steps"].get<int>() < a["run"]["steps"].get<int>());
+  CHECK(std::abs(err) < 0.01);
+  CHECK(b["run"]["steps"].get<int>() < a["run"]["steps"].get<int>() / 2);
   CHECK(b["groundwater"]["last_gap"]["position"] == "upstream");
   const auto& balance = b["heat_balance"];
   double brought = 0.0;
   for (const auto& [name, heat] : balance["from_boundaries"].items()) brought += heat.get<double>();
-  CHECK(balance["stored_change"].get<double>() == Approx(brought).epsilon(1e-9));
+  CHECK(balance["stored_change"].get<double>() == Approx(brought).epsilon(1e-8));
+}
+
+// The longest steps the coupled run takes (a wall that stops closing at
+// 2 m/d, 30 days: steps of 0.15 d, the run's cap of a 200th of its length):
+// the heat balance holds to the Newton tolerance and no temperature leaves
+// the range of the pipes (-20 C) and the entering water (10 C), at the
+// sharp front or anywhere.
+TEST_CASE("Groundwater: at the longest coupled steps the heat balances and no temperature leaves [pipe, far field]", "[freezing][groundwater][cli]") {
+  json p = scaled_ring({2.0, 0.0});
+  p["time"] = {{"end", 30}, {"unit", "d"}, {"snapshots", {10, 20, 30}}};
+  p["output"]["vtk"] = true;
+  double lowest = 1e300, highest = -1e300;
+  const json s = run(p, [&](const fs::path& out) {
+    for (const auto& entry : fs::directory_iterator(out)) {
+      if (entry.path().filename().string().rfind("field_", 0) != 0 || entry.path().extension() != ".vtu") continue;
+      vtkNew<vtkXMLUnstructuredGridReader> reader;
+      reader->SetFileName(entry.path().c_str());
+      reader->Update();
+      vtkUnstructuredGrid* grid = reader->GetOutput();
+      vtkDataArray* T = grid->GetPointData()->GetArray("temperature");
+      vtkDataArray* boundary = grid->GetPointData()->GetArray("boundary");
+      REQUIRE(T != nullptr);
+      for (vtkIdType i = 0; i < grid->GetNumberOfPoints(); ++i)
+        if (boundary->GetTuple1(i) < 0) lowest = std::min(lowest, T->GetTuple1(i)), highest = std::max(highest, T->GetTuple1(i));
+    }
+  });
+  const double steps = s["run"]["steps"].get<double>();
+  WARN(fmt::format("{} steps (mean {:.3f} d), {} Newton iterations; free particles between {:.6f} and {:.6f} C", steps,
+                   30.0 / steps, s["run"]["newton_iterations"].get<int>(), lowest, highest));
+  CHECK(steps < 400);
+  // Newton stops at 1e-7 of the latent heat per particle and step: some
+  // 1e-6 K of sand's sensible heat.
+  CHECK(lowest >= -20.0 - 1e-5);
+  CHECK(highest <= 10.0 + 1e-5);
+  CHECK(lowest < -5.0);  // the sampled fields do hold frozen ground
+  const auto& balance = s["heat_balance"];
+  double brought = 0.0;
+  for (const auto& [name, heat] : balance["from_boundaries"].items()) brought += heat.get<double>();
+  CHECK(balance["stored_change"].get<double>() == Approx(brought).epsilon(1e-8));
 }
 
 // The flow between two pipes: with the ring turned by half a pitch the

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "post/closure.hpp"
+#include "post/gap_closure.hpp"
 #include "freezing/model.hpp"
 
 namespace frostwall::freezing {
@@ -23,8 +24,14 @@ class ClosureTracker {
 
   // longest_step: the run's step limit outside the freezing gap (s).
   ClosureTracker(const Model& m, double t_end, double longest_step);
-  // After each step (and at t = 0).
-  void after_step(const thermal::ThermalModel& model, double t);
+  // Under seepage: while a gap's bridge freezes, a step may lower its
+  // largest latent share by at most this much (the gap's own closure day
+  // is then resolved by steps, as the wall's is by step_fall).
+  static constexpr double gap_fall = 0.25;
+
+  // After each step (and at t = 0); gaps: closure per gap, observed up to t
+  // (under seepage; else null).
+  void after_step(const thermal::ThermalModel& model, double t, const post::GapClosure* gaps = nullptr);
   std::optional<double> closure_time() const { return watch_.closure_time(); }  // s
   std::optional<double> contact_time() const { return watch_.contact_time(); }  // s
 

@@ -50,6 +50,7 @@ GroundwaterFlow::GroundwaterFlow(const project::Groundwater& water, Model& m)
     auto* implicit = thermal::find_integrator<thermal::BackwardEuler>(conduction_.get());
     if (!implicit) throw std::logic_error("GroundwaterFlow: the coupled scheme needs the backward-Euler integrator");
     implicit->couple(&heat_);
+    implicit->on_settled([this](const thermal::ThermalModel& model) { solve_if_changed(model); });
   }
   solve_if_changed(*m.model);
 }

@@ -121,7 +121,6 @@ thermal::TimeLoopObservers HeatRun::observers() {
 }
 
 void HeatRun::after_step(const thermal::ThermalModel& m, double t) {
-  if (closure_) closure_->after_step(m, t);
   if (gaps_) {
     m.latent_left(latent_left_);
     gaps_->observe(t, latent_left_);
@@ -133,6 +132,7 @@ void HeatRun::after_step(const thermal::ThermalModel& m, double t) {
     for (std::size_t i = 0; i < m.free_count(); ++i) area += m.volume()[i] * (1.0 - m.liquid_fraction()[i]);
     frozen_area_.add(t / 86400.0, area);
   }
+  if (closure_) closure_->after_step(m, t, gaps_ ? &*gaps_ : nullptr);
   if (brine_) brine_->after_step(m, t);
   if (extension_) extension_->after_step(m, t);
   if (results_) sample_series(m, t);

@@ -1,6 +1,8 @@
 #include "groundwater/darcy_cloud.hpp"
 
 #include <Eigen/CholmodSupport>
+
+#include "particles/parallel.hpp"
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
 #include <algorithm>
@@ -78,9 +80,12 @@ DarcySolveReport DarcyCloud::solve(const std::vector<double>& k) {
   Eigen::SparseMatrix<double> A(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
   A.setFromTriplets(entries.begin(), entries.end());
   DarcySolveReport report;
-  report.factored = factor_->factor(A);
+  // CHOLMOD's BLAS calls on one thread: the supernodes of a 2-D cloud are
+  // small, and a team forked for each cost 2.4 times the whole run's time
+  // under seepage (bench/README.md).
+  report.factored = particles::serially([&] { return factor_->factor(A); });
   if (!report.factored) throw std::runtime_error("Darcy flow: the system could not be factored (is the cloud connected?)");
-  const Eigen::VectorXd x = factor_->solve(rhs);
+  const Eigen::VectorXd x = particles::serially([&] { return factor_->solve(rhs); });
   psi_.assign(volume_.size(), 0.0);
   for (std::size_t i = 0; i < n; ++i) psi_[i] = x[Eigen::Index(i)];
   for (std::size_t j = n; j < psi_.size(); ++j) psi_[j] = fixed_value(j);

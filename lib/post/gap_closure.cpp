@@ -40,12 +40,21 @@ GapClosure::GapClosure(const particles::ParticleSet<2>& P, const std::vector<geo
   }
 }
 
+std::optional<double> GapClosure::time_to_fall(double change) const {
+  std::optional<double> soonest;
+  for (const auto& gap : gaps_)
+    if (!gap.closed && gap.worst < 1.0 && gap.falling > 0.0)
+      soonest = std::min(soonest.value_or(change / gap.falling), change / gap.falling);
+  return soonest;
+}
+
 void GapClosure::observe(double t, const std::vector<double>& g) {
   for (auto& gap : gaps_) {
     double worst = -1e300;
     for (std::uint32_t i : gap.along) worst = std::max(worst, g[i]);
     if (!gap.closed && worst <= 0.0)
       gap.closed = gap.worst > 0.0 && t > last_t_ ? last_t_ + (t - last_t_) * gap.worst / (gap.worst - worst) : t;
+    gap.falling = t > last_t_ ? (gap.worst - worst) / (t - last_t_) : 0.0;
     gap.worst = worst;
   }
   last_t_ = t;

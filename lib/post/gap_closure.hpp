@@ -31,6 +31,7 @@ struct Gap {
   std::vector<std::uint32_t> along;  // free particles on the segment
   std::optional<double> closed;      // s
   double worst = 1.0;                // the largest latent share left along it, last observed
+  double falling = 0.0;              // -d worst / dt between the last two observations (1/s)
   // The water through the gap at each flow solve: (s, m^2/s per metre of
   // depth, the magnitude).
   std::vector<std::pair<double, double>> flow;
@@ -53,6 +54,10 @@ class GapClosure {
   // The gap that closed last (or is still open, the most open first); null
   // without gaps.
   const Gap* last() const;
+  // The time in which the fastest-closing open gap, at its present rate,
+  // loses `change` of the latent share along its bridge; null while no open
+  // gap is freezing. A step limit that resolves each gap's closure day.
+  std::optional<double> time_to_fall(double change) const;
 
  private:
   std::vector<Gap> gaps_;

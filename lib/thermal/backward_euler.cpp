@@ -114,7 +114,8 @@ struct BackwardEuler::LinearSystem {
 BackwardEuler::BackwardEuler(BackwardEulerSettings settings, double explicit_step)
     : settings_(settings),
       control_(settings.step_change, settings.first_step > 0.0 ? settings.first_step : 5.0 * explicit_step,
-               settings.max_steps_explicit * explicit_step, settings.growth) {}
+               settings.max_steps_explicit * explicit_step, settings.growth),
+      max_step_(settings.max_steps_explicit * explicit_step) {}
 
 BackwardEuler::~BackwardEuler() = default;
 
@@ -156,6 +157,11 @@ bool BackwardEuler::try_step(ThermalModel& model, double t, double dt) {
     const auto& T = model.temperature();
     const auto& H = model.enthalpy();
     const auto& V = model.volume();
+    if (water_ && it == 0) water_->release_limiter();
+    if (water_ && settings_.settle_after > 0 && it == settings_.settle_after) {
+      if (settled_) settled_(model);
+      water_->hold_limiter(model);
+    }
     if (water_) water_->rate(model, t + dt, water_rate_, water_heat_);
     const double worst = particles::max_over_particles(n, [&](std::size_t i) {
       double flow = water_ ? water_rate_[i] / V[i] : 0.0;
@@ -174,8 +180,12 @@ bool BackwardEuler::try_step(ThermalModel& model, double t, double dt) {
     system_->assemble(model, a_, slope, dt, water_);
     constexpr double linear_tol = 1e-8;
     system_->solver.setTolerance(linear_tol);
-    system_->solver.compute(system_->A);
-    x = system_->solver.solveWithGuess(rhs, Eigen::VectorXd::Zero(n));
+    // ILU(0) and its triangular solves are serial; Eigen's threaded
+    // products between them only woke the team for little work.
+    particles::serially([&] {
+      system_->solver.compute(system_->A);
+      x = system_->solver.solveWithGuess(rhs, Eigen::VectorXd::Zero(n));
+    });
     stats_.linear_iterations += static_cast<std::size_t>(system_->solver.iterations());
 
     // The new enthalpies; a pinned particle takes what its row leaves over.

@@ -24,6 +24,7 @@
 // balance independent of the step, which splitting does not.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -39,6 +40,10 @@ struct BackwardEulerSettings {
   double max_steps_explicit = 1e4;  // longest step, in explicit steps
   double newton_tolerance = 1e-7;  // max |residual| dt / latent heat
   int max_newton = 40;
+  // With water: after this many Newton iterations of a step (0: never) the
+  // step's hook runs (the flow solved again for the iterate's ice) and the
+  // limiter is held at the iterate (HeatAdvection::hold_limiter).
+  int settle_after = 2;
 };
 
 // Counters a benchmark or a test reads after a run.
@@ -55,20 +60,26 @@ class BackwardEuler final : public Integrator {
   double preferred_step(const ThermalModel&) const override { return control_.step(); }
   std::vector<double> advance(ThermalModel& model, double t, double dt) override;
   const char* name() const override { return "implicit"; }
+  // Caps the step (a closure about to happen); infinity lifts the cap.
+  void limit_step(double max_step) { control_.limit(std::min(max_step, max_step_)); }
   const ImplicitStatistics& statistics() const { return stats_; }
   // The water's heat stepped with the conduction (nullptr: conduction alone).
-  void couple(const HeatAdvection* water) { water_ = water; }
+  void couple(HeatAdvection* water) { water_ = water; }
+  // Runs once a step after settle_after Newton iterations, before the limiter is held.
+  void on_settled(std::function<void(const ThermalModel&)> hook) { settled_ = std::move(hook); }
 
  private:
   bool try_step(ThermalModel& model, double t, double dt);
 
   BackwardEulerSettings settings_;
   ActivityStepControl control_;
+  double max_step_;  // the settings' longest step, s
   ImplicitStatistics stats_;
   struct LinearSystem;  // the Newton matrix's fixed pattern and its solver
   std::unique_ptr<LinearSystem> system_;
   std::vector<double> residual_, next_H_;
-  const HeatAdvection* water_ = nullptr;
+  HeatAdvection* water_ = nullptr;
+  std::function<void(const ThermalModel&)> settled_;
   std::vector<double> water_rate_, water_heat_;  // at the iterate: W per metre
 };
 

@@ -32,7 +32,7 @@ void HeatAdvection::rate(const ThermalModel& model, double t, std::vector<double
   if (flux_.size() != P.pairs()) throw std::logic_error("HeatAdvection: one flux per pair expected");
   // The implicit scheme steps its own faces; the coupled one leaves across
   // a wall at the particle's temperature (upwind, so monotone at any step).
-  const bool limited = scheme_ == AdvectionScheme::limited || scheme_ == AdvectionScheme::coupled;
+  const bool limited = (scheme_ == AdvectionScheme::limited || scheme_ == AdvectionScheme::coupled) && !held_;
   const bool leave_upwind = scheme_ == AdvectionScheme::coupled;
   if (limited) particles::pair_gradient(P, model.temperature(), gradient_);
   const auto& T = model.temperature();
@@ -66,6 +66,30 @@ void HeatAdvection::rate(const ThermalModel& model, double t, std::vector<double
         rate[j] += heat;
       }
     }
+  if (held_)
+    for (std::size_t i = 0; i < P.n_free; ++i) rate[i] += correction_[i];
+}
+
+void HeatAdvection::hold_limiter(const ThermalModel& model) {
+  const auto& P = model.pairs();
+  held_ = false;
+  if (scheme_ != AdvectionScheme::coupled && scheme_ != AdvectionScheme::limited) return;
+  particles::pair_gradient(P, model.temperature(), gradient_);
+  const auto& T = model.temperature();
+  correction_.assign(P.n_free, 0.0);
+  for (std::size_t i = 0; i < P.n_free; ++i)
+    for (std::size_t e = P.row_start[i]; e < P.row_start[i + 1]; ++e) {
+      const double Q = flux_[e];
+      const std::uint32_t j = P.column[e];
+      if (j >= P.n_free || Q <= 0.0) continue;
+      const double jump = T[j] - T[i];
+      if (jump == 0.0) continue;
+      const double r = 2.0 * (gradient_[2 * i] * P.vector[2 * e] + gradient_[2 * i + 1] * P.vector[2 * e + 1]) / jump - 1.0;
+      const double heat = rho_c_w_ * Q * 0.5 * (r + std::abs(r)) / (1.0 + std::abs(r)) * jump;
+      correction_[i] -= heat;
+      correction_[j] += heat;
+    }
+  held_ = true;
 }
 
 std::vector<double> HeatAdvection::advance(ThermalModel& model, double t, double dt) {

@@ -48,6 +48,7 @@ class HeatAdvection {
 
   void set_pair_flux(std::vector<double> pair_flux) {
     flux_ = std::move(pair_flux);
+    held_ = false;
     stable_ = -1.0;
     order_.clear();
   }
@@ -69,6 +70,15 @@ class HeatAdvection {
   // (Wall temperatures at time t.)
   void rate(const ThermalModel& model, double t, std::vector<double>& rate, std::vector<double>& boundary_heat) const;
 
+  // The coupled step's limiter, held: from now on rate() takes upwind
+  // faces plus each pair's limited correction, rho_w c_w Q phi (T_d - T_u) / 2,
+  // as it is at the model's present temperatures. The Newton matrix is the
+  // upwind part, so with the correction held Newton converges as upwind
+  // does (the limiter's own lag costs one iteration per digit otherwise).
+  // The corrections are pair exchanges: the heat stays conserved.
+  void hold_limiter(const ThermalModel& model);
+  void release_limiter() { held_ = false; }
+
   // Advances the enthalpy from t by dt in as many equal stable steps as
   // needed; returns the heat carried in from each boundary, J per metre.
   std::vector<double> advance(ThermalModel& model, double t, double dt);
@@ -84,6 +94,8 @@ class HeatAdvection {
   AdvectionScheme scheme_;
   mutable std::vector<double> gradient_;  // of T, 2 per free particle
   mutable double stable_ = -1.0;          // stable_step() for these fluxes (< 0: not yet found)
+  bool held_ = false;                     // hold_limiter(): correction_ is added to upwind faces
+  std::vector<double> correction_;        // per free particle, W per metre
   std::vector<double> rate_, heat_, start_;
   std::vector<double> theta_;
   std::vector<std::uint32_t> order_, inflow_start_, inflow_pair_, row_of_pair_;
