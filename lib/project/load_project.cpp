@@ -248,7 +248,7 @@ void read_groundwater_block(const Node& root, bool shaft, Project& project) {
         if (!numerics["step_change"].present()) project.numerics.step_change = 0.25;
       }
       project.warnings.push_back(
-          "groundwater: a full-size run under flow takes one to two hours on two cores, and beside frozen ground "
+          "groundwater: a full-size run under flow takes about an hour or more on two cores, and beside frozen ground "
           "the Darcy flux is 7-9 % off (docs/groundwater.md, Limits)");
     }
   }
