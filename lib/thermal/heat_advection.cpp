@@ -27,6 +27,12 @@ double HeatAdvection::stable_step(const ThermalModel& model) const {
   return stable_;
 }
 
+double HeatAdvection::limited_correction(const particles::PairWeights& P, std::size_t u, std::size_t e, double jump) const {
+  if (jump == 0.0) return 0.0;
+  const double r = 2.0 * (gradient_[2 * u] * P.vector[2 * e] + gradient_[2 * u + 1] * P.vector[2 * e + 1]) / jump - 1.0;
+  return 0.5 * (r + std::abs(r)) / (1.0 + std::abs(r)) * jump;  // van Leer's phi(r) (T_d - T_u) / 2
+}
+
 void HeatAdvection::rate(const ThermalModel& model, double t, std::vector<double>& rate, std::vector<double>& boundary_heat) const {
   const auto& P = model.pairs();
   if (flux_.size() != P.pairs()) throw std::logic_error("HeatAdvection: one flux per pair expected");
@@ -55,12 +61,7 @@ void HeatAdvection::rate(const ThermalModel& model, double t, std::vector<double
         rate[i] -= heat;
         boundary_heat[b] -= heat;
       } else if (Q > 0.0) {
-        double face = T[i];
-        const double jump = T[j] - T[i];
-        if (limited && jump != 0.0) {
-          const double r = 2.0 * (gradient_[2 * i] * P.vector[2 * e] + gradient_[2 * i + 1] * P.vector[2 * e + 1]) / jump - 1.0;
-          face += 0.5 * (r + std::abs(r)) / (1.0 + std::abs(r)) * jump;
-        }
+        const double face = T[i] + (limited ? limited_correction(P, i, e, T[j] - T[i]) : 0.0);
         const double heat = rho_c_w_ * Q * face;
         rate[i] -= heat;
         rate[j] += heat;
@@ -82,10 +83,7 @@ void HeatAdvection::hold_limiter(const ThermalModel& model) {
       const double Q = flux_[e];
       const std::uint32_t j = P.column[e];
       if (j >= P.n_free || Q <= 0.0) continue;
-      const double jump = T[j] - T[i];
-      if (jump == 0.0) continue;
-      const double r = 2.0 * (gradient_[2 * i] * P.vector[2 * e] + gradient_[2 * i + 1] * P.vector[2 * e + 1]) / jump - 1.0;
-      const double heat = rho_c_w_ * Q * 0.5 * (r + std::abs(r)) / (1.0 + std::abs(r)) * jump;
+      const double heat = rho_c_w_ * Q * limited_correction(P, i, e, T[j] - T[i]);
       correction_[i] -= heat;
       correction_[j] += heat;
     }

@@ -84,6 +84,9 @@ class HeatAdvection {
   std::vector<double> advance(ThermalModel& model, double t, double dt);
 
  private:
+  // The limited face's step beyond the upstream temperature, phi(r) (T_d - T_u) / 2,
+  // for pair e from its upstream end u (gradient_ filled).
+  double limited_correction(const particles::PairWeights& P, std::size_t u, std::size_t e, double jump) const;
   // The implicit scheme's single backward-Euler step of dt.
   std::vector<double> advance_implicit(ThermalModel& model, double t, double dt);
   // The free particles upstream first, and per particle the pairs (in
