@@ -278,7 +278,7 @@ TEST_CASE("CFD-DEM: grains that fall into the cavity leave the soil (taken away)
   frostwall::test::TempDir dir;
   const json s = run_project(dir, "verify_fluidisation", [](json& p) {
     p["box"] = {{"low", {0, 0, 0}}, {"high", {0.02, 0.02, 0.02}}};
-    p["cavity"] = {{"centre", {0.01, 0.01, 0.006}}, {"radius", 0.005}};
+    p["cavity"] = {{"centre", {0.01, 0.01, 0.006}}, {"radius", 0.005}, {"drain", true}};
     p["grains"]["count"] = 400;
     p["grains"]["settle_time"] = 0.0;
     p["grains"]["fill"] = {{"low", {0, 0, 0.0115}}, {"high", {0.02, 0.02, 0.02}}};  // above the cavity
@@ -299,4 +299,33 @@ TEST_CASE("CFD-DEM: grains that fall into the cavity leave the soil (taken away)
   std::ifstream vtu(dir.path / "out" / "grains_0002.vtu");
   const std::string text((std::istreambuf_iterator<char>(vtu)), {});
   CHECK(text.find("Name=\"lost\"") != std::string::npos);
+  CHECK(s["soil"]["cavity"]["mode"] == "drain");
+}
+
+TEST_CASE("CFD-DEM: a kept cavity holds the grains that fall in, and every grain is counted", "[cfd_dem]") {
+  // The same fall with the cavity's default: what falls in stays.
+  frostwall::test::TempDir dir;
+  const json s = run_project(dir, "verify_fluidisation", [](json& p) {
+    p["box"] = {{"low", {0, 0, 0}}, {"high", {0.02, 0.02, 0.02}}};
+    p["cavity"] = {{"centre", {0.01, 0.01, 0.006}}, {"radius", 0.005}};
+    p["grains"]["count"] = 400;
+    p["grains"]["settle_time"] = 0.0;
+    p["grains"]["fill"] = {{"low", {0, 0, 0.0115}}, {"high", {0.02, 0.02, 0.02}}};
+    p.erase("flow");
+    p["fluid"]["cells"] = {4, 4, 4};
+    p["time"] = {{"end", 0.08}, {"unit", "s"}, {"snapshots", {0.04, 0.08}}};
+  });
+  const auto& soil = s["soil"];
+  CHECK(soil["cavity"]["mode"] == "keep");
+  for (const auto& row : soil["series"]) {
+    CHECK(row["grains_in_model"] == 400);  // nothing is deleted
+    CHECK(row["grains_in_soil"].get<double>() + row["lost_to_cavity"].get<double>() == 400);
+    CHECK(row["grains_in_cavity"].get<double>() <= row["lost_to_cavity"].get<double>());
+  }
+  const auto& end = soil["series"].back();
+  fmt::print("kept cavity: {} of 400 grains fell in by 0.08 s, {} in it\n", end["lost_to_cavity"].get<double>(),
+             end["grains_in_cavity"].get<double>());
+  CHECK(end["lost_to_cavity"].get<double>() > 0);
+  CHECK(end["grains_in_cavity"].get<double>() > 0);  // they stay
+  CHECK(s["grains"] == 400);
 }

@@ -20,6 +20,7 @@
 #include "io/grid_vtk.hpp"
 #include "io/point_cloud_vtk.hpp"
 #include "io/output_directory.hpp"
+#include "cfd_dem/cavity_watch.hpp"
 #include "cfd_dem/coupling.hpp"
 #include "cfd_dem/results.hpp"
 #include "cfd_dem/setup.hpp"
@@ -72,7 +73,8 @@ void check_cfd_dem_resources(const project::CfdDem& c) {
 namespace {
 
 // Every rank's grains gathered on rank 0, by id: the snapshot's grain file.
-void write_grains(const fs::path& file, dem::LammpsSession& lammps, const CfdDemCoupling& coupling, const SoilWatch& soil) {
+void write_grains(const fs::path& file, dem::LammpsSession& lammps, const CfdDemCoupling& coupling, const SoilWatch& soil,
+                  const CavityWatch& cavity) {
   constexpr int fields = 16;  // id, x3, v3, radius, contacts, force3, lost, displacement3
   const int n = lammps.local_count();
   const int* ids = lammps.ids();
@@ -86,7 +88,7 @@ void write_grains(const fs::path& file, dem::LammpsSession& lammps, const CfdDem
     const auto f = coupling.fluid_force(ids[i]);
     const auto s = soil.start(ids[i]);
     for (double value : {double(ids[i]), x[i][0], x[i][1], x[i][2], v[i][0], v[i][1], v[i][2], r[i],
-                         contacts ? contacts[i] : 0.0, f[0], f[1], f[2], coupling.lost(x[i]), x[i][0] - s[0], x[i][1] - s[1],
+                         contacts ? contacts[i] : 0.0, f[0], f[1], f[2], std::max(cavity.entered(ids[i]), coupling.lost(x[i])), x[i][0] - s[0], x[i][1] - s[1],
                          x[i][2] - s[2]})
       mine.push_back(value);
   }
@@ -144,13 +146,14 @@ struct FlowRecord {
 // The coupled steps to the end time: a sample 200 times, the snapshots on
 // their times, and the grains that leave counted after every chunk.
 void run_flow(const project::Project& p, dem::LammpsSession& lammps, CfdDemCoupling& coupling, const SoilWatch& soil,
-              double dt, int interval, long total_steps, const fs::path& out,
+              CavityWatch& cavity, double dt, int interval, long total_steps, const fs::path& out,
               const std::function<void(double, double)>& progress, FlowRecord& rec) {
   const auto& c = *p.cfd_dem;
   const bool root = lammps.rank() == 0;
   std::vector<double> samples;
   for (int k = 0; k <= 200; ++k) samples.push_back(p.time.end * k / 200.0);
   const auto& snapshots = p.time.snapshots;
+  const bool drain = c.cavity && c.cavity->drain;
   std::size_t next_sample = 0, next_snapshot = 0;
   long step = 0;
   while (true) {
@@ -164,15 +167,18 @@ void run_flow(const project::Project& p, dem::LammpsSession& lammps, CfdDemCoupl
       const auto totals = coupling.totals();
       if (rec.start_volume < 0.0) rec.start_volume = totals.volume;
       rec.results.add(rec.results.sample(t, u, totals, coupling.grid(), report), is_snapshot);
-      rec.soil_record.add(
-          {t, totals.count - totals.in_cavity, rec.lost_cavity, rec.lost_outflow, totals.contacts, soil.measure(coupling)},
-          is_snapshot);
+      // A kept cavity: its grains stay in the model, counted once they entered.
+      if (!drain) rec.lost_cavity = cavity.count();
+      const double soil_grains = drain ? totals.count - totals.in_cavity : totals.count - rec.lost_cavity;
+      rec.soil_record.add({t, soil_grains, rec.lost_cavity, rec.lost_outflow, totals.contacts, soil.measure(coupling),
+                           totals.in_cavity, totals.count},
+                          is_snapshot);
       while (next_sample < samples.size() && samples[next_sample] <= t + 0.5 * dt) ++next_sample;
     }
     if (is_snapshot) {
       const std::string stem = fmt::format("{:04d}", next_snapshot + 1);
       if (p.output.vtk) {
-        write_grains(out / ("grains_" + stem + ".vtu"), lammps, coupling, soil);
+        write_grains(out / ("grains_" + stem + ".vtu"), lammps, coupling, soil, cavity);
         if (root) write_fluid(out / ("fluid_" + stem + ".vti"), coupling.grid());
         rec.grain_pvd.push_back({t, "grains_" + stem + ".vtu"});
         rec.fluid_pvd.push_back({t, "fluid_" + stem + ".vti"});
@@ -191,9 +197,10 @@ void run_flow(const project::Project& p, dem::LammpsSession& lammps, CfdDemCoupl
     coupling.advance(steps);
     step += steps;
     // Grains gone through an open outflow face, then those fallen into the
-    // cavity (the leak carries them away: deleted).
+    // cavity: marked where it keeps them, deleted where a leak drains it.
     const long after_run = lammps.grain_count();
-    if (c.cavity) lammps.command(dem::delete_in_cavity);
+    if (drain) lammps.command(dem::delete_in_cavity);
+    else cavity.observe();
     rec.lost_outflow += static_cast<double>(before - after_run);
     rec.lost_cavity += static_cast<double>(after_run - lammps.grain_count());
   }
@@ -210,7 +217,7 @@ std::string dem_commands(const dem::LammpsSession& lammps, const project::CfdDem
                           "# (fix {} external, from frostwall), and `run {}` follows; {} steps in all.\n"
                           "# To run the grains without the water: unfix {}\n{}",
                           interval, dem::fluid_fix, interval, total_steps, dem::fluid_fix,
-                          c.cavity ? fmt::format("# after every run: {}\n", dem::delete_in_cavity) : "");
+                          c.cavity && c.cavity->drain ? fmt::format("# after every run: {}\n", dem::delete_in_cavity) : "");
   return commands;
 }
 
@@ -249,14 +256,23 @@ void run_cfd_dem(const project::Project& p, const project::RunOptions& options) 
                    lammps.ranks(), dt, interval));
 
   settle_grains(p, lammps, coupling, setup, dt, settle_interval, options.progress, note);
+  if (c.heap) {  // the container's sides lifted off the settled block
+    auto high = c.grains.fill_high;
+    high[2] = c.box.high[2];
+    for (const auto& s : dem::lifted_block_commands(c.grains.fill_low, high, dem::dem_contact(c), c.heap->lift_speed, lammps.time()))
+      lammps.command(s);
+    lammps.command("run 0 post no");  // the runs skip their set-up: a new fix needs one
+  }
 
   // The run proper (after any settling) is what the rates are of.
   const auto flow_start = std::chrono::steady_clock::now();
   const double coupling_before = coupling.coupling_seconds();
   FlowRecord rec{CfdDemResults(p), SoilRecord(c), 0.0, 0.0, -1.0, {}, {}};
   const SoilWatch soil(c, lammps);
+  CavityWatch cavity(c, lammps);
+  cavity.observe();  // none as settled: the wall held the void open
   const long total_steps = std::max(1L, std::lround(p.time.end / dt));
-  run_flow(p, lammps, coupling, soil, dt, interval, total_steps, out, options.progress, rec);
+  run_flow(p, lammps, coupling, soil, cavity, dt, interval, total_steps, out, options.progress, rec);
 
   const auto now = std::chrono::steady_clock::now();
   const double wall = std::chrono::duration<double>(now - wall_start).count();
@@ -284,6 +300,12 @@ void run_cfd_dem(const project::Project& p, const project::RunOptions& options) 
                       {"coupling_share", flow_wall > 0 ? coupling_seconds / flow_wall : 0.0}};
   auto summary = rec.results.summary(facts);
   summary["soil"] = rec.soil_record.summary(packing_regime(c, std::max(0.0, rec.start_volume)), soil.bins(), soil.initial_surface());
+  if (c.heap) summary["angle_of_repose_deg"] = summary["soil"].value("heap", json::object()).value("angle_of_repose_deg", json(nullptr));
+  if (c.cavity)
+    summary["soil"]["cavity"] = {{"mode", c.cavity->drain ? "drain" : "keep"},
+                                 {"capacity_grains", cavity.capacity()},
+                                 {"meaning", c.cavity->drain ? "grains whose centre enters the cavity are taken away by a leak (deleted)"
+                                                             : "grains that fall into the cavity stay and fill it"}};
   io::write_text_file(out / "summary.json", summary.dump(2) + "\n");
 }
 

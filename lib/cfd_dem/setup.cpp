@@ -52,6 +52,12 @@ GrainSetup set_up_grains(const project::Project& p, dem::LammpsSession& lammps, 
     if (settling_here)
       for (const auto& s : dem::cavity_wall_commands(c.cavity->centre, c.cavity->radius, contact)) lammps.command(s);
   }
+  if (c.heap && settling_here) {
+    // The heap's grains settle in a container over the fill region, open to the box's top.
+    auto high = c.grains.fill_high;
+    high[2] = c.box.high[2];
+    for (const auto& s : dem::block_wall_commands(c.grains.fill_low, high, contact)) lammps.command(s);
+  }
   for (const auto& s : dem::motion_commands(c.gravity, dt, c.grains.held)) lammps.command(s);
   return setup;
 }
@@ -79,9 +85,10 @@ void settle_grains(const project::Project& p, dem::LammpsSession& lammps, CfdDem
       lammps.command(s);
     note(fmt::format("packing: {} of {} grains above the box's top taken away after settling", before - lammps.grain_count(), before));
   }
-  if (c.cavity) {
+  if (c.cavity)
     for (const auto& s : dem::remove_cavity_wall_commands()) lammps.command(s);
-  }
+  if (c.heap)  // the container lifted: the block slumps into a heap as the run starts
+    for (const auto& s : dem::remove_block_wall_commands()) lammps.command(s);
   if (c.grains.settle_friction)  // the run's friction from here on
     for (const auto& s : dem::new_contact_commands(dem::dem_box(c), dem::dem_contact(c), setup.open_face)) lammps.command(s);
   // Cached under a temporary name, renamed when complete.

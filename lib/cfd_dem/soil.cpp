@@ -9,6 +9,8 @@ namespace frostwall::cfd_dem {
 
 namespace {
 
+constexpr int heights = 8;  // height bins over the cavity's centre for the moved zones' boundaries
+
 double sphere_volume(double r) { return 4.0 / 3.0 * std::numbers::pi * r * r * r; }
 
 void sum_all(const dem::LammpsSession& l, double* data, int n) {
@@ -17,6 +19,22 @@ void sum_all(const dem::LammpsSession& l, double* data, int n) {
 
 void max_all(const dem::LammpsSession& l, double* data, int n) {
   if (l.ranks() > 1) MPI_Allreduce(MPI_IN_PLACE, data, n, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
+}
+
+// A moved zone's boundary: its reach from the cavity's axis in height bins
+// from the cavity's centre to the top, a straight line fitted to reach
+// against height; the angle of that line from the horizontal (three bins
+// at least).
+std::optional<double> boundary_angle(const std::array<double, heights>& reach, double z0, double top) {
+  double sz = 0, sr = 0, szz = 0, szr = 0, count = 0;
+  for (int b = 0; b < heights; ++b) {
+    if (reach[b] <= 0.0) continue;
+    const double z = z0 + (b + 0.5) * (top - z0) / heights;
+    sz += z, sr += reach[b], szz += z * z, szr += z * reach[b], count += 1;
+  }
+  if (count < 3) return std::nullopt;
+  const double slope = (count * szr - sz * sr) / (count * szz - sz * sz);  // dr/dz
+  return std::atan2(1.0, std::abs(slope)) * 180.0 / std::numbers::pi;
 }
 
 }  // namespace
@@ -28,6 +46,7 @@ SoilWatch::SoilWatch(const project::CfdDem& c, const dem::LammpsSession& lammps)
   bin_width_ = length / bins;
   for (int b = 0; b < bins; ++b) bin_centres_.push_back(c.box.low[0] + (b + 0.5) * bin_width_);
   initial_surface_ = surface();
+  initial_map_ = height_map(c, lammps);
   // Where every grain starts, on every rank (ids index it).
   const int n = lammps.local_count();
   const int* ids = lammps.ids();
@@ -76,9 +95,8 @@ SoilMeasures SoilWatch::measure(const CfdDemCoupling& coupling) const {
   const int cell_a = c_.point_a ? grid.shape().cell_of(pore_water::Vec3(c_.point_a->at(0), c_.point_a->at(1), c_.point_a->at(2))) : -1;
   auto cell_of = [&](const double* p) { return grid.shape().cell_of(pore_water::Vec3(p[0], p[1], p[2])); };
   // Local sums: zone solid volume, grains in A's cell and their forces, displaced grains.
-  constexpr int heights = 8;  // the collapse zone's boundary in height bins over the cavity's centre
   std::array<double, 4 + 9> sums{};
-  std::array<double, heights> reach{};
+  std::array<double, heights> reach{}, reach_moved{};
   const double top = c_.box.high[2];
   const double z0 = c_.cavity ? c_.cavity->centre[2] : c_.box.low[2];
   for (int i = 0; i < n; ++i) {
@@ -96,7 +114,13 @@ SoilMeasures SoilWatch::measure(const CfdDemCoupling& coupling) const {
     if (static_cast<std::size_t>(ids[i]) < start_.size()) {
       const auto& s = start_[ids[i]];
       const double moved = std::hypot(x[i][0] - s[0], x[i][1] - s[1], x[i][2] - s[2]);
-      if (moved > d) sums[12] += 1.0;
+      if (moved > d) {
+        sums[12] += 1.0;
+        if (c_.cavity && x[i][2] > z0) {
+          const int b = std::min(heights - 1, static_cast<int>((x[i][2] - z0) / (top - z0) * heights));
+          reach_moved[b] = std::max(reach_moved[b], std::hypot(x[i][0] - c_.cavity->centre[0], x[i][1] - c_.cavity->centre[1]));
+        }
+      }
       if (moved > 2.0 * d) {
         sums[2] += 1.0;
         if (c_.cavity && x[i][2] > z0) {
@@ -108,6 +132,7 @@ SoilMeasures SoilWatch::measure(const CfdDemCoupling& coupling) const {
   }
   sum_all(lammps_, sums.data(), static_cast<int>(sums.size()));
   max_all(lammps_, reach.data(), heights);
+  max_all(lammps_, reach_moved.data(), heights);
   if (c_.cavity) {
     // The zone reaches the surface as the run started, over the cavity.
     const int b = std::clamp(static_cast<int>((c_.cavity->centre[0] - c_.box.low[0]) / bin_width_), 0, int(initial_surface_.size()) - 1);
@@ -123,18 +148,11 @@ SoilMeasures SoilWatch::measure(const CfdDemCoupling& coupling) const {
   }
   m.displaced = sums[2];
   m.moved = sums[12];
-  // The collapse zone's boundary: its reach from the cavity's axis against
-  // height, a straight line fitted; the angle of that line from the horizontal.
-  double sz = 0, sr = 0, szz = 0, szr = 0, count = 0;
-  for (int b = 0; b < heights; ++b) {
-    if (reach[b] <= 0.0) continue;
-    const double z = z0 + (b + 0.5) * (top - z0) / heights;
-    sz += z, sr += reach[b], szz += z * z, szr += z * reach[b], count += 1;
-  }
-  if (count >= 3) {
-    const double slope = (count * szr - sz * sr) / (count * szz - sz * sz);  // dr/dz
-    m.cone_angle = std::atan2(1.0, std::abs(slope)) * 180.0 / std::numbers::pi;
-  }
+  m.cone_angle = boundary_angle(reach, z0, top);
+  m.slip_angle = boundary_angle(reach_moved, z0, top);
+  const HeightMap now = height_map(c_, lammps_);
+  if (c_.cavity) m.crater = crater(initial_map_, now, c_.cavity->centre[1], d);
+  if (c_.heap) m.heap = heap(now, c_.box.low[2], c_.heap->axis[0], c_.heap->axis[1]);
   // The surface's settlement.
   m.surface = surface();
   int first = -1, last = -1;

@@ -14,6 +14,7 @@
 #include "dem/lammps_session.hpp"
 #include "project/cfd_dem.hpp"
 #include "cfd_dem/coupling.hpp"
+#include "cfd_dem/surface_map.hpp"
 
 namespace frostwall::cfd_dem {
 
@@ -28,6 +29,9 @@ struct SoilMeasures {
   double displaced = 0.0;            // grains moved more than 2 diameters from where the run started
   double moved = 0.0;                // grains moved more than 1 diameter
   std::optional<double> cone_angle;  // the collapse zone's boundary from the horizontal, degrees
+  std::optional<double> slip_angle;  // likewise for the grains moved more than one diameter: the slip surface
+  std::optional<Crater> crater;      // with a cavity: the surface's trough from the height maps
+  std::optional<Heap> heap;          // with a heap: its flanks
 };
 
 class SoilWatch {
@@ -48,6 +52,7 @@ class SoilWatch {
   const dem::LammpsSession& lammps_;
   double bin_width_ = 0.0;
   std::vector<double> bin_centres_, initial_surface_;
+  HeightMap initial_map_;
   std::vector<std::array<double, 3>> start_;  // by grain id
 };
 
@@ -56,10 +61,12 @@ class SoilWatch {
 struct SoilRow {
   double time = 0.0;
   double grains = 0.0;         // in the soil
-  double lost_cavity = 0.0;    // fallen into the cavity since the start (deleted there)
+  double lost_cavity = 0.0;    // entered the cavity since the start (kept there, or deleted by a drain)
   double lost_outflow = 0.0;   // washed out through the outflow face since the start
   double contacts = 0.0;
   SoilMeasures measures;
+  double in_cavity = 0.0;      // grains whose centre lies in the cavity now
+  double in_model = 0.0;       // grains in the model (soil and a kept cavity's)
 };
 
 // The packing's regime: its porosity (box less cavity), Terzaghi's

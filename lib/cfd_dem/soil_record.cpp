@@ -12,7 +12,32 @@ using nlohmann::json;
 namespace {
 json optional(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
 json vec(const std::array<double, 3>& f) { return json::array({f[0], f[1], f[2]}); }
+json maybe(const std::optional<double>& v) { return v ? json(*v) : json(nullptr); }
+
+json flank(const std::optional<post::Flank>& f) {
+  if (!f) return nullptr;
+  return {{"slope_deg", f->slope_deg}, {"x_10_percent_m", f->x10}, {"x_90_percent_m", f->x90}, {"foot_m", f->foot}};
+}
+
+json bump(const post::Bump& b, const char* peak_name) {
+  return {{peak_name, b.peak}, {"at_m", b.peak_x}, {"base_m", b.base}, {"width_m", maybe(b.width())}, {"slope_deg", maybe(b.mean_slope_deg())},
+          {"low_side", flank(b.low_side)}, {"high_side", flank(b.high_side)}};
+}
 }  // namespace
+
+// The crater from the settlement along x through the cavity: depth, width
+// between the flanks' feet at the original surface, slope (the mean of the
+// two flanks between 10 % and 90 % of the depth), each flank, the volume.
+json crater_json(const Crater& c) {
+  json out = bump(c.along_x, "depth_m");
+  out["volume_m3"] = c.volume;
+  return out;
+}
+
+json heap_json(const Heap& h) {
+  return {{"angle_of_repose_deg", maybe(h.angle_deg())}, {"along_x", bump(h.along_x, "height_m")},
+          {"along_y", bump(h.along_y, "height_m")}};
+}
 
 json packing_regime(const project::CfdDem& c, double grain_volume) {
   double volume = 1.0;
@@ -67,7 +92,17 @@ json SoilRecord::summary(const json& regime, const std::vector<double>& bins, co
                 {"mean_buoyancy_at_a_N", vec(r.measures.mean_force_a[2])},
                 {"settlement_max_m", r.measures.settlement_max}, {"settlement_width_m", r.measures.settlement_width},
                 {"displaced_grains", r.measures.displaced}, {"moved_one_diameter", r.measures.moved},
-                {"cone_angle_deg", r.measures.cone_angle ? json(*r.measures.cone_angle) : json(nullptr)}};
+                {"cone_angle_deg", r.measures.cone_angle ? json(*r.measures.cone_angle) : json(nullptr)},
+                {"slip_surface_angle_deg", maybe(r.measures.slip_angle)},
+                {"grains_in_cavity", r.in_cavity}, {"grains_in_model", r.in_model}};
+    if (r.measures.crater) {
+      const auto& cr = *r.measures.crater;
+      row["crater_depth_m"] = cr.along_x.peak;
+      row["crater_width_m"] = maybe(cr.along_x.width());
+      row["crater_slope_deg"] = maybe(cr.along_x.mean_slope_deg());
+      row["crater_volume_m3"] = cr.volume;
+    }
+    if (r.measures.heap) row["angle_of_repose_deg"] = maybe(r.measures.heap->angle_deg());
     if (k > 0) {
       const auto& p = rows_[k - 1];
       const double left = (r.lost_cavity - p.lost_cavity) + (r.lost_outflow - p.lost_outflow);
@@ -86,7 +121,10 @@ json SoilRecord::summary(const json& regime, const std::vector<double>& bins, co
       settlement.push_back({bins[b], initial[b] - r.measures.surface[b]});
     profiles.push_back({{"time", r.time}, {"settlement", settlement}, {"settlement_max_m", r.measures.settlement_max},
                         {"settlement_width_m", r.measures.settlement_width}, {"displaced_grains", r.measures.displaced},
-                        {"cone_angle_deg", r.measures.cone_angle ? json(*r.measures.cone_angle) : json(nullptr)}});
+                        {"cone_angle_deg", r.measures.cone_angle ? json(*r.measures.cone_angle) : json(nullptr)},
+                        {"slip_surface_angle_deg", maybe(r.measures.slip_angle)}});
+    if (r.measures.crater) profiles.back()["crater"] = crater_json(*r.measures.crater);
+    if (r.measures.heap) profiles.back()["heap"] = heap_json(*r.measures.heap);
   }
   json out = {{"series", series}, {"surface_profiles", profiles}, {"regime", regime}};
   if (!rows_.empty()) {
@@ -95,6 +133,10 @@ json SoilRecord::summary(const json& regime, const std::vector<double>& bins, co
     out["lost_to_cavity"] = last.lost_cavity;
     out["washed_out"] = last.lost_outflow;
     out["grains_in_soil_at_end"] = last.grains;
+    out["grains_in_cavity_at_end"] = last.in_cavity;
+    out["slip_surface_angle_deg"] = maybe(last.measures.slip_angle);
+    if (last.measures.crater) out["crater"] = crater_json(*last.measures.crater);
+    if (last.measures.heap) out["heap"] = heap_json(*last.measures.heap);
   }
   if (c_.point_a) out["point_a"] = {c_.point_a->at(0), c_.point_a->at(1), c_.point_a->at(2)};
   return out;
@@ -104,15 +146,18 @@ std::string SoilRecord::csv() const {
   std::string text =
       "time_s,grains_in_soil,lost_to_cavity,washed_out,contacts,zone_porosity,pressure_drop_to_a_Pa,grains_at_a,"
       "drag_at_a_N,pressure_gradient_force_at_a_N,buoyancy_at_a_N,settlement_max_m,settlement_width_m,displaced_grains,"
-      "cone_angle_deg\n";
+      "cone_angle_deg,grains_in_cavity,grains_in_model,slip_surface_angle_deg,crater_depth_m,crater_slope_deg\n";
   // Forces at A: their magnitudes.
   auto norm = [](const std::array<double, 3>& f) { return std::hypot(f[0], f[1], f[2]); };
   for (const auto& r : rows_) {
     const auto& m = r.measures;
-    text += fmt::format("{:.9g},{},{},{},{},{:.9g},{:.9g},{},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{},{}\n", r.time, r.grains,
+    auto opt = [](const std::optional<double>& v) { return v ? fmt::format("{:.6g}", *v) : std::string(); };
+    text += fmt::format("{:.9g},{},{},{},{},{:.9g},{:.9g},{},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{},{},{},{},{},{},{}\n", r.time, r.grains,
                         r.lost_cavity, r.lost_outflow, r.contacts, m.zone_porosity, m.pressure_drop_a, m.grains_a,
                         norm(m.mean_force_a[0]), norm(m.mean_force_a[1]), norm(m.mean_force_a[2]), m.settlement_max,
-                        m.settlement_width, m.displaced, m.cone_angle ? fmt::format("{:.6g}", *m.cone_angle) : std::string());
+                        m.settlement_width, m.displaced, opt(m.cone_angle), r.in_cavity, r.in_model, opt(m.slip_angle),
+                        m.crater ? fmt::format("{:.6g}", m.crater->along_x.peak) : std::string(),
+                        m.crater ? opt(m.crater->along_x.mean_slope_deg()) : std::string());
   }
   return text;
 }

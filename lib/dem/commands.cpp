@@ -78,6 +78,23 @@ std::vector<std::string> cavity_wall_commands(const std::array<double, 3>& x, do
 
 std::vector<std::string> remove_cavity_wall_commands() { return {"unfix cavity_wall"}; }
 
+std::vector<std::string> block_wall_commands(const std::array<double, 3>& low, const std::array<double, 3>& high,
+                                             const Contact& contact) {
+  return {fmt::format("region heap_block block {} {} {} {} {} {} side in units box", low[0], high[0], low[1], high[1], low[2],
+                      high[2]),
+          "fix heap_wall all wall/gran/region granular " + contact_model(contact) + " region heap_block"};
+}
+
+std::vector<std::string> remove_block_wall_commands() { return {"unfix heap_wall"}; }
+
+std::vector<std::string> lifted_block_commands(const std::array<double, 3>& low, const std::array<double, 3>& high,
+                                               const Contact& contact, double speed, double from_time) {
+  return {fmt::format("variable heap_lift equal \"{}*(time-{})\"", speed, from_time),
+          fmt::format("region heap_sleeve block {} {} {} {} {} {} side in open 5 open 6 move NULL NULL v_heap_lift units box",
+                      low[0], high[0], low[1], high[1], low[2], high[2]),
+          "fix heap_wall all wall/gran/region granular " + contact_model(contact) + " region heap_sleeve"};
+}
+
 std::string cavity_region_command(const std::array<double, 3>& x, double r) {
   return fmt::format("region cavity_inside sphere {} {} {} {} side in units box", x[0], x[1], x[2], r);
 }

@@ -68,6 +68,16 @@ std::string write_data_command(const std::string& file);
 // they settle (fix `cavity_wall`), and the commands that take it away.
 std::vector<std::string> cavity_wall_commands(const std::array<double, 3>& centre, double radius, const Contact& contact);
 std::vector<std::string> remove_cavity_wall_commands();
+// A block (low, high) the grains are held in by walls while they settle
+// (fix `heap_wall`; a heap's container, lifted as the run starts), and the
+// commands that take it away.
+std::vector<std::string> block_wall_commands(const std::array<double, 3>& low, const std::array<double, 3>& high,
+                                             const Contact& contact);
+std::vector<std::string> remove_block_wall_commands();
+// The block's four sides (no floor, no lid) rising at `speed` (m/s) from
+// the simulated time `from_time` (s): the container lifted off a heap.
+std::vector<std::string> lifted_block_commands(const std::array<double, 3>& low, const std::array<double, 3>& high,
+                                               const Contact& contact, double speed, double from_time);
 // The sphere as a region (`cavity_inside`, once), and the command that
 // deletes every grain whose centre is in it (ids kept).
 std::string cavity_region_command(const std::array<double, 3>& centre, double radius);

@@ -65,6 +65,8 @@ double* LammpsSession::radius() const { return static_cast<double*>(lammps_extra
 double* LammpsSession::contacts() const {
   return static_cast<double*>(lammps_extract_compute(lammps_, "contacts", LMP_STYLE_ATOM, LMP_TYPE_VECTOR));
 }
+double LammpsSession::time() const { return lammps_get_thermo(lammps_, "time"); }
+
 long LammpsSession::grain_count() const { return std::lround(lammps_get_natoms(lammps_)); }
 
 void LammpsSession::set_external_force(const std::string& fix_id, ForceFunction f) {

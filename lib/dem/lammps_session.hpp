@@ -47,6 +47,8 @@ class LammpsSession {
   double* contacts() const;
   // Grains in the whole assembly (all ranks).
   long grain_count() const;
+  // The simulated time so far (s; LAMMPS' `time`).
+  double time() const;
   int rank() const { return rank_; }
   int ranks() const { return ranks_; }
 

@@ -140,6 +140,7 @@ std::filesystem::path packing_cache_file(const project::CfdDem& c, double timest
     key += fmt::format(" {} {} {} {} {} {} {}", g.fill_low[k], g.fill_high[k], c.box.low[k], c.box.high[k],
                        c.box.periodic[k], c.gravity[k], c.fluid.cells[k]);
   if (c.cavity) key += fmt::format(" cavity {} {} {} {}", c.cavity->centre[0], c.cavity->centre[1], c.cavity->centre[2], c.cavity->radius);
+  if (c.heap) key += " heap container";
   key += fmt::format(" {} {} {} {} {}", c.fluid.density, c.fluid.viscosity, c.fluid.min_porosity, timestep, interval);
   for (const auto& f : c.forces) key += " " + f;
   std::uint64_t hash = 1469598103934665603ULL;  // FNV-1a

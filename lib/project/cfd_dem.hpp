@@ -49,9 +49,22 @@ struct CfdDemBox {
   std::array<bool, 3> periodic{false, false, false};  // for the grains; the fluid sees walls
 };
 
+// An unlined void in the ground. By default it keeps what falls into it
+// (grains pile up in it until it is full); with drain a leak carries every
+// grain whose centre enters it away (deleted).
 struct Cavity {
   Point3 centre{};
   double radius = 0.0;
+  bool drain = false;
+};
+
+// A heap: the grains settle in a container over the fill region on the
+// box's floor; as the run starts its sides are lifted at lift_speed and the
+// block slumps into a heap round this vertical axis, whose flank the run
+// measures (the angle of repose).
+struct Heap {
+  std::array<double, 2> axis{};  // m, across gravity (x, y)
+  double lift_speed = 0.005;     // m/s: the container's sides lifted off the settled block
 };
 
 struct FluidSettings {
@@ -102,6 +115,7 @@ struct CfdDem {
   GrainSettings grains;
   CfdDemBox box;
   std::optional<Cavity> cavity;
+  std::optional<Heap> heap;
   FluidSettings fluid;
   std::optional<FlowSettings> flow;  // none: still water
   Point3 gravity{0.0, 0.0, -9.81};   // m/s2

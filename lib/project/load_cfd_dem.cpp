@@ -234,16 +234,17 @@ std::vector<std::string> read_forces(const Node& n) {
 
 void read_cfd_dem(const Node& root, Project& project) {
   root.object({"name", "description", "physics", "grains", "box", "cavity", "fluid", "flow", "gravity", "forces",
-               "coupling", "neighbour", "time", "output", "max_grains", "point_a"});
+               "coupling", "neighbour", "time", "output", "max_grains", "point_a", "heap"});
   project.name = root["name"].required().string().value_or("");
   project.description = root["description"].string(true).value_or("");
   CfdDem c;
   c.box = read_box(root["box"].required());
   c.grains = read_grains(root["grains"].required(), c.box);
-  if (const Node cav = root["cavity"]; cav.object({"centre", "radius"})) {
+  if (const Node cav = root["cavity"]; cav.object({"centre", "radius", "drain"})) {
     Cavity cavity;
     if (const auto centre = read_point3(cav["centre"].required())) cavity.centre = *centre;
     cavity.radius = cav["radius"].required().positive().value_or(0.0);
+    cavity.drain = cav["drain"].boolean().value_or(false);
     if (!inside(cavity.centre, c.box.low, c.box.high)) cav["centre"].problem("must lie inside the box");
     c.cavity = cavity;
   }
@@ -252,6 +253,20 @@ void read_cfd_dem(const Node& root, Project& project) {
   if (const Node g = root["gravity"]; g.present())
     if (const auto v = read_point3(g)) c.gravity = *v;
   c.forces = read_forces(root["forces"]);
+  if (const Node heap = root["heap"]; heap.object({"axis", "lift_speed"})) {
+    Heap h{{0.5 * (c.grains.fill_low[0] + c.grains.fill_high[0]), 0.5 * (c.grains.fill_low[1] + c.grains.fill_high[1])}};
+    if (const Node axis = heap["axis"]; axis.present()) {
+      const auto& j = axis.json();
+      if (!j.is_array() || j.size() != 2 || !j[0].is_number() || !j[1].is_number()) axis.problem("must be [x, y] in m");
+      else h.axis = {j[0].get<double>(), j[1].get<double>()};
+    }
+    if (!(h.axis[0] > c.box.low[0] && h.axis[0] < c.box.high[0] && h.axis[1] > c.box.low[1] && h.axis[1] < c.box.high[1]))
+      (heap["axis"].present() ? heap["axis"] : heap).problem("must lie inside the box (x and y)");
+    h.lift_speed = heap["lift_speed"].positive().value_or(h.lift_speed);
+    if (c.grains.settle_time <= 0.0) root["grains"]["settle_time"].problem("a heap settles in its container first: give a settle time");
+    if (!(c.gravity[2] < 0.0 && c.gravity[0] == 0.0 && c.gravity[1] == 0.0)) heap.problem("a heap needs gravity along -z");
+    c.heap = h;
+  }
   if (const Node cp = root["coupling"]; cp.object({"interval", "dem_timestep"})) {
     if (const auto k = cp["interval"].count()) c.coupling.interval = *k;
     c.coupling.dem_timestep = cp["dem_timestep"].positive();

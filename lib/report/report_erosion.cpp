@@ -76,6 +76,48 @@ json grain_views(const GrainSnapshot& g, const project::CfdDem& c, const ColourS
   return views;
 }
 
+std::string or_dash(const json& v, const char* format_spec, double scale = 1.0) {
+  return v.is_number() ? fmt::format(fmt::runtime(format_spec), scale * v.get<double>()) : std::string("–");
+}
+
+json erosion_facts(const json& s, bool drain) {
+  json facts = json::array({{{"label", "grains at the start"}, {"value", fmt::format("{:.0f}", get(s, "grains_at_start"))}},
+                            {{"label", drain ? "fell into the cavity (taken away by the leak)" : "fell into the cavity (kept there)"},
+                             {"value", fmt::format("{:.0f}", get(s, "lost_to_cavity"))}}});
+  if (!drain) {
+    const json& cavity = s.value("cavity", json::object());
+    facts.push_back({{"label", "in the cavity at the end, of the most it holds"},
+                     {"value", fmt::format("{:.0f} of {:.0f}", get(s, "grains_in_cavity_at_end"), get(cavity, "capacity_grains"))}});
+  }
+  facts.push_back({{"label", "washed out through the outflow face"}, {"value", fmt::format("{:.0f}", get(s, "washed_out"))}});
+  if (const json& cr = s.value("crater", json::object()); !cr.empty()) {
+    facts.push_back({{"label", "crater: depth, width at the original surface"},
+                     {"value", or_dash(cr["depth_m"], "{:.1f} mm", 1e3) + ", " + or_dash(cr["width_m"], "{:.0f} mm", 1e3)}});
+    facts.push_back({{"label", "crater: flank slope (10-90 % of the depth), trough volume"},
+                     {"value", or_dash(cr["slope_deg"], "{:.1f} deg") + ", " + or_dash(cr["volume_m3"], "{:.3g} m3")}});
+  }
+  facts.push_back({{"label", "slip surface from the horizontal"}, {"value", or_dash(s.value("slip_surface_angle_deg", json()), "{:.0f} deg")}});
+  facts.push_back({{"label", "point A"}, {"value", s.contains("point_a") ? s["point_a"].dump() : "–"}});
+  return facts;
+}
+
+// The crater's two flanks at the end drawn on the settlement profile.
+void add_crater_flanks(const json& s, Chart& profile) {
+  const json& cr = s.value("crater", json::object());
+  if (cr.empty() || !cr["depth_m"].is_number()) return;
+  const double depth_mm = 1e3 * cr["depth_m"].get<double>();
+  for (const char* side : {"low_side", "high_side"}) {
+    if (!cr[side].is_object()) continue;
+    Series flank;
+    flank.label = side == std::string("low_side") ? fmt::format("flanks, {} mean", or_dash(cr["slope_deg"], "{:.1f} deg")) : "";
+    flank.colour = "#333333";
+    flank.dashed = true;
+    flank.x = {cr[side]["foot_m"].get<double>(), cr[side]["x_90_percent_m"].get<double>()};
+    flank.y = {0.0, 0.9 * depth_mm};
+    profile.series.push_back(flank);
+  }
+}
+
 }  // namespace
 
 void add_erosion(const RunRecord& run, json& view) {
@@ -90,10 +132,7 @@ void add_erosion(const RunRecord& run, json& view) {
                                                             get(regime, "porosity"), get(regime, "critical_gradient"),
                                                             get(regime, "minimum_fluidisation_velocity_m_s")));
   view["erosion_boils"] = regime.value("above_fluidisation", false);
-  view["erosion_facts"] = json::array({{{"label", "grains at the start"}, {"value", fmt::format("{:.0f}", get(s, "grains_at_start"))}},
-                                       {{"label", "fell into the cavity (taken away by the leak)"}, {"value", fmt::format("{:.0f}", get(s, "lost_to_cavity"))}},
-                                       {{"label", "washed out through the outflow face"}, {"value", fmt::format("{:.0f}", get(s, "washed_out"))}},
-                                       {{"label", "point A"}, {"value", s.contains("point_a") ? s["point_a"].dump() : "–"}}});
+  view["erosion_facts"] = erosion_facts(s, c.cavity->drain);
   const json& rows = s["series"];
   json charts = json::array();
   auto add = [&](const std::string& id, const Chart& ch, const std::string& caption) {
@@ -122,10 +161,14 @@ void add_erosion(const RunRecord& run, json& view) {
     profile.series.push_back(line);
   }
   profile.guides.push_back({true, c.cavity->centre[0], "cavity"});
-  add("settlement", profile, "Along x through the cavity: the surface's drop since the run started (its highest grain in bins of two diameters).");
+  add_crater_flanks(s, profile);
+  add("settlement", profile, "Along x through the cavity: the surface's drop since the run started (its highest grain in bins of two "
+                             "diameters). Dashed: the crater's flanks at the end, the straight line through 10 % and 90 % of its depth "
+                             "on each side (from columns one diameter wide), down to the original surface.");
   Chart cone = line_chart("Collapse zone", "time (s)", "grains displaced more than two diameters",
                         {series_of(rows, "", [](const json& r) { return get(r, "displaced_grains"); })});
-  add("collapse", cone, "Its boundary's angle from the horizontal is in summary.json (cone_angle_deg).");
+  add("collapse", cone, "The boundary of the grains moved more than one diameter, fitted against height, is the slip surface "
+                       "(slip_surface_angle_deg in summary.json; cone_angle_deg is the same for two diameters).");
   view["erosion_charts"] = charts;
 
   // Displacement on the mid-section x = cavity centre, one map per snapshot.

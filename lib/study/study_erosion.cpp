@@ -66,6 +66,9 @@ void add_erosion(const StudyRun& run, json& view) {
                     {"settlement", number(1e3 * get(last, "settlement_max_m"), 1)},
                     {"width", number(1e3 * get(last, "settlement_width_m"), 0)},
                     {"cone", number(get(last, "cone_angle_deg"), 0)},
+                    {"crater_depth", number(1e3 * get(last, "crater_depth_m"), 1)},
+                    {"crater_slope", number(get(last, "crater_slope_deg"), 1)},
+                    {"slip", number(get(last, "slip_surface_angle_deg"), 0)},
                     {"seconds", fmt::format("{:.1f}", v.seconds)}});
     report::Series a, b, c;
     a.label = b.label = c.label = v.name;
@@ -86,16 +89,17 @@ void add_erosion(const StudyRun& run, json& view) {
 
 void write_erosion_csv(const std::filesystem::path& file, const StudyRun& run) {
   std::string text = "variant,darcy_velocity_m_s,above_fluidisation,lost_to_cavity,washed_out,mean_loss_rate_per_s,"
-                     "settlement_max_m,settlement_width_m,cone_angle_deg,run_s\n";
+                     "settlement_max_m,settlement_width_m,cone_angle_deg,run_s,crater_depth_m,crater_slope_deg,slip_surface_angle_deg\n";
   for (const auto& v : run.variants) {
     if (!v.ok || !v.summary.contains("soil")) continue;
     const json& s = soil(v);
     const json& regime = s.value("regime", json::object());
     const auto& last = s["series"].empty() ? json::object() : s["series"].back();
-    text += fmt::format("{},{},{},{},{},{:.6g},{:.6g},{:.6g},{:.6g},{:.1f}\n", v.name, get(regime, "darcy_velocity_m_s"),
-                        regime.value("above_fluidisation", false), get(s, "lost_to_cavity"), get(s, "washed_out"),
-                        mean_loss_rate(s), get(last, "settlement_max_m"), get(last, "settlement_width_m"),
-                        get(last, "cone_angle_deg"), v.seconds);
+    text += fmt::format("{},{},{},{},{},{:.6g},{:.6g},{:.6g},{:.6g},{:.1f},{:.6g},{:.6g},{:.6g}\n", v.name,
+                        get(regime, "darcy_velocity_m_s"), regime.value("above_fluidisation", false), get(s, "lost_to_cavity"),
+                        get(s, "washed_out"), mean_loss_rate(s), get(last, "settlement_max_m"), get(last, "settlement_width_m"),
+                        get(last, "cone_angle_deg"), v.seconds, get(last, "crater_depth_m"), get(last, "crater_slope_deg"),
+                        get(last, "slip_surface_angle_deg"));
   }
   io::write_text_file(file, text);
 }
