@@ -91,7 +91,7 @@ json erosion_facts(const json& s, bool drain) {
   }
   facts.push_back({{"label", "washed out through the outflow face"}, {"value", fmt::format("{:.0f}", get(s, "washed_out"))}});
   if (const json& cr = s.value("crater", json::object()); !cr.empty()) {
-    facts.push_back({{"label", "crater: depth, width at the original surface"},
+    facts.push_back({{"label", "crater: depth and width below the surrounding ground"},
                      {"value", or_dash(cr["depth_m"], "{:.1f} mm", 1e3) + ", " + or_dash(cr["width_m"], "{:.0f} mm", 1e3)}});
     facts.push_back({{"label", "crater: flank slope (10-90 % of the depth), trough volume"},
                      {"value", or_dash(cr["slope_deg"], "{:.1f} deg") + ", " + or_dash(cr["volume_m3"], "{:.3g} m3")}});
@@ -106,6 +106,7 @@ void add_crater_flanks(const json& s, Chart& profile) {
   const json& cr = s.value("crater", json::object());
   if (cr.empty() || !cr["depth_m"].is_number()) return;
   const double depth_mm = 1e3 * cr["depth_m"].get<double>();
+  const double base_mm = 1e3 * cr.value("base_m", 0.0);  // the surrounding ground's own settlement
   for (const char* side : {"low_side", "high_side"}) {
     if (!cr[side].is_object()) continue;
     Series flank;
@@ -113,7 +114,7 @@ void add_crater_flanks(const json& s, Chart& profile) {
     flank.colour = "#333333";
     flank.dashed = true;
     flank.x = {cr[side]["foot_m"].get<double>(), cr[side]["x_90_percent_m"].get<double>()};
-    flank.y = {0.0, 0.9 * depth_mm};
+    flank.y = {base_mm, base_mm + 0.9 * depth_mm};
     profile.series.push_back(flank);
   }
 }
@@ -164,7 +165,7 @@ void add_erosion(const RunRecord& run, json& view) {
   add_crater_flanks(s, profile);
   add("settlement", profile, "Along x through the cavity: the surface's drop since the run started (its highest grain in bins of two "
                              "diameters). Dashed: the crater's flanks at the end, the straight line through 10 % and 90 % of its depth "
-                             "on each side (from columns one diameter wide), down to the original surface.");
+                             "below the surrounding ground on each side (from columns one diameter wide), down to that ground.");
   Chart cone = line_chart("Collapse zone", "time (s)", "grains displaced more than two diameters",
                         {series_of(rows, "", [](const json& r) { return get(r, "displaced_grains"); })});
   add("collapse", cone, "The boundary of the grains moved more than one diameter, fitted against height, is the slip surface "

@@ -82,7 +82,7 @@ void add_erosion(const StudyRun& run, json& view) {
     lost.series.push_back(a), zone.series.push_back(b), settled.series.push_back(c);
   }
   view["erosion_rows"] = rows;
-  view["erosion_charts"] = json::array({{{"svg", report::render_svg(lost)}, {"caption", "Grains that left the soil: fell into the cavity (the leak takes them) or were washed out through the outflow face."}},
+  view["erosion_charts"] = json::array({{{"svg", report::render_svg(lost)}, {"caption", "Grains that left the soil: fell into the cavity (kept there, or taken away where the cavity drains) or were washed out through the outflow face."}},
                                         {{"svg", report::render_svg(zone)}, {"caption", "The cylinder over the cavity's crown to the surface; 1 when it is empty."}},
                                         {{"svg", report::render_svg(settled)}, {"caption", "The deepest settlement of the surface along the line through the cavity."}}});
 }
