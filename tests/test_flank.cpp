@@ -56,7 +56,7 @@ TEST_CASE("Flank: a triangular bump's slopes, feet and width are its own", "[pos
   CHECK(*lifted.width() == Approx(a + b).margin(1e-12));
 }
 
-TEST_CASE("Flank: a bump cut off by the profile's end has one flank; a flat profile none", "[post][flank]") {
+TEST_CASE("Flank: a bump cut off by the profile's end has one flank and a flat profile none", "[post][flank]") {
   std::vector<double> x;
   for (int i = 0; i <= 100; ++i) x.push_back(0.001 * i);
   // The apex at 0.02 with a 0.05 base each side: the low side ends at 10 % ... 60 % of the height.
