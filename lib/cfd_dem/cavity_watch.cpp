@@ -9,12 +9,7 @@ namespace frostwall::cfd_dem {
 
 CavityWatch::CavityWatch(const project::CfdDem& c, const dem::LammpsSession& lammps) : c_(c), lammps_(lammps) {}
 
-bool CavityWatch::inside(const double* x) const {
-  if (!c_.cavity) return false;
-  double r2 = 0.0;
-  for (int k = 0; k < 3; ++k) r2 += (x[k] - c_.cavity->centre[k]) * (x[k] - c_.cavity->centre[k]);
-  return r2 < c_.cavity->radius * c_.cavity->radius;
-}
+bool CavityWatch::inside(const double* x) const { return dem::in_cavity(c_, x); }
 
 void CavityWatch::observe() {
   if (!c_.cavity) return;

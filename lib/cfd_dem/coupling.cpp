@@ -1,5 +1,7 @@
 #include "cfd_dem/coupling.hpp"
 
+#include "dem/packing.hpp"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -130,12 +132,7 @@ std::array<double, 3> CfdDemCoupling::fluid_force(int id) const {
   return static_cast<std::size_t>(id) < held_.size() ? held_[id] : std::array<double, 3>{};
 }
 
-double CfdDemCoupling::lost(const double* x) const {
-  if (!c_.cavity) return 0.0;
-  double r2 = 0.0;
-  for (int k = 0; k < 3; ++k) r2 += (x[k] - c_.cavity->centre[k]) * (x[k] - c_.cavity->centre[k]);
-  return r2 < c_.cavity->radius * c_.cavity->radius ? 1.0 : 0.0;
-}
+double CfdDemCoupling::lost(const double* x) const { return dem::in_cavity(c_, x) ? 1.0 : 0.0; }
 
 GrainTotals CfdDemCoupling::totals() const {
   GrainTotals t;

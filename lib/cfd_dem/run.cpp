@@ -257,9 +257,8 @@ void run_cfd_dem(const project::Project& p, const project::RunOptions& options) 
 
   settle_grains(p, lammps, coupling, setup, dt, settle_interval, options.progress, note);
   if (c.heap) {  // the container's sides lifted off the settled block
-    auto high = c.grains.fill_high;
-    high[2] = c.box.high[2];
-    for (const auto& s : dem::lifted_block_commands(c.grains.fill_low, high, dem::dem_contact(c), c.heap->lift_speed, lammps.time()))
+    const auto [low, high] = dem::heap_container(c);
+    for (const auto& s : dem::lifted_block_commands(low, high, dem::dem_contact(c), c.heap->lift_speed, lammps.time()))
       lammps.command(s);
     lammps.command("run 0 post no");  // the runs skip their set-up: a new fix needs one
   }

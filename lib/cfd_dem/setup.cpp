@@ -54,9 +54,8 @@ GrainSetup set_up_grains(const project::Project& p, dem::LammpsSession& lammps, 
   }
   if (c.heap && settling_here) {
     // The heap's grains settle in a container over the fill region, open to the box's top.
-    auto high = c.grains.fill_high;
-    high[2] = c.box.high[2];
-    for (const auto& s : dem::block_wall_commands(c.grains.fill_low, high, contact)) lammps.command(s);
+    const auto [low, high] = dem::heap_container(c);
+    for (const auto& s : dem::block_wall_commands(low, high, contact)) lammps.command(s);
   }
   for (const auto& s : dem::motion_commands(c.gravity, dt, c.grains.held)) lammps.command(s);
   return setup;

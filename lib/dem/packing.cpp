@@ -17,13 +17,6 @@ namespace {
 // (std::uniform_real_distribution is not).
 double unit(std::mt19937_64& rng) { return static_cast<double>(rng() >> 11) * 0x1.0p-53; }
 
-bool in_cavity(const project::CfdDem& c, const std::array<double, 3>& x, double clearance) {
-  if (!c.cavity) return false;
-  double r2 = 0.0;
-  for (int k = 0; k < 3; ++k) r2 += std::pow(x[k] - c.cavity->centre[k], 2);
-  return r2 < std::pow(c.cavity->radius + clearance, 2);
-}
-
 }  // namespace
 
 double mean_grain_volume(const project::GrainSettings& g) {
@@ -49,7 +42,7 @@ double fill_volume(const project::CfdDem& c) {
         const std::array<double, 3> x = {g.fill_low[0] + (i + 0.5) / n * (g.fill_high[0] - g.fill_low[0]),
                                          g.fill_low[1] + (j + 0.5) / n * (g.fill_high[1] - g.fill_low[1]),
                                          g.fill_low[2] + (k + 0.5) / n * (g.fill_high[2] - g.fill_low[2])};
-        inside += in_cavity(c, x, 0.0);
+        inside += in_cavity(c, x.data());
       }
   return volume * (1.0 - static_cast<double>(inside) / (static_cast<double>(n) * n * n));
 }
@@ -96,7 +89,7 @@ std::vector<Grain> initial_grains(const project::CfdDem& c) {
           const double pitch = length / n[a];  // evenly spread over the axis
           x[a] = g.fill_low[a] + (ijk[a] + 0.5) * pitch;
         }
-        if (!in_cavity(c, x, 0.5 * g.diameter_max)) sites.push_back(x);
+        if (!in_cavity(c, x.data(), 0.5 * g.diameter_max)) sites.push_back(x);
       }
   if (static_cast<long>(sites.size()) < wanted) {
     const char* key = g.count ? "grains.count" : "grains.porosity";
@@ -128,6 +121,19 @@ std::vector<Grain> initial_grains(const project::CfdDem& c) {
     grains.push_back(grain);
   }
   return grains;
+}
+
+bool in_cavity(const project::CfdDem& c, const double* x, double clearance) {
+  if (!c.cavity) return false;
+  double r2 = 0.0;
+  for (int k = 0; k < 3; ++k) r2 += (x[k] - c.cavity->centre[k]) * (x[k] - c.cavity->centre[k]);
+  return r2 < (c.cavity->radius + clearance) * (c.cavity->radius + clearance);
+}
+
+std::pair<std::array<double, 3>, std::array<double, 3>> heap_container(const project::CfdDem& c) {
+  auto high = c.grains.fill_high;
+  high[2] = c.box.high[2];
+  return {c.grains.fill_low, high};
 }
 
 std::filesystem::path packing_cache_file(const project::CfdDem& c, double timestep, int interval) {

@@ -7,6 +7,8 @@
 // cached (a LAMMPS data file) under a key of every setting it depends on.
 #pragma once
 
+#include <utility>
+
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -20,6 +22,10 @@ namespace frostwall::dem {
 double mean_grain_volume(const project::GrainSettings& g);
 // The diameter of a sphere of that volume, m.
 double mean_grain_diameter(const project::GrainSettings& g);
+// A centre at x (m) lies inside the cavity's sphere grown by clearance (false without a cavity).
+bool in_cavity(const project::CfdDem& c, const double* x, double clearance = 0.0);
+// A heap's container: the fill region on the floor, open up to the box's top (low, high corners).
+std::pair<std::array<double, 3>, std::array<double, 3>> heap_container(const project::CfdDem& c);
 // The fill region's volume within the box, minus the cavity's part of it, m3 (the
 // cavity's overlap found by sampling; exact when it lies inside).
 double fill_volume(const project::CfdDem& c);
