@@ -5,14 +5,11 @@
 #include <stdexcept>
 #include <unordered_map>
 
-#include "geometry/delaunay.hpp"
+#include "geometry/cloud_mesh.hpp"
 
 namespace frostwall::post {
 
 namespace {
-using K = geometry::Kernel2;
-using Delaunay = geometry::IndexedDelaunay;
-
 constexpr std::size_t none = static_cast<std::size_t>(-1);
 
 // A crossing of the isoline with one Delaunay edge: the node of the
@@ -53,28 +50,8 @@ IsolineMesh::IsolineMesh(std::vector<particles::Vec<2>> points, double max_edge)
 
 IsolineMesh::IsolineMesh(std::vector<particles::Vec<2>> points, const std::vector<double>& max_edge_at)
     : points_(std::move(points)) {
-  const auto& P = points_;
-  if (P.size() > 0xffffffffu) throw std::invalid_argument("isolines: too many points");
-  // One limit for all points, or one per point.
-  const bool one = max_edge_at.size() == 1;
-  if (!one && max_edge_at.size() != P.size()) throw std::invalid_argument("isolines: one max_edge per point expected");
-  for (double m : max_edge_at)
-    if (!(m > 0.0)) throw std::invalid_argument("isolines: max_edge must be > 0");
-  auto limit = [&](std::uint32_t i) { return one ? max_edge_at[0] : max_edge_at[i]; };
-  for (const auto& x : P)
-    if (!x.allFinite()) throw std::invalid_argument("isolines: non-finite point or value");
-  std::vector<std::pair<K::Point_2, std::size_t>> input;
-  input.reserve(P.size());
-  for (std::size_t i = 0; i < P.size(); ++i) input.emplace_back(K::Point_2(P[i][0], P[i][1]), i);
-  const Delaunay dt(input.begin(), input.end());
-  for (auto f = dt.finite_faces_begin(); f != dt.finite_faces_end(); ++f) {
-    std::array<std::uint32_t, 3> v;
-    double longest2 = 0.0;
-    for (int k = 0; k < 3; ++k) v[k] = static_cast<std::uint32_t>(f->vertex(k)->info());
-    for (int k = 0; k < 3; ++k) longest2 = std::max(longest2, (P[v[k]] - P[v[(k + 1) % 3]]).squaredNorm());
-    const double m = std::max({limit(v[0]), limit(v[1]), limit(v[2])});
-    if (longest2 <= m * m) triangles_.push_back(v);  // inf stays inf
-  }
+  // cloud_triangles checks the points and limits (std::invalid_argument).
+  triangles_ = geometry::cloud_triangles(points_, max_edge_at);
 }
 
 std::vector<Polyline> IsolineMesh::isolines(const std::vector<double>& values, double level) const {

@@ -9,6 +9,7 @@
 #include <limits>
 #include <vector>
 
+#include "geometry/cloud_mesh.hpp"
 #include "geometry/polyline.hpp"
 #include "particles/vec.hpp"
 
@@ -67,10 +68,12 @@ class IsolineMesh {
   IsolineMesh(std::vector<particles::Vec<2>> points, const std::vector<double>& max_edge_at);
   std::vector<Polyline> isolines(const std::vector<double>& values, double level) const;
   std::size_t size() const { return points_.size(); }
+  const std::vector<particles::Vec<2>>& points() const { return points_; }
+  const std::vector<geometry::Triangle>& triangles() const { return triangles_; }
 
  private:
   std::vector<particles::Vec<2>> points_;
-  std::vector<std::array<std::uint32_t, 3>> triangles_;  // counterclockwise, longest edge <= max_edge
+  std::vector<geometry::Triangle> triangles_;  // counterclockwise, longest edge <= max_edge
 };
 
 }  // namespace frostwall::post
