@@ -11,6 +11,8 @@
 #include <vtkCellArray.h>
 #include <vtkCellType.h>
 #include <vtkDataArray.h>
+#include <vtkFieldData.h>
+#include <vtkVariant.h>
 #include <vtkNew.h>
 #include <vtkObject.h>
 #include <vtkPointData.h>
@@ -89,6 +91,45 @@ TEST_CASE("write_vtu round-trips points, vertex cells and fields", "[shared][io]
   CHECK(temperature->GetDataType() == VTK_DOUBLE);
   CHECK(temperature->GetTuple1(612) == frame.fields[0].second[612]);
   CHECK(volume->GetTuple1(999) == frame.fields[1].second[999]);
+}
+
+TEST_CASE("write_vtu writes triangles, a vertex for a point in none, the labels, and a subset keeps its fields", "[shared][io]") {
+  TempDir dir("frostwall-vtk");
+  // A unit square split along a diagonal, and a fifth point in no triangle.
+  PointCloudFrame frame;
+  frame.points = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {5, 5, 0}};
+  frame.fields = {{"temperature", {0, 1, 2, 1, 9}}};
+  frame.vectors = {{"displacement", {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 5, 5, 0}}};
+  frame.triangles = {{0, 1, 2}, {0, 2, 3}};
+  frame.labels = {{"project", "square"}, {"time_unit", "h"}};
+  const fs::path file = dir.path / "square.vtu";
+  write_vtu(file, frame);
+  vtkNew<vtkXMLUnstructuredGridReader> reader;
+  reader->SetFileName(file.c_str());
+  reader->Update();
+  vtkUnstructuredGrid* grid = reader->GetOutput();
+  REQUIRE(grid->GetNumberOfCells() == 3);
+  CHECK(grid->GetCellType(0) == VTK_TRIANGLE);
+  CHECK(grid->GetCellType(1) == VTK_TRIANGLE);
+  CHECK(grid->GetCellType(2) == VTK_VERTEX);
+  CHECK(grid->GetCell(2)->GetPointId(0) == 4);
+  CHECK(grid->GetCell(1)->GetPointId(2) == 3);
+  auto* project = grid->GetFieldData()->GetAbstractArray("project");
+  REQUIRE(project != nullptr);
+  CHECK(project->GetVariantValue(0).ToString() == "square");
+  CHECK(grid->GetFieldData()->GetAbstractArray("time_unit")->GetVariantValue(0).ToString() == "h");
+
+  const auto part = subset(frame, {4, 0});
+  REQUIRE(part.points.size() == 2);
+  CHECK(part.points[0][0] == 5.0);
+  CHECK(part.fields[0].second == std::vector<double>{9, 0});
+  CHECK(part.vectors[0].second == std::vector<double>{5, 5, 0, 0, 0, 0});
+  CHECK(part.triangles.empty());
+  CHECK(part.labels == frame.labels);
+
+  frame.triangles.push_back({0, 1, 7});  // a corner beyond the points
+  CHECK_THROWS_AS(write_vtu(dir.path / "bad.vtu", frame), std::invalid_argument);
+  CHECK(!fs::exists(dir.path / "bad.vtu"));
 }
 
 TEST_CASE("write_vtu overwrites an existing file", "[shared][io]") {

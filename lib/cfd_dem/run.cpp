@@ -73,7 +73,7 @@ void check_cfd_dem_resources(const project::CfdDem& c) {
 namespace {
 
 // Every rank's grains gathered on rank 0, by id: the snapshot's grain file.
-void write_grains(const fs::path& file, dem::LammpsSession& lammps, const CfdDemCoupling& coupling, const SoilWatch& soil,
+void write_grains(const fs::path& file, const io::Labels& labels, dem::LammpsSession& lammps, const CfdDemCoupling& coupling, const SoilWatch& soil,
                   const CavityWatch& cavity) {
   constexpr int fields = 16;  // id, x3, v3, radius, contacts, force3, lost, displacement3
   const int n = lammps.local_count();
@@ -118,12 +118,15 @@ void write_grains(const fs::path& file, dem::LammpsSession& lammps, const CfdDem
     lost.push_back(g[12]);
     displacement.insert(displacement.end(), {g[13], g[14], g[15]});
   }
-  frame.fields = {{"diameter", diameter}, {"contacts", contact}, {"lost", lost}};
+  std::vector<double> radius(diameter.size());
+  for (std::size_t i = 0; i < radius.size(); ++i) radius[i] = 0.5 * diameter[i];  // Point Gaussian, Glyph scale
+  frame.fields = {{"diameter", diameter}, {"radius", radius}, {"contacts", contact}, {"lost", lost}};
+  frame.labels = labels;
   frame.vectors = {{"velocity", velocity}, {"fluid_force", force}, {"displacement", displacement}};
   io::write_vtu(file, frame);
 }
 
-void write_fluid(const fs::path& file, const pore_water::FluidGrid& grid) {
+void write_fluid(const fs::path& file, const io::Labels& labels, const pore_water::FluidGrid& grid) {
   const auto& s = grid.shape();
   io::GridFrame frame;
   for (int k = 0; k < 3; ++k) frame.origin[k] = s.low[k], frame.spacing[k] = s.cell_size(k), frame.cells[k] = s.cells[k];
@@ -131,6 +134,7 @@ void write_fluid(const fs::path& file, const pore_water::FluidGrid& grid) {
   for (const auto& u : grid.superficial_velocity()) velocity.insert(velocity.end(), {u[0], u[1], u[2]});
   frame.fields = {{"porosity", grid.porosity()}, {"pressure", grid.pressure()}};
   frame.vectors = {{"superficial_velocity", velocity}};
+  frame.labels = labels;
   io::write_vti(file, frame);
 }
 
@@ -178,8 +182,9 @@ void run_flow(const project::Project& p, dem::LammpsSession& lammps, CfdDemCoupl
     if (is_snapshot) {
       const std::string stem = fmt::format("{:04d}", next_snapshot + 1);
       if (p.output.vtk) {
-        write_grains(out / ("grains_" + stem + ".vtu"), lammps, coupling, soil, cavity);
-        if (root) write_fluid(out / ("fluid_" + stem + ".vti"), coupling.grid());
+        const auto labels = io::file_labels(p, "s");  // the collections' times are in seconds
+        write_grains(out / ("grains_" + stem + ".vtu"), labels, lammps, coupling, soil, cavity);
+        if (root) write_fluid(out / ("fluid_" + stem + ".vti"), labels, coupling.grid());
         rec.grain_pvd.push_back({t, "grains_" + stem + ".vtu"});
         rec.fluid_pvd.push_back({t, "fluid_" + stem + ".vti"});
       }

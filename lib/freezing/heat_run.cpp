@@ -54,6 +54,7 @@ class HeatRun {
   std::vector<std::string> stems_;
   std::vector<io::PvdEntry> pvd_, ring_pvd_;
   bool write_ring_ = false;
+  std::optional<SnapshotFrames> frames_;  // with VTK output
   nlohmann::json front_ = nlohmann::json::array();
   // Shaft sections: the regular series is read from the fields interpolated
   // linearly in time between the two steps around each sample, so only the
@@ -82,6 +83,7 @@ HeatRun::HeatRun(const Project& p, Model& built, const project::RunOptions& opti
   if (!options.project_text.empty()) io::write_text_file(out_ / "project.json", options.project_text);
   stems_ = snapshot_stems(p.time, "field");
   write_ring_ = p.output.vtk && p.output.full_ring && built.shaft && !built.particles().mirrors.empty();
+  if (p.output.vtk) frames_.emplace(built.particles(), io::file_labels(p));
   series_ = sample_times(p.time, time_series_points);
   // No RKL2 step longer than that interval: on the single ring, longer late
   // steps (a front particle then freezes within one step) cost 0.5-1 cm of
@@ -180,14 +182,15 @@ void HeatRun::at_output(const thermal::ThermalModel& m, double t) {
 }
 
 void HeatRun::write_snapshot(const thermal::ThermalModel& m, double t, const std::string& stem) {
-  auto frame = frame_of(built_.particles(), m);
-  if (extension_) extension_->add_fields(frame, m);
-  if (flow_) flow_->add_fields(frame, m);
+  auto all = frame_of(built_.particles(), m);
+  if (extension_) extension_->add_fields(all, m);
+  if (flow_) flow_->add_fields(all, m);
+  const auto frame = frames_->wedge(all);
   io::write_vtu(out_ / (stem + ".vtu"), frame);
   pvd_.push_back({t / unit_, stem + ".vtu"});
   if (write_ring_) {
     const std::string ring_file = "ring" + stem.substr(5) + ".vtu";
-    io::write_vtu(out_ / ring_file, full_ring(frame, built_.particles().mirrors, built_.shaft->far_field_radius));
+    io::write_vtu(out_ / ring_file, frames_->ring(frame, built_.particles().mirrors, built_.shaft->far_field_radius));
     ring_pvd_.push_back({t / unit_, ring_file});
   }
 }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fmt/core.h>
+#include <stdexcept>
 
 #include "particles/symmetry_group.hpp"
 
@@ -50,8 +51,10 @@ io::PointCloudFrame full_ring(const io::PointCloudFrame& wedge, const std::vecto
   const auto group = particles::symmetry_group(mirrors, length_scale);
   io::PointCloudFrame ring;
   ring.single_precision = true;  // 50x the wedge's particles: float32 halves the file and its write time
+  ring.labels = wedge.labels;
   for (const auto& field : wedge.fields)
-    if (field.first == "temperature" || field.first == "liquid_fraction" || field.first == "phase")
+    if (field.first == "temperature" || field.first == "liquid_fraction" || field.first == "phase" ||
+        field.first == "boundary")
       ring.fields.push_back(field);
   for (auto& field : ring.fields) field.second.clear();
   for (const auto& g : group) {
@@ -66,13 +69,80 @@ io::PointCloudFrame full_ring(const io::PointCloudFrame& wedge, const std::vecto
   return ring;
 }
 
+namespace {
+
+// Triangles with a corner off the boundaries (flag < 0): the three-corner
+// boundary ones lie across a pipe disc, where there is no ground.
+std::vector<geometry::Triangle> ground_triangles(const std::vector<particles::Vec<2>>& points,
+                                                 const std::vector<double>& limit, const std::vector<double>& boundary) {
+  auto all = geometry::cloud_triangles(points, limit);
+  std::erase_if(all, [&](const geometry::Triangle& t) {
+    return boundary[t[0]] >= 0 && boundary[t[1]] >= 0 && boundary[t[2]] >= 0;
+  });
+  // Smallest corner first (the orientation kept), triangles in the order of
+  // their corners: neighbouring numbers compress to a fraction of the size.
+  for (auto& t : all) std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
+  std::sort(all.begin(), all.end());
+  return all;
+}
+
+const std::vector<double>& field(const io::PointCloudFrame& frame, const std::string& name) {
+  for (const auto& [n, values] : frame.fields)
+    if (n == name) return values;
+  throw std::logic_error("snapshot frame without " + name);
+}
+
+std::vector<particles::Vec<2>> plane_points(const io::PointCloudFrame& frame) {
+  std::vector<particles::Vec<2>> points;
+  points.reserve(frame.points.size());
+  for (const auto& x : frame.points) points.emplace_back(x[0], x[1]);
+  return points;
+}
+
+}  // namespace
+
+SnapshotFrames::SnapshotFrames(const particles::ParticleSet<2>& P, io::Labels labels)
+    : labels_(std::move(labels)) {
+  for (std::size_t i = 0; i < P.size(); ++i)
+    if (P.is_free(i) || !P.reflection[i].allFinite()) {
+      shown_.push_back(i);
+      limit_.push_back(3.0 * P.spacing_of(i));
+    }
+  std::vector<particles::Vec<2>> points;
+  std::vector<double> boundary;
+  for (std::size_t i : shown_) points.push_back(P.position[i]), boundary.push_back(P.boundary[i]);
+  wedge_triangles_ = ground_triangles(points, limit_, boundary);
+}
+
+io::PointCloudFrame SnapshotFrames::wedge(const io::PointCloudFrame& all) const {
+  auto frame = io::subset(all, shown_);
+  frame.triangles = wedge_triangles_;
+  frame.labels = labels_;
+  return frame;
+}
+
+io::PointCloudFrame SnapshotFrames::ring(const io::PointCloudFrame& wedge,
+                                         const std::vector<particles::MirrorPlane<2>>& mirrors, double length_scale) {
+  auto ring = full_ring(wedge, mirrors, length_scale);
+  if (ring_triangles_.empty()) {
+    std::vector<double> limit;
+    limit.reserve(ring.points.size());
+    while (limit.size() < ring.points.size()) limit.insert(limit.end(), limit_.begin(), limit_.end());
+    ring_triangles_ = ground_triangles(plane_points(ring), limit, field(ring, "boundary"));
+  }
+  ring.triangles = ring_triangles_;
+  return ring;
+}
+
 const char* integrator_name(project::IntegratorKind k) {
   if (k == project::IntegratorKind::rkl2) return "rkl2";
   return k == project::IntegratorKind::implicit ? "implicit" : "explicit";
 }
 
 const char* time_unit_name(project::TimeUnit u) {
-  return u == project::TimeUnit::s ? "s" : (u == project::TimeUnit::h ? "h" : "d");
+  project::TimeSettings t;
+  t.unit = u;
+  return t.unit_name();
 }
 
 }  // namespace frostwall::freezing

@@ -4,8 +4,10 @@
 #pragma once
 
 #include <string>
+#include <utility>
 #include <vector>
 
+#include "geometry/cloud_mesh.hpp"
 #include "io/point_cloud_vtk.hpp"
 #include "particles/particle_set.hpp"
 #include "project/project.hpp"
@@ -25,9 +27,38 @@ std::vector<std::string> snapshot_stems(const project::TimeSettings& time, const
 io::PointCloudFrame frame_of(const particles::ParticleSet<2>& particles, const thermal::ThermalModel& model);
 
 // The whole ring: every copy of the wedge under its mirror group (float32,
-// the temperature, liquid fraction and phase only).
+// the temperature, liquid fraction, phase and boundary flag only).
 io::PointCloudFrame full_ring(const io::PointCloudFrame& wedge, const std::vector<particles::MirrorPlane<2>>& mirrors,
                               double length_scale);
+
+// What a user sees of the particles in the snapshot files:
+//  - the free particles and the fixed ones that hold a boundary's own
+//    temperature (on a pipe wall, a cooled face, a point-model pipe), not
+//    the layers beyond a wall that hold its antisymmetric extension (colder
+//    than the wall itself, inside the pipe discs);
+//  - the triangles between them (the cloud's Delaunay triangles, at most
+//    three local spacings long, without those whose three corners all hold
+//    a boundary temperature: across a pipe disc), so ParaView contours the
+//    field with no preparation. Built once: the particles do not move.
+// The whole ring gets the same for all copies of the wedge.
+class SnapshotFrames {
+ public:
+  // labels: the field data of every file (project, time unit, version).
+  SnapshotFrames(const particles::ParticleSet<2>& particles, io::Labels labels);
+  // The shown particles of a frame of every particle (frame_of plus what
+  // the run added to it), with their triangles.
+  io::PointCloudFrame wedge(const io::PointCloudFrame& all) const;
+  // The whole ring of a wedge() frame; triangulated at the first call.
+  io::PointCloudFrame ring(const io::PointCloudFrame& wedge, const std::vector<particles::MirrorPlane<2>>& mirrors,
+                           double length_scale);
+  std::size_t shown() const { return shown_.size(); }
+
+ private:
+  std::vector<std::size_t> shown_;
+  std::vector<double> limit_;  // per shown particle: three local spacings
+  io::Labels labels_;
+  std::vector<geometry::Triangle> wedge_triangles_, ring_triangles_;
+};
 
 const char* integrator_name(project::IntegratorKind k);
 const char* time_unit_name(project::TimeUnit u);

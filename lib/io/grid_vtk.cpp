@@ -3,11 +3,13 @@
 #include <stdexcept>
 #include <vtkCellData.h>
 #include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
 #include <vtkImageData.h>
 #include <vtkNew.h>
 #include <vtkXMLImageDataWriter.h>
 
 #include "io/atomic_file.hpp"
+#include "io/labels.hpp"
 
 namespace frostwall::io {
 
@@ -29,6 +31,7 @@ void write_vti(const std::filesystem::path& file, const GridFrame& frame) {
   };
   for (const auto& [name, values] : frame.fields) add(name, values, 1);
   for (const auto& [name, values] : frame.vectors) add(name, values, 3);
+  add_labels(*grid->GetFieldData(), frame.labels);
   write_atomically(file, [&](const std::filesystem::path& tmp) {
     vtkNew<vtkXMLImageDataWriter> writer;
     writer->SetFileName(tmp.c_str());

@@ -9,6 +9,8 @@
 #include <utility>
 #include <vector>
 
+#include "io/labels.hpp"
+
 namespace frostwall::io {
 
 struct GridFrame {
@@ -16,6 +18,7 @@ struct GridFrame {
   std::array<int, 3> cells{};
   // (name, one value per cell, x fastest), and vectors (three per cell)
   std::vector<std::pair<std::string, std::vector<double>>> fields, vectors;
+  Labels labels;  // the file's field data (io/labels.hpp)
 };
 
 void write_vti(const std::filesystem::path& file, const GridFrame& frame);

@@ -6,20 +6,86 @@
 #include <vtkCellArray.h>
 #include <vtkCellType.h>
 #include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
 #include <vtkFloatArray.h>
 #include <vtkSmartPointer.h>
 #include <vtkIdTypeArray.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
+#include <vtkUnsignedCharArray.h>
 #include <vtkUnstructuredGrid.h>
 #include <vtkXMLUnstructuredGridWriter.h>
 
 #include "io/atomic_file.hpp"
+#include "io/labels.hpp"
 
 namespace frostwall::io {
 
 namespace fs = std::filesystem;
+
+namespace {
+
+// Triangles where given, and a vertex cell for each point in none of them
+// (all points when there are no triangles), built as flat offset and
+// connectivity arrays in one pass instead of per-cell inserts.
+void set_cells(vtkUnstructuredGrid& grid, const PointCloudFrame& frame) {
+  const auto n = static_cast<vtkIdType>(frame.points.size());
+  std::vector<char> used(n, 0);
+  for (const auto& t : frame.triangles)
+    for (auto v : t) {
+      if (v >= frame.points.size())
+        throw std::invalid_argument(fmt::format("write_vtu: triangle corner {} of {} points", v, n));
+      used[v] = 1;
+    }
+  vtkIdType lonely = 0;
+  for (char u : used) lonely += !u;
+  const auto triangles = static_cast<vtkIdType>(frame.triangles.size());
+  const vtkIdType cells = triangles + lonely;
+  vtkNew<vtkIdTypeArray> offsets, connectivity;
+  vtkNew<vtkUnsignedCharArray> types;
+  offsets->SetNumberOfValues(cells + 1);
+  connectivity->SetNumberOfValues(3 * triangles + lonely);
+  types->SetNumberOfValues(cells);
+  vtkIdType c = 0, at = 0;
+  for (const auto& t : frame.triangles) {
+    offsets->SetValue(c, at);
+    types->SetValue(c++, VTK_TRIANGLE);
+    for (auto v : t) connectivity->SetValue(at++, v);
+  }
+  for (vtkIdType i = 0; i < n; ++i)
+    if (!used[i]) {
+      offsets->SetValue(c, at);
+      types->SetValue(c++, VTK_VERTEX);
+      connectivity->SetValue(at++, i);
+    }
+  offsets->SetValue(cells, at);
+  vtkNew<vtkCellArray> array;
+  array->SetData(offsets, connectivity);
+  grid.SetCells(types, array);
+}
+
+}  // namespace
+
+PointCloudFrame subset(const PointCloudFrame& frame, const std::vector<std::size_t>& keep) {
+  PointCloudFrame out;
+  out.single_precision = frame.single_precision;
+  out.labels = frame.labels;
+  out.points.reserve(keep.size());
+  for (std::size_t i : keep) out.points.push_back(frame.points.at(i));
+  auto pick = [&](const auto& source, std::size_t components, auto& target) {
+    for (const auto& [name, values] : source) {
+      std::vector<double> kept;
+      kept.reserve(components * keep.size());
+      for (std::size_t i : keep)
+        for (std::size_t c = 0; c < components; ++c) kept.push_back(values.at(components * i + c));
+      target.emplace_back(name, std::move(kept));
+    }
+  };
+  pick(frame.fields, 1, out.fields);
+  pick(frame.vectors, 3, out.vectors);
+  return out;
+}
 
 void write_vtu(const fs::path& file, const PointCloudFrame& frame) {
   const auto n = static_cast<vtkIdType>(frame.points.size());
@@ -39,23 +105,10 @@ void write_vtu(const fs::path& file, const PointCloudFrame& frame) {
   points->SetNumberOfPoints(n);
   for (vtkIdType i = 0; i < n; ++i) points->SetPoint(i, frame.points[i].data());
 
-  // One VTK_VERTEX per point, built as flat offsets/connectivity arrays in a
-  // single pass instead of n InsertNextCell calls.
-  vtkNew<vtkIdTypeArray> offsets;
-  vtkNew<vtkIdTypeArray> connectivity;
-  offsets->SetNumberOfValues(n + 1);
-  connectivity->SetNumberOfValues(n);
-  for (vtkIdType i = 0; i < n; ++i) {
-    offsets->SetValue(i, i);
-    connectivity->SetValue(i, i);
-  }
-  offsets->SetValue(n, n);
-  vtkNew<vtkCellArray> cells;
-  cells->SetData(offsets, connectivity);
-
   vtkNew<vtkUnstructuredGrid> grid;
   grid->SetPoints(points);
-  grid->SetCells(VTK_VERTEX, cells);
+  set_cells(*grid, frame);
+  add_labels(*grid->GetFieldData(), frame.labels);
 
   auto add = [&](const std::string& name, const std::vector<double>& values, int components) {
     vtkSmartPointer<vtkDataArray> array;
@@ -78,7 +131,11 @@ void write_vtu(const fs::path& file, const PointCloudFrame& frame) {
     writer->SetDataModeToAppended();
     writer->EncodeAppendedDataOff();  // raw binary, not base64
     writer->SetHeaderTypeToUInt64();  // the UInt32 default overflows past 4 GiB per array
-    // LZ4: about as small as zlib on these fields, several times faster to write.
+    // Cell connectivity as Int32 (half the bytes) while the indices fit.
+    if (n < vtkIdType(1) << 31) writer->SetIdTypeToInt32();
+    // LZ4: about as small as zlib on the fields, several times faster to
+    // write. zlib (level 1) halves the triangles' connectivity, but made the
+    // main job 1.48x slower to run (bench/README.md).
     writer->SetCompressorTypeToLZ4();
     // Write() reports failure only through its return value (1 = success).
     if (writer->Write() != 1)

@@ -1,13 +1,17 @@
-// VTK output of a particle cloud: one .vtu per snapshot (points as vertex
-// cells with named point fields) and a .pvd time collection for ParaView.
-// Every file is written to a temporary name and renamed when complete.
+// VTK output of a particle cloud: one .vtu per snapshot (named point fields
+// on the particles; triangles between them where the caller gives them,
+// else vertex cells) and a .pvd time collection for ParaView. Every file is
+// written to a temporary name and renamed when complete.
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <utility>
 #include <vector>
+
+#include "io/labels.hpp"
 
 namespace frostwall::io {
 
@@ -20,7 +24,19 @@ struct PointCloudFrame {
   // Float32 points and fields: for large views (the full ring) where the
   // file size and write time matter more than the last digits.
   bool single_precision = false;
+  // Triangles over the points (indices, counterclockwise), written as
+  // VTK_TRIANGLE cells so that ParaView's Contour, Surface and Plot Over
+  // Line work as on a finite-element mesh; every point in no triangle gets
+  // a vertex cell. Empty: one vertex cell per point (grains, clouds).
+  std::vector<std::array<std::uint32_t, 3>> triangles;
+  // (name, text) pairs stored as the file's field data: the project, the
+  // time unit, the frostwall version.
+  Labels labels;
 };
+
+// The frame restricted to the points `keep` (indices, in that order), with
+// every field and vector; triangles are not carried over.
+PointCloudFrame subset(const PointCloudFrame& frame, const std::vector<std::size_t>& keep);
 
 // Writes an XML UnstructuredGrid (.vtu), binary appended, to `file`.
 void write_vtu(const std::filesystem::path& file, const PointCloudFrame& frame);

@@ -166,6 +166,7 @@ struct TimeSettings {
   TimeUnit unit = TimeUnit::d;      // the unit the user wrote (for output)
   std::vector<double> snapshots;    // seconds, ascending, each in (0, end]
   double unit_seconds() const;      // 1, 3600 or 86400
+  const char* unit_name() const;    // "s", "h" or "d"
 };
 
 

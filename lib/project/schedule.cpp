@@ -29,4 +29,8 @@ double TimeSettings::unit_seconds() const {
   return 1.0;  // unreachable; keeps -Wreturn-type quiet
 }
 
+const char* TimeSettings::unit_name() const {
+  return unit == TimeUnit::s ? "s" : (unit == TimeUnit::h ? "h" : "d");
+}
+
 }  // namespace frostwall::project
