@@ -10,10 +10,15 @@
 //  - no file holds a temperature outside what the pipes (-20 degC) and
 //    the initial ground (15 degC) span: no antisymmetric ghost layer of
 //    the pipe walls is written;
-//  - every file names its project, time unit and frostwall version.
+//  - every file names its project, time unit and frostwall version;
+//  - open_in_paraview.py loads series that exist, with the colour map
+//    spanning what the files hold, and is valid Python (when python3 is
+//    there to parse it).
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <cstdlib>
+#include <fmt/core.h>
 #include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
@@ -34,6 +39,7 @@
 #include "run/run_project.hpp"
 #include "support.hpp"
 #include "temp_dir.hpp"
+#include "text_file.hpp"
 
 using namespace frostwall;
 namespace fs = std::filesystem;
@@ -152,6 +158,21 @@ TEST_CASE("ParaView's Contour filter draws the design isotherm on the main job's
     CHECK(triangles > grid->GetNumberOfPoints());  // about two per point
     CHECK(inside_pipe == 0);
   }
+
+  // The ParaView script: the collections it opens exist, its temperature
+  // range is what the files hold, and Python parses it.
+  const std::string script = test::read_text(out / "open_in_paraview.py");
+  for (const char* series : {"ring.pvd", "field.pvd"}) {
+    CHECK(script.find(fmt::format("(\"{}\", 'temperature'", series)) != std::string::npos);
+    CHECK(fs::exists(out / series));
+  }
+  CHECK(script.find("COLDEST = -20 ") != std::string::npos);
+  CHECK(script.find("WARMEST = 15 ") != std::string::npos);
+  if (std::system("python3 -c '' 2>/dev/null") == 0)
+    CHECK(std::system(("python3 -c \"import ast,sys; ast.parse(open(sys.argv[1]).read())\" '" +
+                       (out / "open_in_paraview.py").string() + "'").c_str()) == 0);
+  else
+    WARN("python3 is not installed: open_in_paraview.py not parsed");
 
   // Before closure (day 10): a closed isotherm around every pipe, none
   // around the shaft.

@@ -18,6 +18,7 @@
 #include "dem/packing.hpp"
 #include "io/atomic_file.hpp"
 #include "io/grid_vtk.hpp"
+#include "io/paraview_script.hpp"
 #include "io/point_cloud_vtk.hpp"
 #include "io/output_directory.hpp"
 #include "cfd_dem/cavity_watch.hpp"
@@ -286,6 +287,11 @@ void run_cfd_dem(const project::Project& p, const project::RunOptions& options) 
   if (p.output.vtk) {
     io::write_pvd(out / "grains.pvd", rec.grain_pvd);
     io::write_pvd(out / "fluid.pvd", rec.fluid_pvd);
+    using Kind = io::ParaviewSeries::Kind;
+    io::ParaviewScene scene;
+    scene.title = p.name;
+    scene.series = {{"grains.pvd", Kind::grains, true}, {"fluid.pvd", Kind::fluid, false}};
+    io::write_paraview_script(out / "open_in_paraview.py", scene);
   }
   io::write_text_file(out / "dem_commands.txt", dem_commands(lammps, c, interval, total_steps));
   io::write_text_file(out / "series.csv", rec.results.csv());

@@ -15,6 +15,7 @@
 #include "freezing/shaft_results.hpp"
 #include "io/atomic_file.hpp"
 #include "io/output_directory.hpp"
+#include "io/paraview_script.hpp"
 #include "post/frozen_area_trend.hpp"
 #include "post/front.hpp"
 #include "post/gap_closure.hpp"
@@ -43,6 +44,7 @@ class HeatRun {
   void sample_series(const thermal::ThermalModel& m, double t);
   void at_output(const thermal::ThermalModel& m, double t);
   void write_snapshot(const thermal::ThermalModel& m, double t, const std::string& stem);
+  void note_for_paraview(const io::PointCloudFrame& frame);
   nlohmann::ordered_json summary(const thermal::TimeLoopResult& loop) const;
 
   const Project& p_;
@@ -55,6 +57,7 @@ class HeatRun {
   std::vector<io::PvdEntry> pvd_, ring_pvd_;
   bool write_ring_ = false;
   std::optional<SnapshotFrames> frames_;  // with VTK output
+  io::ParaviewScene paraview_;             // what open_in_paraview.py loads
   nlohmann::json front_ = nlohmann::json::array();
   // Shaft sections: the regular series is read from the fields interpolated
   // linearly in time between the two steps around each sample, so only the
@@ -187,6 +190,7 @@ void HeatRun::write_snapshot(const thermal::ThermalModel& m, double t, const std
   if (flow_) flow_->add_fields(all, m);
   const auto frame = frames_->wedge(all);
   io::write_vtu(out_ / (stem + ".vtu"), frame);
+  note_for_paraview(frame);
   pvd_.push_back({t / unit_, stem + ".vtu"});
   if (write_ring_) {
     const std::string ring_file = "ring" + stem.substr(5) + ".vtu";
@@ -195,9 +199,31 @@ void HeatRun::write_snapshot(const thermal::ThermalModel& m, double t, const std
   }
 }
 
+// The temperature range of the files written, and whether they carry a
+// solid, for the ParaView script's colour map.
+void HeatRun::note_for_paraview(const io::PointCloudFrame& frame) {
+  for (const auto& [name, values] : frame.fields)
+    if (name == "temperature" && !values.empty()) {
+      const auto [lo, hi] = std::minmax_element(values.begin(), values.end());
+      const bool first = pvd_.empty();
+      paraview_.coldest = first ? *lo : std::min(paraview_.coldest, *lo);
+      paraview_.warmest = first ? *hi : std::max(paraview_.warmest, *hi);
+    }
+  for (const auto& vector : frame.vectors) paraview_.solid = paraview_.solid || vector.first == "displacement";
+}
+
 void HeatRun::finish(const thermal::TimeLoopResult& loop) {
   if (p_.output.vtk) io::write_pvd(out_ / "field.pvd", pvd_);
   if (write_ring_) io::write_pvd(out_ / "ring.pvd", ring_pvd_);
+  if (p_.output.vtk && !pvd_.empty()) {
+    using Kind = io::ParaviewSeries::Kind;
+    if (write_ring_) paraview_.series.push_back({"ring.pvd", Kind::temperature, true});
+    paraview_.series.push_back({"field.pvd", Kind::temperature, !write_ring_});
+    paraview_.title = p_.name;
+    paraview_.freezing_point = p_.soil.freezing_point;
+    paraview_.isotherm = p_.design.isotherm;
+    io::write_paraview_script(out_ / "open_in_paraview.py", paraview_);
+  }
   io::write_text_file(out_ / "summary.json", summary(loop).dump(2) + "\n");
 }
 
