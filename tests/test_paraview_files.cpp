@@ -193,3 +193,44 @@ TEST_CASE("ParaView's Contour filter draws the design isotherm on the main job's
   CHECK(inner.r_max < ring_radius - pipe_radius);
   CHECK(outer.r_min > ring_radius + pipe_radius);
 }
+
+TEST_CASE("A PD plate's files hold the plate alone, as triangles ParaView contours, within the boundary and start temperatures", "[pd][mechanics][io][paraview]") {
+  test::TempDir dir("frostwall-paraview-plate");
+  auto p = test::shipped_project("plate_cooling.json",
+                                 {{"numerics", {{"method", "pd"}, {"spacing", 0.0005}}},
+                                  {"time", {{"end", 100}, {"unit", "s"}, {"snapshots", {25, 100}}}},
+                                  {"output", {{"report", false}}}});
+  p.output.directory = (dir.path / "out").string();
+  run::run_project(p, {});
+  const fs::path out = dir.path / "out";
+  const double side = 0.01, face_T = 1.0, start_T = 10.0;
+  for (const char* name : {"field_0025.vtu", "field_0100.vtu"}) {
+    INFO(name);
+    auto grid = read_grid(out / name);
+    REQUIRE(grid->GetNumberOfPoints() >= 20 * 20);
+    REQUIRE(grid->GetPointData()->GetArray("displacement") != nullptr);
+    double range[2], bounds[6];
+    grid->GetPointData()->GetArray("temperature")->GetRange(range);
+    CHECK(range[0] >= face_T - 1e-9);
+    CHECK(range[1] <= start_T + 1e-9);
+    // Every point on the plate (the cooled faces' own row included), none
+    // beyond a face.
+    grid->GetBounds(bounds);
+    CHECK(bounds[0] >= -1e-12);
+    CHECK(bounds[1] <= side + 1e-12);
+    CHECK(bounds[2] >= -1e-12);
+    CHECK(bounds[3] <= side + 1e-12);
+    vtkIdType triangles = 0;
+    for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c) triangles += grid->GetCellType(c) == VTK_TRIANGLE;
+    CHECK(triangles >= 2 * (grid->GetNumberOfPoints() - 2 * std::sqrt(double(grid->GetNumberOfPoints())) - 1));
+    // An isotherm halfway between the coldest and the warmest point.
+    vtkNew<vtkContourFilter> contour;
+    contour->SetInputData(grid);
+    contour->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "temperature");
+    contour->SetValue(0, 0.5 * (range[0] + range[1]));
+    contour->Update();
+    CHECK(contour->GetOutput()->GetNumberOfLines() > 0);
+  }
+  CHECK(fs::exists(out / "open_in_paraview.py"));
+  CHECK(test::read_text(out / "open_in_paraview.py").find("SOLID = True") != std::string::npos);
+}

@@ -86,7 +86,11 @@ HeatRun::HeatRun(const Project& p, Model& built, const project::RunOptions& opti
   if (!options.project_text.empty()) io::write_text_file(out_ / "project.json", options.project_text);
   stems_ = snapshot_stems(p.time, "field");
   write_ring_ = p.output.vtk && p.output.full_ring && built.shaft && !built.particles().mirrors.empty();
-  if (p.output.vtk) frames_.emplace(built.particles(), io::file_labels(p));
+  if (p.output.vtk) {
+    std::optional<std::array<double, 2>> plate;
+    if (const auto* rect = std::get_if<project::Rectangle>(&p.geometry)) plate = std::array{rect->width, rect->height};
+    frames_.emplace(built.particles(), io::file_labels(p), plate);
+  }
   series_ = sample_times(p.time, time_series_points);
   // No RKL2 step longer than that interval: on the single ring, longer late
   // steps (a front particle then freezes within one step) cost 0.5-1 cm of

@@ -71,14 +71,17 @@ io::PointCloudFrame full_ring(const io::PointCloudFrame& wedge, const std::vecto
 
 namespace {
 
-// Triangles with a corner off the boundaries (flag < 0): the three-corner
-// boundary ones lie across a pipe disc, where there is no ground.
+// The cloud's triangles; in a shaft section, those with a corner off the
+// boundaries (flag < 0): the three-corner boundary ones lie across a pipe
+// disc, where there is no ground.
 std::vector<geometry::Triangle> ground_triangles(const std::vector<particles::Vec<2>>& points,
-                                                 const std::vector<double>& limit, const std::vector<double>& boundary) {
+                                                 const std::vector<double>& limit, const std::vector<double>& boundary,
+                                                 bool shaft) {
   auto all = geometry::cloud_triangles(points, limit);
-  std::erase_if(all, [&](const geometry::Triangle& t) {
-    return boundary[t[0]] >= 0 && boundary[t[1]] >= 0 && boundary[t[2]] >= 0;
-  });
+  if (shaft)
+    std::erase_if(all, [&](const geometry::Triangle& t) {
+      return boundary[t[0]] >= 0 && boundary[t[1]] >= 0 && boundary[t[2]] >= 0;
+    });
   // Smallest corner first (the orientation kept), triangles in the order of
   // their corners: neighbouring numbers compress to a fraction of the size.
   for (auto& t : all) std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
@@ -101,17 +104,22 @@ std::vector<particles::Vec<2>> plane_points(const io::PointCloudFrame& frame) {
 
 }  // namespace
 
-SnapshotFrames::SnapshotFrames(const particles::ParticleSet<2>& P, io::Labels labels)
-    : labels_(std::move(labels)) {
+SnapshotFrames::SnapshotFrames(const particles::ParticleSet<2>& P, io::Labels labels,
+                               std::optional<std::array<double, 2>> plate)
+    : labels_(std::move(labels)), shaft_(!plate) {
+  auto on_plate = [&](const particles::Vec<2>& x) {
+    const double tol = 1e-9 * P.spacing;
+    return !plate || (x[0] >= -tol && x[0] <= (*plate)[0] + tol && x[1] >= -tol && x[1] <= (*plate)[1] + tol);
+  };
   for (std::size_t i = 0; i < P.size(); ++i)
-    if (P.is_free(i) || !P.reflection[i].allFinite()) {
+    if (P.is_free(i) || (!P.reflection[i].allFinite() && on_plate(P.position[i]))) {
       shown_.push_back(i);
       limit_.push_back(3.0 * P.spacing_of(i));
     }
   std::vector<particles::Vec<2>> points;
   std::vector<double> boundary;
   for (std::size_t i : shown_) points.push_back(P.position[i]), boundary.push_back(P.boundary[i]);
-  wedge_triangles_ = ground_triangles(points, limit_, boundary);
+  wedge_triangles_ = ground_triangles(points, limit_, boundary, shaft_);
 }
 
 io::PointCloudFrame SnapshotFrames::wedge(const io::PointCloudFrame& all) const {
@@ -128,7 +136,7 @@ io::PointCloudFrame SnapshotFrames::ring(const io::PointCloudFrame& wedge,
     std::vector<double> limit;
     limit.reserve(ring.points.size());
     while (limit.size() < ring.points.size()) limit.insert(limit.end(), limit_.begin(), limit_.end());
-    ring_triangles_ = ground_triangles(plane_points(ring), limit, field(ring, "boundary"));
+    ring_triangles_ = ground_triangles(plane_points(ring), limit, field(ring, "boundary"), shaft_);
   }
   ring.triangles = ring_triangles_;
   return ring;

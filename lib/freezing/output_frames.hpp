@@ -3,6 +3,8 @@
 // whole ring unfolded from its symmetry wedge for ParaView).
 #pragma once
 
+#include <array>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -33,18 +35,23 @@ io::PointCloudFrame full_ring(const io::PointCloudFrame& wedge, const std::vecto
 
 // What a user sees of the particles in the snapshot files:
 //  - the free particles and the fixed ones that hold a boundary's own
-//    temperature (on a pipe wall, a cooled face, a point-model pipe), not
-//    the layers beyond a wall that hold its antisymmetric extension (colder
-//    than the wall itself, inside the pipe discs);
+//    temperature on the domain (on a pipe wall, a cooled face, a point-model
+//    pipe), not the layers beyond a wall that hold its antisymmetric
+//    extension (colder than the wall itself, inside the pipe discs), nor
+//    the fixed layers outside a plate;
 //  - the triangles between them (the cloud's Delaunay triangles, at most
-//    three local spacings long, without those whose three corners all hold
-//    a boundary temperature: across a pipe disc), so ParaView contours the
-//    field with no preparation. Built once: the particles do not move.
+//    three local spacings long; in a shaft section, not those whose three
+//    corners all hold a boundary temperature: across a pipe disc), so
+//    ParaView contours the field with no preparation. Built once: the
+//    particles do not move.
 // The whole ring gets the same for all copies of the wedge.
 class SnapshotFrames {
  public:
-  // labels: the field data of every file (project, time unit, version).
-  SnapshotFrames(const particles::ParticleSet<2>& particles, io::Labels labels);
+  // labels: the field data of every file (project, time unit, version);
+  // plate: the rectangle's width and height (m), or nullopt for a shaft
+  // section.
+  SnapshotFrames(const particles::ParticleSet<2>& particles, io::Labels labels,
+                 std::optional<std::array<double, 2>> plate);
   // The shown particles of a frame of every particle (frame_of plus what
   // the run added to it), with their triangles.
   io::PointCloudFrame wedge(const io::PointCloudFrame& all) const;
@@ -56,6 +63,7 @@ class SnapshotFrames {
  private:
   std::vector<std::size_t> shown_;
   std::vector<double> limit_;  // per shown particle: three local spacings
+  bool shaft_ = false;
   io::Labels labels_;
   std::vector<geometry::Triangle> wedge_triangles_, ring_triangles_;
 };
