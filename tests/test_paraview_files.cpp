@@ -34,6 +34,7 @@
 #include <vtkPolyData.h>
 #include <vtkStringArray.h>
 #include <vtkUnstructuredGrid.h>
+#include <vtkXMLPolyDataReader.h>
 #include <vtkXMLUnstructuredGridReader.h>
 
 #include "run/run_project.hpp"
@@ -158,6 +159,14 @@ TEST_CASE("ParaView's Contour filter draws the design isotherm on the main job's
     CHECK(triangles > grid->GetNumberOfPoints());  // about two per point
     CHECK(inside_pipe == 0);
   }
+
+  // The front curves name their project too.
+  vtkNew<vtkXMLPolyDataReader> curves;
+  curves->SetFileName((out / "interface_ring_0060.vtp").c_str());
+  curves->Update();
+  auto* project = vtkStringArray::SafeDownCast(curves->GetOutput()->GetFieldData()->GetAbstractArray("project"));
+  REQUIRE(project != nullptr);
+  CHECK(project->GetValue(0) == summary["project"].get<std::string>());
 
   // The ParaView script: the collections it opens exist, its temperature
   // range is what the files hold, and Python parses it.

@@ -96,7 +96,7 @@ void PlainResults::snapshot(double t, const thermal::ThermalModel& model, const 
     return x[0] >= 0.0 && x[0] <= rect.width && x[1] >= 0.0 && x[1] <= rect.height;
   });
   const std::string file = "interface" + stem.substr(5) + ".vtp";
-  io::write_vtp(out / file, kept);
+  io::write_vtp(out / file, kept, io::file_labels(project_));
   interface_.push_back({{"t", t / unit_}, {"file", file}});
 }
 

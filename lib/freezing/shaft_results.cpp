@@ -155,12 +155,12 @@ void ShaftResults::snapshot(double t, const thermal::ThermalModel& model, const 
   const auto kept = post::clip_polylines(curve_mesh_->isolines(values(curve_source_), 0.5),
                                          [&](const particles::Vec<2>& x) { return geometry::inside_wedge(wedge, x); });
   const std::string file = "interface" + stem.substr(5) + ".vtp";
-  io::write_vtp(out / file, kept);
+  io::write_vtp(out / file, kept, io::file_labels(project_));
   json entry = {{"day", t / day}, {"file", file}};
   if (!ring_points_.empty()) {
     const std::string ring_file = "interface_ring" + stem.substr(5) + ".vtp";
     if (!ring_mesh_) ring_mesh_ = mesh_of(ring_points_, ring_source_);
-    io::write_vtp(out / ring_file, ring_mesh_->isolines(values(ring_source_), 0.5));
+    io::write_vtp(out / ring_file, ring_mesh_->isolines(values(ring_source_), 0.5), io::file_labels(project_));
     entry["full_ring_file"] = ring_file;
   }
   interface_.push_back(entry);

@@ -3,18 +3,20 @@
 #include <stdexcept>
 
 #include <vtkCellArray.h>
+#include <vtkFieldData.h>
 #include <vtkNew.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkXMLPolyDataWriter.h>
 
 #include "io/atomic_file.hpp"
+#include "io/labels.hpp"
 
 namespace frostwall::io {
 
 namespace fs = std::filesystem;
 
-void write_vtp(const fs::path& file, const std::vector<geometry::Polyline>& lines) {
+void write_vtp(const fs::path& file, const std::vector<geometry::Polyline>& lines, const Labels& labels) {
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
   vtkNew<vtkCellArray> cells;
@@ -35,6 +37,7 @@ void write_vtp(const fs::path& file, const std::vector<geometry::Polyline>& line
   data->SetLines(cells);
 
   write_atomically(file, [&](const fs::path& tmp) {
+    add_labels(*data->GetFieldData(), labels);
     vtkNew<vtkXMLPolyDataWriter> writer;
     writer->SetFileName(tmp.string().c_str());
     writer->SetInputData(data);

@@ -6,12 +6,15 @@
 #include <vector>
 
 #include "geometry/polyline.hpp"
+#include "io/labels.hpp"
 
 namespace frostwall::io {
 
 // Writes an XML PolyData (.vtp), binary appended: the points of every line
 // (z = 0) and one VTK_POLY_LINE per line; a closed line repeats its first
 // point id at the end so ParaView draws it closed. No lines: a valid empty file.
-void write_vtp(const std::filesystem::path& file, const std::vector<geometry::Polyline>& lines);
+// labels: the file's field data (io/labels.hpp).
+void write_vtp(const std::filesystem::path& file, const std::vector<geometry::Polyline>& lines,
+               const Labels& labels = {});
 
 }  // namespace frostwall::io

@@ -141,7 +141,7 @@ void FrostResults::snapshot(double t, const std::filesystem::path& out, const st
                      {"crack_length_per_area", c.per_area},
                      {"broken_bond_energy", d.broken_bond_energy}});
   const std::string file = "cracks" + stem.substr(5) + ".vtp";
-  io::write_vtp(out / file, lines);
+  io::write_vtp(out / file, lines, io::file_labels(project_));
   cracks_.push_back({{"t", t / unit_}, {"file", file}});
 }
 
