@@ -9,6 +9,13 @@
 //    critical gradient;
 //  - check 5: the fluid's mass balance in a run, and one rank against two.
 #include <catch2/catch.hpp>
+#include <vtkDataArray.h>
+#include <vtkFieldData.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkUnstructuredGrid.h>
+#include <vtkVariant.h>
+#include <vtkXMLUnstructuredGridReader.h>
 #include <cmath>
 #include <fmt/core.h>
 #include <fstream>
@@ -300,6 +307,19 @@ TEST_CASE("CFD-DEM: grains that fall into the cavity leave the soil (taken away)
   const std::string text((std::istreambuf_iterator<char>(vtu)), {});
   CHECK(text.find("Name=\"lost\"") != std::string::npos);
   CHECK(s["soil"]["cavity"]["mode"] == "drain");
+  // Every grain carries its radius (ParaView scales spheres by it): half
+  // its diameter; the file names its project and its time unit (s).
+  vtkNew<vtkXMLUnstructuredGridReader> reader;
+  reader->SetFileName((dir.path / "out" / "grains_0002.vtu").c_str());
+  reader->Update();
+  auto* grid = reader->GetOutput();
+  vtkDataArray *radius = grid->GetPointData()->GetArray("radius"), *diameter = grid->GetPointData()->GetArray("diameter");
+  REQUIRE(radius != nullptr);
+  REQUIRE(grid->GetNumberOfPoints() > 0);
+  for (vtkIdType i = 0; i < grid->GetNumberOfPoints(); ++i) CHECK(radius->GetTuple1(i) == 0.5 * diameter->GetTuple1(i));
+  CHECK(grid->GetFieldData()->GetAbstractArray("project") != nullptr);
+  CHECK(grid->GetFieldData()->GetAbstractArray("time_unit")->GetVariantValue(0).ToString() == "s");
+  CHECK(fs::exists(dir.path / "out" / "open_in_paraview.py"));
 }
 
 TEST_CASE("CFD-DEM: a kept cavity holds the grains that fall in, and every grain is counted", "[cfd_dem]") {

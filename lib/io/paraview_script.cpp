@@ -21,7 +21,7 @@ view = GetActiveViewOrCreate('RenderView')
 
 def line(source, colour, width):
     display = Show(source, view)
-    ColorBy(display, None)
+    display.ColorArrayName = ['POINTS', '']  # a solid colour (also for an empty contour)
     display.AmbientColor = colour
     display.DiffuseColor = colour
     display.LineWidth = width
@@ -34,10 +34,14 @@ def temperature(reader, visible):
     ColorBy(display, ('POINTS', 'temperature'))
     lut = GetColorTransferFunction('temperature')
     lut.ApplyPreset('Cool to Warm', True)
-    half = max(FREEZING_POINT - COLDEST, WARMEST - FREEZING_POINT, 1e-3)
-    lut.RescaleTransferFunction(FREEZING_POINT - half, FREEZING_POINT + half)
+    # White at the freezing point when the temperatures cross it; else at
+    # their middle (a solid that does not freeze).
+    centre = FREEZING_POINT if COLDEST <= FREEZING_POINT <= WARMEST else 0.5 * (COLDEST + WARMEST)
+    half = max(centre - COLDEST, WARMEST - centre, 1e-3)
+    lut.RescaleTransferFunction(centre - half, centre + half)
     lut.AutomaticRescaleRangeMode = 'Never'
-    display.SetScalarBarVisibility(view, visible)
+    if visible:
+        display.SetScalarBarVisibility(view, True)
     shown = [display]
     front = Contour(registrationName='frozen front', Input=reader)
     front.ContourBy = ['POINTS', 'liquid_fraction']
@@ -67,7 +71,8 @@ def grains(reader, visible):
     display.GaussianRadius = 1.0
     ColorBy(display, ('POINTS', 'displacement', 'Magnitude'))
     GetColorTransferFunction('displacement').ApplyPreset('Viridis (matplotlib)', True)
-    display.SetScalarBarVisibility(view, visible)
+    if visible:
+        display.SetScalarBarVisibility(view, True)
     return [display]
 
 
@@ -94,7 +99,13 @@ if not opened:
     print('open_in_paraview.py: none of %s in %s; set HERE to the run\'s folder' % ([s[0] for s in SERIES], HERE))
 GetAnimationScene().UpdateAnimationUsingDataTimeSteps()
 GetAnimationScene().AnimationTime = GetTimeKeeper().TimestepValues[-1] if GetTimeKeeper().TimestepValues else 0.0
-view.InteractionMode = '2D' if not any(kind in ('grains', 'fluid') for _, kind, _ in SERIES) else '3D'
+if any(kind in ('grains', 'fluid') for _, kind, _ in SERIES):
+    # Grains settle along -z: look at the box from the side.
+    view.CameraPosition = [0.0, -1.0, 0.0]
+    view.CameraFocalPoint = [0.0, 0.0, 0.0]
+    view.CameraViewUp = [0.0, 0.0, 1.0]
+else:
+    view.InteractionMode = '2D'
 view.ResetCamera()
 Render()
 if '--png' in getattr(sys, 'argv', []):
