@@ -158,7 +158,8 @@ TEST_CASE("The report of a shaft run fills every placeholder, loads nothing and 
   const json view = report::report_view(out);
   // (The wall check and brine sections' names: tests/test_layers.cpp.)
   std::string thermal(report::templates::report_html);
-  for (const char* section : {"has_frost", "has_cfd_dem", "has_groundwater", "has_wall_check", "has_brine"})
+  // (A plain geometry's cards: the PD plate's and porous plate's tests.)
+  for (const char* section : {"has_frost", "has_cfd_dem", "has_groundwater", "has_wall_check", "has_brine", "has_cards"})
     thermal = split_section(thermal, section).second;
   for (const auto& name : report::template_names(thermal)) {
     INFO(name);
@@ -216,8 +217,20 @@ TEST_CASE("A plain-geometry run without project.json still gets a report", "[sha
   CHECK(test::html_balance_problem(html) == "");
   CHECK(test::external_references(html).empty());
   CHECK(html.find("project file was not recorded") != std::string::npos);
-  CHECK(html.find("Frozen front") != std::string::npos);
-  CHECK(test::count(html, "<img ") == 0);
+  CHECK(html.find("SPH heat conduction") != std::string::npos);
+  // The front formed (a -10 °C face in sand): its card, at the summary's last position.
+  const json summary = json::parse(read(dir.path / "out" / "summary.json"));
+  REQUIRE(!summary["front"].empty());
+  REQUIRE(summary["front"].back()[1].get<double>() > 0.0);
+  CHECK(html.find(">Frozen front, ") != std::string::npos);
+  CHECK(html.find(report::tick_label(summary["front"].back()[1].get<double>(), 4) + " m<") != std::string::npos);
+  // A temperature map per snapshot, no pipes or design targets.
+  const auto snapshots = report::read_pvd(dir.path / "out" / "field.pvd");
+  REQUIRE(!snapshots.empty());
+  CHECK(test::count(html, "alt=\"temperature map") == snapshots.size());
+  CHECK(test::count(html, "<img ") == snapshots.size());
+  CHECK(html.find("Pipe temperature") == std::string::npos);
+  CHECK(html.find("Design targets") == std::string::npos);
 }
 
 TEST_CASE("frostwall report on a folder without results is bad input", "[shared][report][cli]") {
@@ -314,7 +327,7 @@ TEST_CASE("Colours turn from blue to red at the freezing point", "[shared][repor
 // A PD thermo-mechanical run's report gets a mechanics section: one map of
 // the displacement and one of the damage per snapshot (inline PNG), a
 // colour bar for each, and the sensors' displacement and damage charts.
-TEST_CASE("The report of a PD plate run has displacement and damage maps", "[shared][report][pd]") {
+TEST_CASE("The report of a PD plate run has temperature and displacement maps, no damage maps", "[shared][report][pd]") {
   test::TempDir dir("frostwall-report-pd");
   std::ifstream in(std::string(FROSTWALL_SOURCE_DIR) + "/projects/plate_cooling.json");
   json project = json::parse(in);
@@ -326,18 +339,43 @@ TEST_CASE("The report of a PD plate run has displacement and damage maps", "[sha
   run::run_project(project::parse_project(project.dump()), options);
   report::write_report(dir.path / "out");
   const json view = report::report_view(dir.path / "out");
+  const json summary = json::parse(read(dir.path / "out" / "summary.json"));
+  REQUIRE(summary["run"]["mechanics"]["critical_stretch"].is_null());  // no fracture energy: bonds cannot break
   CHECK(view["has_mechanics"] == true);
-  for (const char* name : {"mechanics_note", "displacement_bar_svg", "damage_bar_svg"}) CHECK(!view[name].get<std::string>().empty());
-  CHECK(view["displacement_maps"].size() == 2);
-  CHECK(view["damage_maps"].size() == 2);
+  for (const auto& name : report::template_names(split_section(report::templates::report_html, "has_mechanics").first)) {
+    INFO(name);
+    CHECK(has_key(view, name));
+  }
+  // Temperature beside displacement at each snapshot; no damage maps for unbreakable bonds.
+  REQUIRE(view["mechanics_snapshots"].size() == 2);
+  for (const auto& row : view["mechanics_snapshots"]) CHECK(row["maps"].size() == 2);
+  CHECK(view["has_damage_maps"] == false);
+  CHECK(view["has_maps"] == false);  // the temperature is in the mechanics section
   const std::string html = read(dir.path / "out" / "report.html");
   CHECK(test::html_balance_problem(html) == "");
   CHECK(test::external_references(html).empty());
   CHECK(html.find("<h2>Mechanics</h2>") != std::string::npos);
-  CHECK(test::count(html, "<img src=\"data:image/png;base64,") == 4);  // 2 snapshots x (displacement, damage)
+  CHECK(test::count(html, "<img src=\"data:image/png;base64,") == 4);
+  CHECK(test::count(html, "alt=\"temperature map") == 2);
+  CHECK(test::count(html, "alt=\"displacement map") == 2);
+  CHECK(test::count(html, "alt=\"damage map") == 0);
   CHECK(html.find("|displacement| (µm)") != std::string::npos);
   CHECK(html.find("Sensors: displacement along x") != std::string::npos);
-  CHECK(html.find("Sensors: damage") != std::string::npos);
+  // The title names the method; the headline is the solid's; no shaft parts.
+  CHECK(html.find("bond-based peridynamic (PD) mechanics") != std::string::npos);
+  CHECK(html.find("Artificial ground freezing") == std::string::npos);
+  const double largest = summary["run"]["mechanics"]["largest_displacement"];
+  CHECK(html.find(fmt::format(">{:.3g} µm<", 1e6 * largest)) != std::string::npos);
+  CHECK(html.find(">Largest displacement<") != std::string::npos);
+  CHECK(html.find(">Sensor A, 100 s<") != std::string::npos);
+  CHECK(html.find("the bonds cannot break") != std::string::npos);
+  for (const char* absent : {"Frozen front", "Pipe temperature", "Design targets", "Wendland", "RKL2 super-time-stepping, step",
+                             "latent heat per particle", "smoothing length"}) {
+    INFO(absent);
+    CHECK(html.find(absent) == std::string::npos);
+  }
+  CHECK(html.find("horizon") != std::string::npos);
+  CHECK(html.find("bonds never break") != std::string::npos);
 }
 
 // A porous plate's report gets a frost damage section: per snapshot the
@@ -394,6 +432,11 @@ TEST_CASE("The report of a porous plate has a frost damage section", "[shared][r
   CHECK(test::html_balance_problem(html) == "");
   CHECK(test::external_references(html).empty());
   CHECK(html.find("<h2>Frost damage</h2>") != std::string::npos);
+  CHECK(html.find("Frost damage of a porous solid") != std::string::npos);
+  CHECK(html.find(">Pores frozen<") != std::string::npos);
+  CHECK(html.find(">1 of 3<") != std::string::npos);  // one pore's freezing_end
+  CHECK(html.find(">Saturation<") != std::string::npos);
+  CHECK(test::count(html, "alt=\"temperature map") == snapshots);
   CHECK(test::count(html, "<img src=\"data:image/png;base64,") == 3 * snapshots);
   CHECK(test::count(html, "alt=\"material map") == snapshots);
   CHECK(html.find("href=\"damage.csv\"") != std::string::npos);
