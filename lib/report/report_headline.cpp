@@ -83,8 +83,10 @@ void bond_cards(const RunRecord& run, const std::string& unit, json& cards) {
   const auto& damage = run.summary.value("damage", json::array());
   if (!damage.empty() && damage.back().contains("crack_length"))
     cards.push_back(card("Crack length, " + at(value_of(damage.back().value("time", json())), unit),
-                         length(value_of(damage.back()["crack_length"])),
-                         "both faces of the cracks (damage above 0.4)"));
+                         length(value_of(damage.back()["crack_length"])), "both faces of the cracks (damage above 0.4)"));
+  else if (m.contains("crack_length"))
+    cards.push_back(card("Crack length", length(value_of(m["crack_length"])),
+                         "at the end of the run; both faces of the cracks (damage above 0.4)"));
 }
 
 void pore_cards(const RunRecord& run, const std::string& unit, json& cards) {
