@@ -118,10 +118,11 @@ void add_run_facts(const RunRecord& run, json& view) {
   auto text = [](const json& v) { return v.is_string() ? v.get<std::string>() : v.dump(); };
   fact("particles", "free particles", integer);
   fact("boundary_particles", "fixed-temperature particles", integer);
-  fact("pairs", "particle pairs", integer);
+  const bool pd = r.value("method", std::string()) == "pd";
+  fact("pairs", pd ? "thermal bonds (pairs)" : "particle pairs", integer);
   fact("steps", "time steps", integer);
   fact("spacing", "particle spacing", [](const json& v) { return (v.is_number() ? metres(v.get<double>(), 4) : "–") + " m"; });
-  if (r.value("method", std::string()) != "pd") {  // PD bonds have a horizon, no kernel
+  if (!pd) {  // PD bonds have a horizon, no kernel
     fact("smoothing_length", "smoothing length h", [](const json& v) { return number(v, 4) + " m"; });
     fact("kernel", "kernel", text);
   }
@@ -149,7 +150,7 @@ void add_run_facts(const RunRecord& run, json& view) {
       {"monitoring.csv", "sensor temperatures over time"},
       {"brine.csv", "brine pipes: pipe wall temperature and heat extracted per metre over time"},
       {"damage.csv", "broken bonds, largest damage and damaged area at every mechanical equilibrium"},
-      {"field.pvd", "ParaView: the wedge's particles at every snapshot"},
+      {"field.pvd", run.shaft() ? "ParaView: the wedge's particles at every snapshot" : "ParaView: the particles at every snapshot"},
       {"ring.pvd", "ParaView: the whole ring at every snapshot"},
   };
   json files = json::array();
