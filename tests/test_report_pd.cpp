@@ -80,3 +80,34 @@ TEST_CASE("The report of a PD plate that cracks has damage maps and the crack ca
   }
   CHECK(html.find("breaks at stretch") != std::string::npos);
 }
+
+// A porous plate without a solid (no mechanics block): the pores freeze but
+// nothing can crack. Its temperature maps stand in the maps section (the
+// frost section has no solid to draw), the cards say how the pores froze
+// and nothing of cracks or bonds.
+TEST_CASE("The report of a porous plate without a solid has temperature maps and no crack cards", "[shared][report][frost]") {
+  test::TempDir dir("frostwall-report-frost-heat");
+  const fs::path out = dir.path / "out";
+  std::ifstream in(std::string(FROSTWALL_SOURCE_DIR) + "/projects/mortar_frost.json");
+  json project = json::parse(in);
+  project.erase("mechanics");
+  project["numerics"]["spacing"] = 8e-6;
+  project["time"] = {{"end", 0.008}, {"unit", "s"}, {"snapshots", {0.004, 0.008}}};
+  project["output"]["directory"] = out.string();
+  run::RunOptions options;
+  options.project_text = project.dump();
+  run::run_project(project::parse_project(options.project_text), options);
+  const json view = report::report_view(out);
+  CHECK(view["has_frost"] == true);
+  CHECK(view["has_mechanics"] == false);
+  CHECK(view["has_maps"] == true);
+  CHECK(view["maps"].size() == report::read_pvd(out / "field.pvd").size());
+  const std::string html = report::render_report(out);
+  CHECK(test::html_balance_problem(html) == "");
+  CHECK(test::count(html, "alt=\"temperature map") == 2);
+  CHECK(html.find(">Pores frozen<") != std::string::npos);
+  for (const char* absent : {">Pores cracked<", ">Broken bonds<", ">First crack<", "<h2>Mechanics</h2>"}) {
+    INFO(absent);
+    CHECK(html.find(absent) == std::string::npos);
+  }
+}

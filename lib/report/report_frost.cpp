@@ -112,7 +112,8 @@ void add_frost_maps(const RunRecord& run, const std::string& unit, json& view) {
     snapshots.emplace_back(e.time, std::move(s));
   }
   if (snapshots.empty()) {
-    view["frost_maps_note"] = "No snapshots with the pores' material in this directory (output.vtk off?), so no maps.";
+    view["frost_maps_note"] = run.mechanics() ? "No snapshots with the pores' material in this directory (output.vtk off?), so no maps."
+                                              : "No solid was modelled (no mechanics block): the temperature maps are above; there is no damage.";
     return;
   }
   const json facts = run.summary.value("run", json::object());

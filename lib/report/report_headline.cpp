@@ -103,7 +103,7 @@ void pore_cards(const RunRecord& run, const std::string& unit, json& cards) {
   cards.push_back(std::isfinite(all) ? card("All pores frozen by", at(all, unit), fmt::format("{} water-filled pores", pores.size()))
                                      : card("Pores frozen", fmt::format("{} of {}", frozen, pores.size()),
                                             "not all frozen within the run"));
-  if (told > 0)
+  if (told > 0 && run.mechanics())  // no solid, nothing to crack
     cards.push_back(card("Pores cracked", fmt::format("{} of {}", cracked, pores.size()),
                          "a broken bond within a horizon outside the rim"));
   if (!pores.empty())

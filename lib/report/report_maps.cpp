@@ -40,7 +40,12 @@ void add_maps(const RunRecord& run, json& view) {
   if (!run.shaft() || !run.summary.contains("wedge")) {
     // A solid's temperature is drawn beside its displacement and damage.
     view["show_maps_note"] = false;
-    if (!run.mechanics() && !run.frost()) add_plain_maps(run, view);
+    if (run.mechanics()) return;
+    // A porous plate's frost section draws the temperature when the files hold its solid.
+    if (run.frost())
+      if (const auto files = read_pvd(run.dir / "field.pvd"); !files.empty() && !read_solid(run.dir / files.front().file).damage.empty())
+        return;
+    add_plain_maps(run, view);
     return;
   }
   const auto snapshots = read_pvd(run.dir / "field.pvd");
