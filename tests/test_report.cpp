@@ -324,60 +324,6 @@ TEST_CASE("Colours turn from blue to red at the freezing point", "[shared][repor
   CHECK(test::html_balance_problem(bar) == "");
 }
 
-// A PD thermo-mechanical run's report gets a mechanics section: one map of
-// the displacement and one of the damage per snapshot (inline PNG), a
-// colour bar for each, and the sensors' displacement and damage charts.
-TEST_CASE("The report of a PD plate run has temperature and displacement maps, no damage maps", "[shared][report][pd]") {
-  test::TempDir dir("frostwall-report-pd");
-  std::ifstream in(std::string(FROSTWALL_SOURCE_DIR) + "/projects/plate_cooling.json");
-  json project = json::parse(in);
-  project["numerics"]["spacing"] = 0.0005;
-  project["time"] = {{"end", 100}, {"unit", "s"}, {"snapshots", {50, 100}}};
-  project["output"]["directory"] = (dir.path / "out").string();
-  run::RunOptions options;
-  options.project_text = project.dump();
-  run::run_project(project::parse_project(project.dump()), options);
-  report::write_report(dir.path / "out");
-  const json view = report::report_view(dir.path / "out");
-  const json summary = json::parse(read(dir.path / "out" / "summary.json"));
-  REQUIRE(summary["run"]["mechanics"]["critical_stretch"].is_null());  // no fracture energy: bonds cannot break
-  CHECK(view["has_mechanics"] == true);
-  for (const auto& name : report::template_names(split_section(report::templates::report_html, "has_mechanics").first)) {
-    INFO(name);
-    CHECK(has_key(view, name));
-  }
-  // Temperature beside displacement at each snapshot; no damage maps for unbreakable bonds.
-  REQUIRE(view["mechanics_snapshots"].size() == 2);
-  for (const auto& row : view["mechanics_snapshots"]) CHECK(row["maps"].size() == 2);
-  CHECK(view["has_damage_maps"] == false);
-  CHECK(view["has_maps"] == false);  // the temperature is in the mechanics section
-  const std::string html = read(dir.path / "out" / "report.html");
-  CHECK(test::html_balance_problem(html) == "");
-  CHECK(test::external_references(html).empty());
-  CHECK(html.find("<h2>Mechanics</h2>") != std::string::npos);
-  CHECK(test::count(html, "<img src=\"data:image/png;base64,") == 4);
-  CHECK(test::count(html, "alt=\"temperature map") == 2);
-  CHECK(test::count(html, "alt=\"displacement map") == 2);
-  CHECK(test::count(html, "alt=\"damage map") == 0);
-  CHECK(html.find("|displacement| (µm)") != std::string::npos);
-  CHECK(html.find("Sensors: displacement along x") != std::string::npos);
-  // The title names the method; the headline is the solid's; no shaft parts.
-  CHECK(html.find("bond-based peridynamic (PD) mechanics") != std::string::npos);
-  CHECK(html.find("Artificial ground freezing") == std::string::npos);
-  const double largest = summary["run"]["mechanics"]["largest_displacement"];
-  CHECK(html.find(fmt::format(">{:.3g} µm<", 1e6 * largest)) != std::string::npos);
-  CHECK(html.find(">Largest displacement<") != std::string::npos);
-  CHECK(html.find(">Sensor A, 100 s<") != std::string::npos);
-  CHECK(html.find("the bonds cannot break") != std::string::npos);
-  for (const char* absent : {"Frozen front", "Pipe temperature", "Design targets", "Wendland", "RKL2 super-time-stepping, step",
-                             "latent heat per particle", "smoothing length"}) {
-    INFO(absent);
-    CHECK(html.find(absent) == std::string::npos);
-  }
-  CHECK(html.find("horizon") != std::string::npos);
-  CHECK(html.find("bonds never break") != std::string::npos);
-}
-
 // A porous plate's report gets a frost damage section: per snapshot the
 // temperature, material and damage maps side by side, one freezing bar per
 // pore (open when unfinished, a note when never started, a marker when all

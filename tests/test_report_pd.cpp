@@ -1,10 +1,12 @@
-// Story: a PD plate whose bonds can break. The shipped plate at 0.5 mm with
-// a small fracture energy (0.1 J/m2) cracks as it cools; its report shows
-// the damage maps beside the temperature and displacement, and headline
-// cards of the broken bonds, the first crack and the crack length. The
-// crack length in summary.json (run.mechanics.crack_length) is the length
-// of the damage-0.4 lines of the last snapshot's damage field, measured
-// here again from the .vtu file.
+// Story: the report of a PD plate shows the plate's physics. The shipped
+// plate, whose bonds cannot break, gets temperature and displacement maps
+// and no damage maps. With a small fracture energy (0.1 J/m2) the plate
+// cracks as it cools: its report shows the damage maps beside the
+// temperature and displacement, and headline cards of the broken bonds,
+// the first crack and the crack length. The crack length in summary.json
+// (run.mechanics.crack_length) is the length of the damage-0.4 lines of the
+// last snapshot's damage field, measured here again from the .vtu file. A
+// porous plate without a solid gets temperature maps and no crack cards.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <fmt/core.h>
@@ -13,15 +15,82 @@
 #include <sstream>
 
 #include "html_check.hpp"
+#include "report_view_check.hpp"
 #include "post/isoline.hpp"
+#include "report/mustache_view.hpp"
 #include "report/report.hpp"
 #include "report/run_files.hpp"
+#include "report/templates.hpp"
 #include "run/run_project.hpp"
 #include "temp_dir.hpp"
 
 using namespace frostwall;
 namespace fs = std::filesystem;
 using nlohmann::json;
+
+namespace {
+std::string text_of(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+}  // namespace
+
+// The shipped plate (no fracture energy) at 0.5 mm: a mechanics section
+// with the temperature beside the displacement per snapshot (inline PNG),
+// no damage maps, the sensors' displacement and damage charts; the title
+// and cards are the solid's, and nothing of a shaft appears.
+TEST_CASE("The report of a PD plate run has temperature and displacement maps, no damage maps", "[shared][report][pd]") {
+  test::TempDir dir("frostwall-report-pd");
+  std::ifstream in(std::string(FROSTWALL_SOURCE_DIR) + "/projects/plate_cooling.json");
+  json project = json::parse(in);
+  project["numerics"]["spacing"] = 0.0005;
+  project["time"] = {{"end", 100}, {"unit", "s"}, {"snapshots", {50, 100}}};
+  project["output"]["directory"] = (dir.path / "out").string();
+  run::RunOptions options;
+  options.project_text = project.dump();
+  run::run_project(project::parse_project(project.dump()), options);
+  report::write_report(dir.path / "out");
+  const json view = report::report_view(dir.path / "out");
+  const json summary = json::parse(text_of(dir.path / "out" / "summary.json"));
+  REQUIRE(summary["run"]["mechanics"]["critical_stretch"].is_null());  // no fracture energy: bonds cannot break
+  CHECK(view["has_mechanics"] == true);
+  for (const auto& name : report::template_names(test::split_section(report::templates::report_html, "has_mechanics").first)) {
+    INFO(name);
+    CHECK(test::has_key(view, name));
+  }
+  // Temperature beside displacement at each snapshot; no damage maps for unbreakable bonds.
+  REQUIRE(view["mechanics_snapshots"].size() == 2);
+  for (const auto& row : view["mechanics_snapshots"]) CHECK(row["maps"].size() == 2);
+  CHECK(view["has_damage_maps"] == false);
+  CHECK(view["has_maps"] == false);  // the temperature is in the mechanics section
+  const std::string html = text_of(dir.path / "out" / "report.html");
+  CHECK(test::html_balance_problem(html) == "");
+  CHECK(test::external_references(html).empty());
+  CHECK(html.find("<h2>Mechanics</h2>") != std::string::npos);
+  CHECK(test::count(html, "<img src=\"data:image/png;base64,") == 4);
+  CHECK(test::count(html, "alt=\"temperature map") == 2);
+  CHECK(test::count(html, "alt=\"displacement map") == 2);
+  CHECK(test::count(html, "alt=\"damage map") == 0);
+  CHECK(html.find("|displacement| (µm)") != std::string::npos);
+  CHECK(html.find("Sensors: displacement along x") != std::string::npos);
+  // The title names the method; the headline is the solid's; no shaft parts.
+  CHECK(html.find("bond-based peridynamic (PD) mechanics") != std::string::npos);
+  CHECK(html.find("Artificial ground freezing") == std::string::npos);
+  const double largest = summary["run"]["mechanics"]["largest_displacement"];
+  CHECK(html.find(fmt::format(">{:.3g} µm<", 1e6 * largest)) != std::string::npos);
+  CHECK(html.find(">Largest displacement<") != std::string::npos);
+  CHECK(html.find(">Sensor A, 100 s<") != std::string::npos);
+  CHECK(html.find("the bonds cannot break") != std::string::npos);
+  for (const char* absent : {"Frozen front", "Pipe temperature", "Design targets", "Wendland", "RKL2 super-time-stepping, step",
+                             "latent heat per particle", "smoothing length"}) {
+    INFO(absent);
+    CHECK(html.find(absent) == std::string::npos);
+  }
+  CHECK(html.find("horizon") != std::string::npos);
+  CHECK(html.find("bonds never break") != std::string::npos);
+}
 
 TEST_CASE("The report of a PD plate that cracks has damage maps and the crack cards", "[shared][report][pd]") {
   test::TempDir dir("frostwall-report-pd-crack");
@@ -37,8 +106,7 @@ TEST_CASE("The report of a PD plate that cracks has damage maps and the crack ca
   run::run_project(project::parse_project(options.project_text), options);
   report::write_report(out);
 
-  std::ifstream s(out / "summary.json");
-  const json summary = json::parse(s);
+  const json summary = json::parse(text_of(out / "summary.json"));
   const json& m = summary["run"]["mechanics"];
   REQUIRE(m["broken_bonds"].get<double>() > 0);
   REQUIRE(m["first_damage"].is_object());
@@ -58,10 +126,7 @@ TEST_CASE("The report of a PD plate that cracks has damage maps and the crack ca
   CHECK(length > 0.0);
   CHECK(m["crack_length"].get<double>() == Approx(length).epsilon(1e-6));
 
-  std::ifstream h(out / "report.html");
-  std::stringstream text;
-  text << h.rdbuf();
-  const std::string html = text.str();
+  const std::string html = text_of(out / "report.html");
   CHECK(test::html_balance_problem(html) == "");
   // Temperature, displacement and damage at each snapshot.
   CHECK(test::count(html, "alt=\"temperature map") == 2);
