@@ -17,9 +17,8 @@
 #include <vtkNew.h>
 #include <vtkPNGReader.h>
 
-#include "report/report.hpp"
-#include "run/run_project.hpp"
 #include "study/study_report.hpp"
+#include "shipped_run.hpp"
 #include "temp_dir.hpp"
 
 using namespace frostwall;
@@ -151,18 +150,6 @@ TEST_CASE("Headless Chromium renders report.html and study.html: right size, not
 
 namespace {
 
-// A run of a shipped project, patched small, with its report.
-void run_shipped(const std::string& name, const json& patch, const fs::path& out) {
-  std::ifstream in(fs::path(FROSTWALL_SOURCE_DIR) / "projects" / name);
-  json j = json::parse(in);
-  j.merge_patch(patch);
-  j["output"]["directory"] = out.string();
-  run::RunOptions options;
-  options.project_text = j.dump();
-  run::run_project(project::parse_project(options.project_text), options);
-  report::write_report(out);
-}
-
 // The page in the browser: not blank; the DOM names the method and shows
 // the cards, every image inline, the temperature maps, and no shaft parts.
 void check_plain_page(const fs::path& page, const std::string& png, const std::string& method,
@@ -197,7 +184,7 @@ TEST_CASE("Headless Chromium shows a PD plate's report: the method, its cards, t
   const fs::path out = artifacts / "plate";
   fs::remove_all(out);
   // plate_cooling at 0.5 mm (400 particles), 100 s, two snapshots.
-  run_shipped("plate_cooling.json",
+  test::run_shipped("plate_cooling.json",
               {{"numerics", {{"spacing", 0.0005}}}, {"time", {{"end", 100}, {"unit", "s"}, {"snapshots", {50, 100}}}}}, out);
   check_plain_page(out / "report.html", "plate.png", "bond-based peridynamic (PD) mechanics",
                    {"Largest displacement", "Sensor A, 100 s", "Broken bonds"}, 2);
@@ -209,7 +196,7 @@ TEST_CASE("Headless Chromium shows a frost run's report: the method, the pores' 
   const fs::path out = artifacts / "frost";
   fs::remove_all(out);
   // mortar_frost at 8 µm (1 369 particles), the first 12 ms (five pores start to freeze, bonds break), two snapshots.
-  run_shipped("mortar_frost.json", {{"numerics", {{"spacing", 8e-6}}}, {"time", {{"end", 0.012}, {"snapshots", {0.006, 0.012}}}}}, out);
+  test::run_shipped("mortar_frost.json", {{"numerics", {{"spacing", 8e-6}}}, {"time", {{"end", 0.012}, {"snapshots", {0.006, 0.012}}}}}, out);
   check_plain_page(out / "report.html", "frost.png", "Frost damage of a porous solid",
                    {"Pores frozen", "Pores cracked", "Saturation", "Largest displacement", "Broken bonds", "First crack"}, 2);
 }

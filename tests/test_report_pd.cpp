@@ -21,21 +21,13 @@
 #include "report/report.hpp"
 #include "report/run_files.hpp"
 #include "report/templates.hpp"
-#include "run/run_project.hpp"
+#include "shipped_run.hpp"
 #include "temp_dir.hpp"
+#include "text_file.hpp"
 
 using namespace frostwall;
 namespace fs = std::filesystem;
 using nlohmann::json;
-
-namespace {
-std::string text_of(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-}  // namespace
 
 // The shipped plate (no fracture energy) at 0.5 mm: a mechanics section
 // with the temperature beside the displacement per snapshot (inline PNG),
@@ -43,17 +35,11 @@ std::string text_of(const fs::path& file) {
 // and cards are the solid's, and nothing of a shaft appears.
 TEST_CASE("The report of a PD plate run has temperature and displacement maps, no damage maps", "[shared][report][pd]") {
   test::TempDir dir("frostwall-report-pd");
-  std::ifstream in(std::string(FROSTWALL_SOURCE_DIR) + "/projects/plate_cooling.json");
-  json project = json::parse(in);
-  project["numerics"]["spacing"] = 0.0005;
-  project["time"] = {{"end", 100}, {"unit", "s"}, {"snapshots", {50, 100}}};
-  project["output"]["directory"] = (dir.path / "out").string();
-  run::RunOptions options;
-  options.project_text = project.dump();
-  run::run_project(project::parse_project(project.dump()), options);
-  report::write_report(dir.path / "out");
+  test::run_shipped("plate_cooling.json",
+                    {{"numerics", {{"spacing", 0.0005}}}, {"time", {{"end", 100}, {"unit", "s"}, {"snapshots", {50, 100}}}}},
+                    dir.path / "out");
   const json view = report::report_view(dir.path / "out");
-  const json summary = json::parse(text_of(dir.path / "out" / "summary.json"));
+  const json summary = json::parse(test::read_text(dir.path / "out" / "summary.json"));
   REQUIRE(summary["run"]["mechanics"]["critical_stretch"].is_null());  // no fracture energy: bonds cannot break
   CHECK(view["has_mechanics"] == true);
   for (const auto& name : report::template_names(test::split_section(report::templates::report_html, "has_mechanics").first)) {
@@ -65,7 +51,7 @@ TEST_CASE("The report of a PD plate run has temperature and displacement maps, n
   for (const auto& row : view["mechanics_snapshots"]) CHECK(row["maps"].size() == 2);
   CHECK(view["has_damage_maps"] == false);
   CHECK(view["has_maps"] == false);  // the temperature is in the mechanics section
-  const std::string html = text_of(dir.path / "out" / "report.html");
+  const std::string html = test::read_text(dir.path / "out" / "report.html");
   CHECK(test::html_balance_problem(html) == "");
   CHECK(test::external_references(html).empty());
   CHECK(html.find("<h2>Mechanics</h2>") != std::string::npos);
@@ -95,18 +81,13 @@ TEST_CASE("The report of a PD plate run has temperature and displacement maps, n
 TEST_CASE("The report of a PD plate that cracks has damage maps and the crack cards", "[shared][report][pd]") {
   test::TempDir dir("frostwall-report-pd-crack");
   const fs::path out = dir.path / "out";
-  std::ifstream in(std::string(FROSTWALL_SOURCE_DIR) + "/projects/plate_cooling.json");
-  json project = json::parse(in);
-  project["numerics"]["spacing"] = 0.0005;
-  project["time"] = {{"end", 100}, {"unit", "s"}, {"snapshots", {50, 100}}};
-  project["mechanics"]["material"]["fracture_energy"] = 0.1;
-  project["output"]["directory"] = out.string();
-  run::RunOptions options;
-  options.project_text = project.dump();
-  run::run_project(project::parse_project(options.project_text), options);
-  report::write_report(out);
+  test::run_shipped("plate_cooling.json",
+                    {{"numerics", {{"spacing", 0.0005}}},
+                     {"time", {{"end", 100}, {"unit", "s"}, {"snapshots", {50, 100}}}},
+                     {"mechanics", {{"material", {{"fracture_energy", 0.1}}}}}},
+                    out);
 
-  const json summary = json::parse(text_of(out / "summary.json"));
+  const json summary = json::parse(test::read_text(out / "summary.json"));
   const json& m = summary["run"]["mechanics"];
   REQUIRE(m["broken_bonds"].get<double>() > 0);
   REQUIRE(m["first_damage"].is_object());
@@ -126,7 +107,7 @@ TEST_CASE("The report of a PD plate that cracks has damage maps and the crack ca
   CHECK(length > 0.0);
   CHECK(m["crack_length"].get<double>() == Approx(length).epsilon(1e-6));
 
-  const std::string html = text_of(out / "report.html");
+  const std::string html = test::read_text(out / "report.html");
   CHECK(test::html_balance_problem(html) == "");
   // Temperature, displacement and damage at each snapshot.
   CHECK(test::count(html, "alt=\"temperature map") == 2);
@@ -153,15 +134,11 @@ TEST_CASE("The report of a PD plate that cracks has damage maps and the crack ca
 TEST_CASE("The report of a porous plate without a solid has temperature maps and no crack cards", "[shared][report][frost]") {
   test::TempDir dir("frostwall-report-frost-heat");
   const fs::path out = dir.path / "out";
-  std::ifstream in(std::string(FROSTWALL_SOURCE_DIR) + "/projects/mortar_frost.json");
-  json project = json::parse(in);
-  project.erase("mechanics");
-  project["numerics"]["spacing"] = 8e-6;
-  project["time"] = {{"end", 0.008}, {"unit", "s"}, {"snapshots", {0.004, 0.008}}};
-  project["output"]["directory"] = out.string();
-  run::RunOptions options;
-  options.project_text = project.dump();
-  run::run_project(project::parse_project(options.project_text), options);
+  test::run_shipped("mortar_frost.json",
+                    {{"mechanics", nullptr},
+                     {"numerics", {{"spacing", 8e-6}}},
+                     {"time", {{"end", 0.008}, {"unit", "s"}, {"snapshots", {0.004, 0.008}}}}},
+                    out);
   const json view = report::report_view(out);
   CHECK(view["has_frost"] == true);
   CHECK(view["has_mechanics"] == false);
