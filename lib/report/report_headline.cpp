@@ -56,7 +56,7 @@ void sensor_displacement_cards(const RunRecord& run, const std::string& unit, js
     if (!series.is_array() || series.empty() || shown == 3) continue;
     const auto& last = series.back();
     const double ux = value_of(last[1]), uy = value_of(last[2]);
-    std::string note = fmt::format("|u| at the sensor: ux {}, uy {} µm", number(1e6 * ux, 3), number(1e6 * uy, 3));
+    std::string note = fmt::format("|u| of ux {}, uy {} µm", number(1e6 * ux, 3), number(1e6 * uy, 3));
     if (heat.contains(name) && heat[name].is_array() && !heat[name].empty())
       note += "; " + number(heat[name].back()[1], 2) + " °C";
     cards.push_back(card("Sensor " + name + ", " + at(value_of(last[0]), unit), micrometres(std::hypot(ux, uy)), note));
