@@ -1,12 +1,24 @@
 // Story: a plate's temperature map shows what ParaView shows of the VTK
-// cells, the field linear over the particles' triangles. A linear field is
+// cells, the field linear over the particles' triangles, read from the
+// snapshots' point data whatever cells they carry. A linear field is
 // reproduced exactly at every pixel (barycentric weights sum to one and
 // reproduce x and y), pixels beyond the cloud and inside a hole stay
 // transparent, and the pixels inside cover the cloud's area.
 #include <catch2/catch.hpp>
 #include <cmath>
 
+#include <vtkCellType.h>
+#include <vtkDoubleArray.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkUnstructuredGrid.h>
+#include <vtkXMLUnstructuredGridWriter.h>
+
+#include "geometry/cloud_mesh.hpp"
 #include "report/cloud_raster.hpp"
+#include "report/run_files.hpp"
+#include "temp_dir.hpp"
 
 using namespace frostwall;
 using Vec2 = particles::Vec<2>;
@@ -59,4 +71,55 @@ TEST_CASE("A cloud raster reproduces a linear field and leaves holes and the out
   std::size_t opaque = 0;
   for (std::size_t k = 3; k < image.pixels.size(); k += 4) opaque += image.pixels[k] == 255;
   CHECK(opaque == inside);
+}
+
+// The maps read the particles' point data whatever cells a .vtu carries
+// (vertices or the particles' triangles): a file of triangle cells gives
+// back every point with its fields, and the solid's free particles only.
+TEST_CASE("The report reads a .vtu's points and fields whatever its cells", "[shared][report][map]") {
+  const test::TempDir dir("frostwall-vtu-cells");
+  const std::vector<Vec2> points{{0.0, 0.0}, {1.0, 0.0}, {0.0, 1.0}, {1.0, 1.0}, {2.0, 2.0}};
+  const std::vector<double> boundary{-1, -1, -1, -1, 0};  // the last one held (a fixed particle)
+  vtkNew<vtkPoints> xyz;
+  for (const auto& x : points) xyz->InsertNextPoint(x[0], x[1], 0.0);
+  vtkNew<vtkUnstructuredGrid> grid;
+  grid->SetPoints(xyz);
+  for (const auto& t : geometry::cloud_triangles(points)) {
+    const vtkIdType ids[3] = {t[0], t[1], t[2]};
+    grid->InsertNextCell(VTK_TRIANGLE, 3, ids);
+  }
+  REQUIRE(grid->GetNumberOfCells() > 0);
+  auto field = [&](const char* name, int components, auto&& value) {
+    vtkNew<vtkDoubleArray> a;
+    a->SetName(name);
+    a->SetNumberOfComponents(components);
+    for (std::size_t i = 0; i < points.size(); ++i)
+      for (int c = 0; c < components; ++c) a->InsertNextValue(value(i, c));
+    grid->GetPointData()->AddArray(a);
+  };
+  field("temperature", 1, [](std::size_t i, int) { return 10.0 * i; });
+  field("volume", 1, [](std::size_t, int) { return 1.0; });
+  field("boundary", 1, [&](std::size_t i, int) { return boundary[i]; });
+  field("damage", 1, [](std::size_t i, int) { return 0.1 * i; });
+  field("displacement", 3, [](std::size_t i, int c) { return c == 0 ? 3.0 * i : (c == 1 ? 4.0 * i : 0.0); });
+  vtkNew<vtkXMLUnstructuredGridWriter> writer;
+  const auto file = dir.path / "field_0001.vtu";
+  writer->SetFileName(file.c_str());
+  writer->SetInputData(grid);
+  REQUIRE(writer->Write() == 1);
+
+  const auto f = report::read_field(file);
+  REQUIRE(f.position.size() == points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    CHECK((f.position[i] - points[i]).norm() == Approx(0.0).margin(1e-12));
+    CHECK(f.temperature[i] == Approx(10.0 * i));
+    CHECK(f.boundary[i] == int(boundary[i]));
+  }
+  const auto s = report::read_solid(file);
+  REQUIRE(s.particles.position.size() == 4);  // the free ones
+  for (std::size_t i = 0; i < 4; ++i) {
+    CHECK(s.particles.temperature[i] == Approx(5.0 * i));  // |displacement| of (3i, 4i)
+    CHECK(s.damage[i] == Approx(0.1 * i));
+    CHECK(s.temperature[i] == Approx(10.0 * i));
+  }
 }
