@@ -3,7 +3,9 @@
 // variant's report.html to PNG screenshots of the requested size that are
 // not blank, and its DOM dump shows every image inline (data URIs). The
 // pages and screenshots stay in build/test-artifacts/browser/ (CI
-// artifacts). No chromium is a failure, not a skip: CI installs it.
+// artifacts). No chromium is a failure, not a skip: CI installs it. A
+// small PD plate and a small frost run show their own report: the method
+// in the title, their physics' cards, temperature maps, no shaft parts.
 #include <catch2/catch.hpp>
 #include <array>
 #include <cmath>
@@ -16,6 +18,7 @@
 #include <vtkPNGReader.h>
 
 #include "study/study_report.hpp"
+#include "shipped_run.hpp"
 #include "temp_dir.hpp"
 
 using namespace frostwall;
@@ -143,4 +146,57 @@ TEST_CASE("Headless Chromium renders report.html and study.html: right size, not
     CHECK(sources.size() == page.images);
     for (const auto& src : sources) CHECK(src.rfind("data:image/png;base64,", 0) == 0);
   }
+}
+
+namespace {
+
+// The page in the browser: not blank; the DOM names the method and shows
+// the cards, every image inline, the temperature maps, and no shaft parts.
+void check_plain_page(const fs::path& page, const std::string& png, const std::string& method,
+                      const std::vector<std::string>& cards, std::size_t temperature_maps) {
+  const Screenshot shot = screenshot(page, artifacts / png, 1200, 3000);
+  CHECK(shot.width == 1200);
+  CHECK(shot.luminance_sd > 20.0);
+  CHECK(shot.non_white > 0.03);
+  const std::string dom = chromium("--dump-dom", page, png + ".dom");
+  std::ofstream(artifacts / (png + ".dom.html")) << dom;
+  REQUIRE(dom.find("</html>") != std::string::npos);
+  CHECK(dom.find(method) != std::string::npos);
+  for (const auto& c : cards) {
+    INFO("card " << c);
+    CHECK(dom.find("<div class=\"label\">" + c) != std::string::npos);
+  }
+  std::size_t maps = 0;
+  for (std::size_t pos = 0; (pos = dom.find("alt=\"temperature map", pos)) != std::string::npos; ++pos) ++maps;
+  CHECK(maps == temperature_maps);
+  for (const auto& src : image_sources(dom)) CHECK(src.rfind("data:image/png;base64,", 0) == 0);
+  for (const char* absent : {"Pipe temperature", "Design targets", "Design check", "Closure of the frozen wall", "Wendland"}) {
+    INFO(absent);
+    CHECK(dom.find(absent) == std::string::npos);
+  }
+}
+
+}  // namespace
+
+TEST_CASE("Headless Chromium shows a PD plate's report: the method, its cards, temperature maps, no shaft parts", "[shared][browser][pd]") {
+  REQUIRE(have_chromium());
+  fs::create_directories(artifacts);
+  const fs::path out = artifacts / "plate";
+  fs::remove_all(out);
+  // plate_cooling at 0.5 mm (400 particles), 100 s, two snapshots.
+  test::run_shipped("plate_cooling.json",
+              {{"numerics", {{"spacing", 0.0005}}}, {"time", {{"end", 100}, {"unit", "s"}, {"snapshots", {50, 100}}}}}, out);
+  check_plain_page(out / "report.html", "plate.png", "bond-based peridynamic (PD) mechanics",
+                   {"Largest displacement", "Sensor A, 100 s", "Broken bonds"}, 2);
+}
+
+TEST_CASE("Headless Chromium shows a frost run's report: the method, the pores' cards, temperature maps, no shaft parts", "[shared][browser][frost]") {
+  REQUIRE(have_chromium());
+  fs::create_directories(artifacts);
+  const fs::path out = artifacts / "frost";
+  fs::remove_all(out);
+  // mortar_frost at 8 µm (1 369 particles), the first 12 ms (five pores start to freeze, bonds break), two snapshots.
+  test::run_shipped("mortar_frost.json", {{"numerics", {{"spacing", 8e-6}}}, {"time", {{"end", 0.012}, {"snapshots", {0.006, 0.012}}}}}, out);
+  check_plain_page(out / "report.html", "frost.png", "Frost damage of a porous solid",
+                   {"Pores frozen", "Pores cracked", "Saturation", "Largest displacement", "Broken bonds", "First crack"}, 2);
 }

@@ -169,6 +169,16 @@ TEST_CASE("leak, scaled: the report shows the erosion section with a displacemen
   const std::string html((std::istreambuf_iterator<char>(in)), {});
   CHECK(html.find("<section id=\"erosion\"") != std::string::npos);
   CHECK(html.find("boils") != std::string::npos);  // 0.3 m/s is far above fluidisation: said, not hidden
+  // The title names CFD-DEM; the headline the loss, as summary.json has it.
+  CHECK(html.find("(CFD-DEM)") != std::string::npos);
+  std::ifstream s(dir.path / "out" / "summary.json");
+  const json summary = json::parse(s);
+  CHECK(html.find(fmt::format("<div class=\"label\">Fell into the cavity</div><div class=\"value\">{:.0f} grains<",
+                              summary["soil"]["lost_to_cavity"].get<double>())) != std::string::npos);
+  CHECK(html.find(fmt::format("<div class=\"label\">Washed out</div><div class=\"value\">{:.0f} grains<",
+                              summary["soil"]["washed_out"].get<double>())) != std::string::npos);
+  const bool crater = summary["soil"].contains("crater") && !summary["soil"]["crater"].empty();
+  CHECK((html.find(">Crater<") != std::string::npos) == crater);
   CHECK(html.find("Minimum fluidisation") == std::string::npos);  // a horizontal flow lifts no bed
   std::size_t maps = 0;
   for (std::size_t at = 0; (at = html.find("<figure><svg viewBox=", at)) != std::string::npos; ++at) ++maps;

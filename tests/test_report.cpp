@@ -158,7 +158,8 @@ TEST_CASE("The report of a shaft run fills every placeholder, loads nothing and 
   const json view = report::report_view(out);
   // (The wall check and brine sections' names: tests/test_layers.cpp.)
   std::string thermal(report::templates::report_html);
-  for (const char* section : {"has_frost", "has_cfd_dem", "has_groundwater", "has_wall_check", "has_brine"})
+  // (A plain geometry's cards: the PD plate's and porous plate's tests.)
+  for (const char* section : {"has_frost", "has_cfd_dem", "has_groundwater", "has_wall_check", "has_brine", "has_cards"})
     thermal = split_section(thermal, section).second;
   for (const auto& name : report::template_names(thermal)) {
     INFO(name);
@@ -216,8 +217,20 @@ TEST_CASE("A plain-geometry run without project.json still gets a report", "[sha
   CHECK(test::html_balance_problem(html) == "");
   CHECK(test::external_references(html).empty());
   CHECK(html.find("project file was not recorded") != std::string::npos);
-  CHECK(html.find("Frozen front") != std::string::npos);
-  CHECK(test::count(html, "<img ") == 0);
+  CHECK(html.find("SPH heat conduction") != std::string::npos);
+  // The front formed (a -10 °C face in sand): its card, at the summary's last position.
+  const json summary = json::parse(read(dir.path / "out" / "summary.json"));
+  REQUIRE(!summary["front"].empty());
+  REQUIRE(summary["front"].back()[1].get<double>() > 0.0);
+  CHECK(html.find(">Frozen front, ") != std::string::npos);
+  CHECK(html.find(report::tick_label(summary["front"].back()[1].get<double>(), 4) + " m<") != std::string::npos);
+  // A temperature map per snapshot, no pipes or design targets.
+  const auto snapshots = report::read_pvd(dir.path / "out" / "field.pvd");
+  REQUIRE(!snapshots.empty());
+  CHECK(test::count(html, "alt=\"temperature map") == snapshots.size());
+  CHECK(test::count(html, "<img ") == snapshots.size());
+  CHECK(html.find("Pipe temperature") == std::string::npos);
+  CHECK(html.find("Design targets") == std::string::npos);
 }
 
 TEST_CASE("frostwall report on a folder without results is bad input", "[shared][report][cli]") {
@@ -311,35 +324,6 @@ TEST_CASE("Colours turn from blue to red at the freezing point", "[shared][repor
   CHECK(test::html_balance_problem(bar) == "");
 }
 
-// A PD thermo-mechanical run's report gets a mechanics section: one map of
-// the displacement and one of the damage per snapshot (inline PNG), a
-// colour bar for each, and the sensors' displacement and damage charts.
-TEST_CASE("The report of a PD plate run has displacement and damage maps", "[shared][report][pd]") {
-  test::TempDir dir("frostwall-report-pd");
-  std::ifstream in(std::string(FROSTWALL_SOURCE_DIR) + "/projects/plate_cooling.json");
-  json project = json::parse(in);
-  project["numerics"]["spacing"] = 0.0005;
-  project["time"] = {{"end", 100}, {"unit", "s"}, {"snapshots", {50, 100}}};
-  project["output"]["directory"] = (dir.path / "out").string();
-  run::RunOptions options;
-  options.project_text = project.dump();
-  run::run_project(project::parse_project(project.dump()), options);
-  report::write_report(dir.path / "out");
-  const json view = report::report_view(dir.path / "out");
-  CHECK(view["has_mechanics"] == true);
-  for (const char* name : {"mechanics_note", "displacement_bar_svg", "damage_bar_svg"}) CHECK(!view[name].get<std::string>().empty());
-  CHECK(view["displacement_maps"].size() == 2);
-  CHECK(view["damage_maps"].size() == 2);
-  const std::string html = read(dir.path / "out" / "report.html");
-  CHECK(test::html_balance_problem(html) == "");
-  CHECK(test::external_references(html).empty());
-  CHECK(html.find("<h2>Mechanics</h2>") != std::string::npos);
-  CHECK(test::count(html, "<img src=\"data:image/png;base64,") == 4);  // 2 snapshots x (displacement, damage)
-  CHECK(html.find("|displacement| (µm)") != std::string::npos);
-  CHECK(html.find("Sensors: displacement along x") != std::string::npos);
-  CHECK(html.find("Sensors: damage") != std::string::npos);
-}
-
 // A porous plate's report gets a frost damage section: per snapshot the
 // temperature, material and damage maps side by side, one freezing bar per
 // pore (open when unfinished, a note when never started, a marker when all
@@ -394,6 +378,11 @@ TEST_CASE("The report of a porous plate has a frost damage section", "[shared][r
   CHECK(test::html_balance_problem(html) == "");
   CHECK(test::external_references(html).empty());
   CHECK(html.find("<h2>Frost damage</h2>") != std::string::npos);
+  CHECK(html.find("Frost damage of a porous solid") != std::string::npos);
+  CHECK(html.find(">Pores frozen<") != std::string::npos);
+  CHECK(html.find(">1 of 3<") != std::string::npos);  // one pore's freezing_end
+  CHECK(html.find(">Saturation<") != std::string::npos);
+  CHECK(test::count(html, "alt=\"temperature map") == snapshots);
   CHECK(test::count(html, "<img src=\"data:image/png;base64,") == 3 * snapshots);
   CHECK(test::count(html, "alt=\"material map") == snapshots);
   CHECK(html.find("href=\"damage.csv\"") != std::string::npos);

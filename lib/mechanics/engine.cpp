@@ -7,6 +7,7 @@
 #include "io/output_directory.hpp"
 #include "mechanics/frost_results.hpp"
 #include "mechanics/mechanics_run.hpp"
+#include "post/isoline.hpp"
 
 namespace frostwall::mechanics {
 
@@ -34,13 +35,21 @@ void add_solid_fields(io::PointCloudFrame& frame, const MechanicsRun& mechanics)
   }
 }
 
+// The length of the crack lines (the damage-0.4 isolines on the free
+// particles' triangles, both faces of a crack band) of the solid now.
+double crack_length(const Model& m, const MechanicsRun& mechanics) {
+  const auto& P = m.particles();
+  const post::IsolineMesh mesh(std::vector<particles::Vec<2>>(P.position.begin(), P.position.begin() + P.n_free), 2.5 * P.spacing);
+  return crack_measure(mesh.isolines(mechanics.damage(), FrostResults::crack_damage), 0.0).length;
+}
+
 // The solid and the pores' frost, at their places in the heat run's loop:
 // the pores' freezing is recorded before the solid re-equilibrates (each
 // equilibrium then records its damage), the solid is brought to
 // equilibrium at every output time before the sensors read it.
 class SolidAndFrost : public freezing::RunExtension {
  public:
-  SolidAndFrost(const project::Project& p, Model& m) {
+  SolidAndFrost(const project::Project& p, Model& m) : model_(m) {
     if (p.mechanics) mechanics_ = std::make_unique<MechanicsRun>(p, m);
     if (!m.pore_of.empty()) {
       frost_ = std::make_unique<FrostResults>(p, m, mechanics_.get());
@@ -66,11 +75,17 @@ class SolidAndFrost : public freezing::RunExtension {
     for (const auto& [key, value] : pores.items()) summary[key] = value;
   }
   void run_facts(nlohmann::ordered_json& run) const override {
-    if (mechanics_) run["mechanics"] = mechanics_->facts();
+    if (!mechanics_) return;
+    nlohmann::json facts = mechanics_->facts();
+    // A plate without pores: its crack lines' length at the end (a porous plate's is in "damage" per snapshot).
+    if (!frost_ && facts["critical_stretch"].is_number())
+      facts["crack_length"] = facts["broken_bonds"].get<std::size_t>() > 0 ? crack_length(model_, *mechanics_) : 0.0;
+    run["mechanics"] = facts;
   }
   const freezing::SolidView* solid() const override { return mechanics_.get(); }
 
  private:
+  const Model& model_;
   std::unique_ptr<MechanicsRun> mechanics_;
   std::unique_ptr<FrostResults> frost_;
 };

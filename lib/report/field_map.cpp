@@ -140,16 +140,20 @@ FieldMap::FieldMap(const FieldSnapshot& particles, const WedgeSymmetry& symmetry
 FieldMap::~FieldMap() = default;
 
 RgbaImage FieldMap::raster(const std::vector<double>& temperature, const ColourScale& colours) const {
-  RgbaImage image(window_.pixels, window_.pixels);
   const std::vector<double> T = (*probe_->probe)(temperature);
   const int n = window_.pixels;
   std::vector<double> value(std::size_t(n) * std::size_t(n), std::numeric_limits<double>::quiet_NaN());
   std::vector<char> inside(value.size(), 0);
   for (std::size_t k = 0; k < T.size(); ++k) value[probe_->pixel[k]] = T[k], inside[probe_->pixel[k]] = 1;
   fill_small_holes(value, inside, n);
-  for (std::size_t k = 0; k < value.size(); ++k) {
-    if (!std::isfinite(value[k])) continue;
-    const auto c = colours(value[k]);
+  return paint(value, n, colours);
+}
+
+RgbaImage paint(const std::vector<double>& values, int pixels, const ColourScale& colours) {
+  RgbaImage image(pixels, pixels);
+  for (std::size_t k = 0; k < values.size() && k < image.pixels.size() / 4; ++k) {
+    if (!std::isfinite(values[k])) continue;
+    const auto c = colours(values[k]);
     std::uint8_t* p = image.pixels.data() + 4 * k;
     p[0] = c[0], p[1] = c[1], p[2] = c[2], p[3] = 255;
   }
@@ -203,9 +207,14 @@ std::string FieldMap::html(const std::vector<double>& temperature, const ColourS
 
 std::string FieldMap::html(const RgbaImage& image, const std::string& what, const std::vector<post::Polyline>& fronts,
                            bool fronts_whole, const MapOverlay& overlay, const std::string& title) const {
-  const int n = window_.pixels;
-  const double scale = n / window_.size;  // px per metre
-  auto px = [&](const Vec2& x) { return std::pair{(x[0] - window_.x0) * scale, (window_.y0 + window_.size - x[1]) * scale}; };
+  return map_html(image, window_, what, fronts_whole ? fronts : unfold(fronts, symmetry_, 1.5 * spacing_), overlay, title);
+}
+
+std::string map_html(const RgbaImage& image, const MapWindow& window, const std::string& what,
+                     const std::vector<post::Polyline>& fronts, const MapOverlay& overlay, const std::string& title) {
+  const int n = window.pixels;
+  const double scale = n / window.size;  // px per metre
+  auto px = [&](const Vec2& x) { return std::pair{(x[0] - window.x0) * scale, (window.y0 + window.size - x[1]) * scale}; };
   // The raster is an <img>; the vectors lie over it in an SVG of the same size.
   std::string o = fmt::format(R"(<div class="map"><img src="{}" width="{}" height="{}" alt="{} map, {}">)",
                               png_data_uri(image), n, n, svg::escape(what), svg::escape(title));
@@ -224,7 +233,7 @@ std::string FieldMap::html(const RgbaImage& image, const std::string& what, cons
   }
   // Frozen front: a white halo under a black line reads on blue and on red.
   std::string d;
-  for (const auto& c : fronts_whole ? fronts : unfold(fronts, symmetry_, 1.5 * spacing_)) {
+  for (const auto& c : fronts) {
     if (c.points.size() < 2) continue;
     for (std::size_t k = 0; k < c.points.size(); ++k) {
       const auto [x, y] = px(c.points[k]);
@@ -260,7 +269,7 @@ std::string FieldMap::html(const RgbaImage& image, const std::string& what, cons
   }
   o += "</g>";
   // Title and a scale bar of a round length, about a fifth of the window.
-  const NiceScale bar = nice_scale(0.0, window_.size / 5.0, 1);
+  const NiceScale bar = nice_scale(0.0, window.size / 5.0, 1);
   const double metres = bar.step, len = metres * scale;
   o += fmt::format(R"(<rect x="6" y="6" width="{}" height="20" fill="#fff" fill-opacity="0.85"/><text x="11" y="21">{}</text>)",
                    num(svg::text_width(title, 13) + 12), svg::escape(title));

@@ -84,6 +84,17 @@ class FieldMap {
   double spacing_ = 0.0;
 };
 
+// A square raster `pixels` wide of values (rows top to bottom), each
+// finite one in its colour; NaN pixels transparent.
+RgbaImage paint(const std::vector<double>& values, int pixels, const ColourScale& colours);
+
+// The map as HTML around a window-sized raster: the raster as an <img>
+// (PNG data URI) under an SVG with the overlay, the curves as given (a
+// white halo under a black line), a title and a scale bar; `what` names
+// the map in the image's alt text.
+std::string map_html(const RgbaImage& image, const MapWindow& window, const std::string& what,
+                     const std::vector<post::Polyline>& curves, const MapOverlay& overlay, const std::string& title);
+
 // The wedge's front curves copied around (identity only when the field
 // already covers the whole circle). An open curve ending within `snap` of a
 // wedge side is extended onto it, so that it meets its mirror copy.

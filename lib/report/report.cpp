@@ -19,6 +19,9 @@ using nlohmann::json;
 namespace detail {
 
 std::string number(double v, int decimals) { return std::isfinite(v) ? tick_label(v, decimals) : "–"; }
+std::string metres(double v, int decimals) {
+  return !std::isfinite(v) || v == 0.0 || std::abs(v) >= 1e-3 ? number(v, decimals) : fmt::format("{:.4g}", v);
+}
 
 double smoothing_length(const json& run_facts) {
   const auto h = run_facts.find("smoothing_length");
@@ -43,18 +46,14 @@ void add_headline(const RunRecord& run, json& view) {
   const auto& s = run.summary;
   view["shaft"] = run.shaft();
   view["plain"] = !run.shaft();
-  view["front_note"] = "";
+  view["cards"] = json::array();
+  view["has_cards"] = false;
   view["snapshots"] = json::array();
   for (const char* key : {"closure_value", "closure_note", "contact_value", "contact_note", "last_day",
                           "last_min_thickness", "last_mean_temperature", "design_value", "design_note", "design_class"})
     view[key] = "";
   if (!run.shaft()) {
-    const auto& front = s.value("front", json::array());
-    const std::string unit = s.value("run", json::object()).value("time_unit", "s");
-    view["front_note"] = front.empty() || !front.back()[1].is_number()
-                             ? std::string("No frozen front was found.")
-                             : fmt::format("Frozen front at {} m from the cooled face after {:g} {}.",
-                                           number(front.back()[1], 4), front.back()[0].get<double>(), unit);
+    add_plain_headline(run, view);
     return;
   }
   const auto& closure = s.value("closure_time_days", json());
@@ -119,11 +118,14 @@ void add_run_facts(const RunRecord& run, json& view) {
   auto text = [](const json& v) { return v.is_string() ? v.get<std::string>() : v.dump(); };
   fact("particles", "free particles", integer);
   fact("boundary_particles", "fixed-temperature particles", integer);
-  fact("pairs", "particle pairs", integer);
+  const bool pd = r.value("method", std::string()) == "pd";
+  fact("pairs", pd ? "thermal bonds (pairs)" : "particle pairs", integer);
   fact("steps", "time steps", integer);
-  fact("spacing", "particle spacing", [](const json& v) { return number(v, 4) + " m"; });
-  fact("smoothing_length", "smoothing length h", [](const json& v) { return number(v, 4) + " m"; });
-  fact("kernel", "kernel", text);
+  fact("spacing", "particle spacing", [](const json& v) { return (v.is_number() ? metres(v.get<double>(), 4) : "–") + " m"; });
+  if (!pd) {  // PD bonds have a horizon, no kernel
+    fact("smoothing_length", "smoothing length h", [](const json& v) { return number(v, 4) + " m"; });
+    fact("kernel", "kernel", text);
+  }
   fact("integrator", "integrator", text);
   fact("threads", "threads", integer);
   fact("wall_seconds", "wall time", [](const json& v) { return number(v, 1) + " s"; });
@@ -148,7 +150,7 @@ void add_run_facts(const RunRecord& run, json& view) {
       {"monitoring.csv", "sensor temperatures over time"},
       {"brine.csv", "brine pipes: pipe wall temperature and heat extracted per metre over time"},
       {"damage.csv", "broken bonds, largest damage and damaged area at every mechanical equilibrium"},
-      {"field.pvd", "ParaView: the wedge's particles at every snapshot"},
+      {"field.pvd", run.shaft() ? "ParaView: the wedge's particles at every snapshot" : "ParaView: the particles at every snapshot"},
       {"ring.pvd", "ParaView: the whole ring at every snapshot"},
   };
   json files = json::array();
@@ -196,10 +198,13 @@ json report_view(const fs::path& dir) {
   view["title"] = run.summary.value("project", "frostwall run");
   view["description"] = run.project && !run.project->description.empty() ? json(run.project->description) : json(false);
   view["css"] = std::string(templates::style_css);
+  view["method_line"] = detail::method_line(run);
   json list = json::array();
   for (const auto& w : warnings) list.push_back({{"text", w}});
   view["warnings"] = list;
   view["has_warnings"] = !warnings.empty();
+  view["cards"] = json::array();
+  view["has_cards"] = false;
   if (run.summary.value("physics", std::string()) == "cfd-dem") {
     detail::add_cfd_dem(run, view);
     return view;

@@ -147,7 +147,7 @@ void sensor_chart(const RunRecord& run, json& charts) {
     return c;
   };
   Chart c = chart_of("_C", "sensor temperatures over time", "temperature (°C)", 1.0);
-  c.guides.push_back({false, run.freezing_point(), "freezing point"});
+  if (run.phase_change()) c.guides.push_back({false, run.freezing_point(), "freezing point"});
   charts.push_back(figure("sensors", "Sensors", c, "Temperature at the monitoring points (thermometer holes) of the project."));
   if (t.column(t.header.size() > 1 ? t.header[1].substr(0, t.header[1].size() - 2) + "_ux_m" : "")) {
     for (const auto& [suffix, axis] : {std::pair{std::string("_ux_m"), "x"}, std::pair{std::string("_uy_m"), "y"}})
@@ -162,7 +162,7 @@ void sensor_chart(const RunRecord& run, json& charts) {
 
 void front_chart(const RunRecord& run, json& charts) {
   const auto& front = run.summary.value("front", json::array());
-  if (front.empty()) return;
+  if (!last_front(run.summary)) return;  // no front formed: nothing to chart
   Series s{"", {}, {}, "#0b3c73", false, front.size() < 40};
   for (const auto& p : front) {
     s.x.push_back(p[0].get<double>());

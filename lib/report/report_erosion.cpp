@@ -134,6 +134,16 @@ void add_erosion(const RunRecord& run, json& view) {
                                                             get(regime, "minimum_fluidisation_velocity_m_s")));
   view["erosion_boils"] = regime.value("above_fluidisation", false);
   view["erosion_facts"] = erosion_facts(s, c.cavity->drain);
+  // The headline: the loss and the crater.
+  json cards = json::array();
+  cards.push_back(card("Fell into the cavity", fmt::format("{:.0f} grains", get(s, "lost_to_cavity")),
+                       fmt::format("of {:.0f} at the start{}", get(s, "grains_at_start"), c.cavity->drain ? "; the leak takes them away" : "")));
+  cards.push_back(card("Washed out", fmt::format("{:.0f} grains", get(s, "washed_out")), "through the outflow face"));
+  if (const json& cr = s.value("crater", json::object()); !cr.empty())
+    cards.push_back(card("Crater", or_dash(cr["depth_m"], "{:.1f} mm", 1e3) + " deep",
+                         or_dash(cr["width_m"], "{:.0f} mm", 1e3) + " wide, flanks at " + or_dash(cr["slope_deg"], "{:.1f} deg")));
+  view["cards"] = cards;
+  view["has_cards"] = true;
   const json& rows = s["series"];
   json charts = json::array();
   auto add = [&](const std::string& id, const Chart& ch, const std::string& caption) {

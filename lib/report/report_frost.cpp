@@ -8,8 +8,8 @@
 #include <cmath>
 #include <fmt/core.h>
 #include <limits>
-#include <regex>
 
+#include "report/cloud_raster.hpp"
 #include "report/field_map.hpp"
 #include "report/nice_scale.hpp"
 #include "report/report_sections.hpp"
@@ -101,36 +101,30 @@ DamageSeries damage_series(const RunRecord& run) {
 
 // The three maps of every snapshot of field.pvd, on one colour scale each.
 void add_frost_maps(const RunRecord& run, const std::string& unit, json& view) {
-  const auto text = read_text(run.dir / "field.pvd");
-  static const std::regex dataset(R"re(<DataSet\s+timestep="([^"]*)"[^>]*\sfile="([^"]*)")re");
   std::vector<std::pair<double, SolidSnapshot>> snapshots;
-  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-  if (text)
-    for (auto it = std::sregex_iterator(text->begin(), text->end(), dataset); it != std::sregex_iterator(); ++it) {
-      SolidSnapshot s = read_solid(run.dir / (*it)[2].str());
-      const std::size_t n = s.particles.position.size();
-      if (n == 0 || s.temperature.size() != n || s.material.size() != n) continue;
-      for (double T : s.temperature) lo = std::min(lo, T), hi = std::max(hi, T);
-      snapshots.emplace_back(std::stod((*it)[1].str()), std::move(s));
-    }
+  std::vector<std::vector<double>> temperatures;
+  for (const auto& e : read_pvd(run.dir / "field.pvd")) {
+    SolidSnapshot s = read_solid(run.dir / e.file);
+    const std::size_t n = s.particles.position.size();
+    if (n == 0 || s.temperature.size() != n || s.material.size() != n) continue;
+    if (!snapshots.empty() && n != snapshots.front().second.particles.position.size()) continue;
+    temperatures.push_back(s.temperature);
+    snapshots.emplace_back(e.time, std::move(s));
+  }
   if (snapshots.empty()) {
-    view["frost_maps_note"] = "No snapshots with the pores' material in this directory (output.vtk off?), so no maps.";
+    view["frost_maps_note"] = run.mechanics() ? "No snapshots with the pores' material in this directory (output.vtk off?), so no maps."
+                                              : "No solid was modelled (no mechanics block): the temperature maps are above; there is no damage.";
     return;
   }
   const json facts = run.summary.value("run", json::object());
   const auto& first = snapshots.front().second.particles;
   const double spacing = facts.value("spacing", 0.0), h = smoothing_length(facts);
   // A square window over the plate (its particles' extent).
-  particles::Vec<2> a = first.position.front(), b = a;
-  for (const auto& x : first.position) a = a.cwiseMin(x), b = b.cwiseMax(x);
-  MapWindow window;
-  window.pixels = 300;
-  window.x0 = a[0] - 0.5 * spacing, window.y0 = a[1] - 0.5 * spacing;
-  window.size = std::max(b[0] - a[0], b[1] - a[1]) + spacing;
+  const MapWindow window = window_over(first.position, spacing, 300);
   const FieldMap map(first, WedgeSymmetry{}, facts.value("kernel", "wendland_c2"), h, spacing, window, 0.0);
-  const double freezing_point = run.project ? run.project->pore_fluid.freezing_point : 0.0;
-  const NiceScale ends = nice_scale(lo, hi, 10);
-  const ColourScale temperature(ends.lo, ends.hi, freezing_point), damage(0.0, 1.0, 0.5);
+  const CloudRaster cloud(first.position, triangle_edge(facts), window);
+  const double freezing_point = run.freezing_point();
+  const ColourScale temperature = temperature_scale(temperatures, freezing_point), damage(0.0, 1.0, 0.5);
   json rows = json::array();
   for (const auto& [t, s] : snapshots) {
     std::vector<std::array<std::uint8_t, 3>> colours;
@@ -138,7 +132,7 @@ void add_frost_maps(const RunRecord& run, const std::string& unit, json& view) {
     for (int m : s.material) colours.push_back(material_colour[std::size_t(std::clamp(m, 0, 2))]);
     const std::string title = fmt::format("t = {:g} {}", t, unit);
     json maps = json::array();
-    maps.push_back({{"html", map.html(s.temperature, temperature, {}, true, MapOverlay{}, title)},
+    maps.push_back({{"html", map_html(cloud.raster(s.temperature, temperature), window, "temperature", {}, MapOverlay{}, title)},
                     {"caption", fmt::format("temperature (°C) at {:g} {}", t, unit)}});
     maps.push_back({{"html", map.html(map.nearest_raster(colours), "material", {}, true, MapOverlay{}, title)},
                     {"caption", fmt::format("matrix, pore water and pore ice at {:g} {}", t, unit)}});
@@ -152,8 +146,9 @@ void add_frost_maps(const RunRecord& run, const std::string& unit, json& view) {
   view["frost_material_legend_svg"] = material_legend_svg();
   view["frost_damage_bar_svg"] = damage.colour_bar_svg(340, "damage (share of broken bonds)");
   view["frost_maps_note"] = fmt::format(
-      "Each snapshot of the plate: the temperature (blue to red at the pore water's freezing point, {} °C) and the "
-      "damage resampled from the particles (SPH interpolation); the material is each particle's own, its nearest "
+      "Each snapshot of the plate: the temperature (blue to red at the pore water's freezing point, {} °C) on the "
+      "particles' triangles, linear within each (as ParaView draws the VTK cells), and the damage resampled from the "
+      "particles (SPH interpolation); the material is each particle's own, its nearest "
       "pixels taking its colour, so water and ice do not blend.",
       number(freezing_point, 1));
 }

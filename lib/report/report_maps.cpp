@@ -5,7 +5,6 @@
 #include <fmt/core.h>
 #include <limits>
 #include <numbers>
-#include <regex>
 
 #include "geometry/layout.hpp"
 #include "report/field_map.hpp"
@@ -20,22 +19,6 @@ using nlohmann::json;
 namespace fs = std::filesystem;
 
 namespace {
-
-struct Snapshot {
-  double time = 0.0;  // in the project's time unit
-  std::string file;
-};
-
-// The snapshots a field.pvd lists, in its order.
-std::vector<Snapshot> read_pvd(const fs::path& file) {
-  std::vector<Snapshot> out;
-  const auto text = read_text(file);
-  if (!text) return out;
-  static const std::regex dataset(R"re(<DataSet\s+timestep="([^"]*)"[^>]*\sfile="([^"]*)")re");
-  for (auto it = std::sregex_iterator(text->begin(), text->end(), dataset); it != std::sregex_iterator(); ++it)
-    out.push_back({std::stod((*it)[1].str()), (*it)[2].str()});
-  return out;
-}
 
 WedgeSymmetry wedge_of(const json& summary) {
   WedgeSymmetry w;
@@ -53,8 +36,16 @@ void add_maps(const RunRecord& run, json& view) {
   view["maps"] = json::array();
   view["colour_bar_svg"] = "";
   view["maps_note"] = "";
+  view["show_maps_note"] = true;
   if (!run.shaft() || !run.summary.contains("wedge")) {
-    view["maps_note"] = "Temperature maps are drawn for shaft sections; this run is a plain geometry.";
+    // A solid's temperature is drawn beside its displacement and damage.
+    view["show_maps_note"] = false;
+    if (run.mechanics()) return;
+    // A porous plate's frost section draws the temperature when the files hold its solid.
+    if (run.frost())
+      if (const auto files = read_pvd(run.dir / "field.pvd"); !files.empty() && !read_solid(run.dir / files.front().file).damage.empty())
+        return;
+    add_plain_maps(run, view);
     return;
   }
   const auto snapshots = read_pvd(run.dir / "field.pvd");

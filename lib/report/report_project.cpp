@@ -137,6 +137,50 @@ void add_schedule(const project::Project& p, const project::TemperatureSchedule&
 
 std::string time_unit(project::TimeUnit u) { return u == project::TimeUnit::d ? "d" : (u == project::TimeUnit::h ? "h" : "s"); }
 
+std::string integration(const project::Numerics& n, bool latent_heat) {
+  if (n.integrator == project::IntegratorKind::explicit_euler) return fmt::format("explicit (forward Euler), β = {}", number(n.beta, 3));
+  const std::string name = n.integrator == project::IntegratorKind::rkl2 ? "RKL2 super-time-stepping" : "implicit (backward Euler)";
+  return latent_heat ? fmt::format("{}, step: at most {} of the latent heat per particle", name, number(n.step_change, 3)) : name;
+}
+
+// What the SPH heat conduction used: kernel, Laplacian, pair conductivity, symmetry.
+void add_sph_numerics(const project::Project& p, json& rows) {
+  const auto& n = p.numerics;
+  rows.push_back(row("kernel", fmt::format("{}, h = {} × spacing", n.kernel == project::KernelKind::cubic_spline ? "cubic spline" : "Wendland C2",
+                                           number(n.smoothing_ratio, 2))));
+  rows.push_back(row("time integration", integration(n, p.soil.latent_heat > 0.0)));
+  rows.push_back(row("Laplacian", n.laplacian == project::LaplacianForm::renormalised ? "renormalised" : "plain (the paper's)"));
+  rows.push_back(row("conductivity between particles", n.conductivity_mean == project::ConductivityMean::harmonic ? "harmonic mean" : "arithmetic (k_i + k_j)"));
+  if (std::holds_alternative<project::ShaftSection>(p.geometry))
+    rows.push_back(row("symmetry", n.use_symmetry ? "smallest mirror wedge" : "off: full ring"));
+}
+
+// What the peridynamics used: horizon, thermal bonds, bond law, solver.
+void add_pd_numerics(const RunRecord& run, json& rows) {
+  const auto& p = *run.project;
+  const json& m = run.summary.value("run", json::object()).value("mechanics", json::object());
+  const double spacing = run.summary.value("run", json::object()).value("spacing", p.numerics.spacing.value_or(0.0));
+  rows.push_back(row("method", "peridynamics (PD), bond-based, on a square lattice"));
+  rows.push_back(row("horizon", fmt::format("δ = {} × spacing = {} mm", number(p.numerics.horizon, 3),
+                                            number(1e3 * p.numerics.horizon * spacing, 4))));
+  rows.push_back(row("heat conduction", "PD thermal bonds within the horizon"));
+  rows.push_back(row("time integration (heat)", integration(p.numerics, p.soil.latent_heat > 0.0)));
+  if (!p.mechanics) return;
+  const auto& mech = *p.mechanics;
+  const bool breaks = m.value("critical_stretch", json()).is_number();
+  rows.push_back(row("bond law", breaks ? fmt::format("prototype microelastic brittle: micromodulus {:.4g} N/m⁶, breaks at stretch {:.4g}",
+                                                       m.value("micromodulus", 0.0), m["critical_stretch"].get<double>())
+                                        : fmt::format("linear elastic, micromodulus {:.4g} N/m⁶; bonds never break (no fracture energy)",
+                                                      m.value("micromodulus", 0.0))));
+  rows.push_back(row("kinematics", mech.linear_kinematics ? "linear (stretch linearised in the displacement)" : "nonlinear (exact stretch)"));
+  rows.push_back(row("equilibrium", mech.equilibrium == project::Mechanics::Equilibrium::direct
+                                        ? "direct: sparse Cholesky factor preconditioning conjugate gradients"
+                                        : fmt::format("adaptive dynamic relaxation, tolerance {:g}", mech.tolerance)));
+  rows.push_back(row("re-equilibrated", mech.temperature_change
+                                            ? fmt::format("when a particle's temperature moved {} K, and at every snapshot", number(*mech.temperature_change, 2))
+                                            : "when a temperature moved 10 % of the largest change so far, and at every snapshot"));
+}
+
 void add_numerics(const RunRecord& run, json& view) {
   const auto& p = *run.project;
   const auto& n = p.numerics;
@@ -145,31 +189,47 @@ void add_numerics(const RunRecord& run, json& view) {
   std::string snapshots;
   for (double t : p.time.snapshots) snapshots += (snapshots.empty() ? "" : ", ") + fmt::format("{:g}", t / u);
   json rows = json::array({
-      row("particle spacing", facts.contains("spacing") ? number(facts["spacing"], 4) + " m" +
+      row("particle spacing", facts.contains("spacing") ? metres(facts.value("spacing", 0.0), 4) + " m" +
                                                               (n.spacing ? "" : " (chosen by frostwall)")
                                                         : (n.spacing ? number(*n.spacing, 4) + " m" : "default")),
-      row("kernel", fmt::format("{}, h = {} × spacing", n.kernel == project::KernelKind::cubic_spline ? "cubic spline" : "Wendland C2",
-                                number(n.smoothing_ratio, 2))),
-      row("time integration",
-          n.integrator == project::IntegratorKind::explicit_euler
-              ? fmt::format("explicit (forward Euler), β = {}", number(n.beta, 3))
-              : fmt::format("{}, step: at most {} of the latent heat per particle",
-                            n.integrator == project::IntegratorKind::rkl2 ? "RKL2 super-time-stepping"
-                                                                           : "implicit (backward Euler)",
-                            number(n.step_change, 3))),
-      row("Laplacian", n.laplacian == project::LaplacianForm::renormalised ? "renormalised" : "plain (the paper's)"),
-      row("conductivity between particles", n.conductivity_mean == project::ConductivityMean::harmonic ? "harmonic mean" : "arithmetic (k_i + k_j)"),
-      row("symmetry", n.use_symmetry ? "smallest mirror wedge" : "off: full ring"),
-      row("simulated time", fmt::format("{:g} {}", p.time.end / u, time_unit(p.time.unit))),
-      row("snapshots", snapshots + " " + time_unit(p.time.unit)),
   });
+  if (n.method == project::Method::pd) add_pd_numerics(run, rows);
+  else add_sph_numerics(p, rows);
+  rows.push_back(row("simulated time", fmt::format("{:g} {}", p.time.end / u, time_unit(p.time.unit))));
+  rows.push_back(row("snapshots", snapshots + " " + time_unit(p.time.unit)));
   view["numerics_rows"] = rows;
+}
+
+// The solid of a PD run: elasticity, expansion, fracture, supports.
+void add_solid(const project::Mechanics& m, json& view) {
+  auto support = [](const project::Support& s) {
+    switch (s.kind) {
+      case project::Support::Kind::free: return std::string("free");
+      case project::Support::Kind::roller: return std::string("roller");
+      case project::Support::Kind::fixed: return std::string("fixed");
+      case project::Support::Kind::displacement: return fmt::format("held at ({:g}, {:g}) m", s.ux, s.uy);
+    }
+    return std::string();
+  };
+  const auto& mat = m.material;
+  view["solid_rows"] = json::array({
+      row("elastic modulus", number(mat.elastic_modulus / 1e9, 2) + " GPa"),
+      row("Poisson's ratio", number(mat.poisson_ratio, 3) + (m.plane == project::Plane::strain ? " (plane strain)" : " (plane stress)")),
+      row("thermal expansion", fmt::format("{:g} /K, stress-free at {} °C", mat.thermal_expansion, number(mat.reference_temperature, 1))),
+      row("fracture energy", mat.fracture_energy ? number(*mat.fracture_energy, 2) + " J/m²" : std::string("none: bonds never break")),
+      row("supports", fmt::format("left {}, right {}, bottom {}, top {}", support(m.left), support(m.right), support(m.bottom), support(m.top))),
+  });
+  view["has_solid_rows"] = true;
 }
 
 void add_design_and_sensors(const project::Project& p, json& view) {
   json rows = json::array();
-  rows.push_back(row("required wall thickness", p.design.required_thickness ? number(*p.design.required_thickness, 2) + " m (weakest ray)" : "none"));
-  rows.push_back(row("max. mean wall temperature", p.design.max_mean_temperature ? number(*p.design.max_mean_temperature, 1) + " °C (on OB)" : "none"));
+  // A plain geometry has no wall to design: its targets only when given.
+  const bool shaft = std::holds_alternative<project::ShaftSection>(p.geometry);
+  if (shaft || p.design.required_thickness)
+    rows.push_back(row("required wall thickness", p.design.required_thickness ? number(*p.design.required_thickness, 2) + " m (weakest ray)" : "none"));
+  if (shaft || p.design.max_mean_temperature)
+    rows.push_back(row("max. mean wall temperature", p.design.max_mean_temperature ? number(*p.design.max_mean_temperature, 1) + " °C (on OB)" : "none"));
   if (p.design.checks_strength()) {
     std::string where = p.design.depth ? " at " + number(*p.design.depth, 1) + " m depth" : "";
     rows.push_back(row("wall check", fmt::format("{} with the lateral pressure {} MPa{}, allowable {} of the frozen soil's strength at "
@@ -178,12 +238,14 @@ void add_design_and_sensors(const project::Project& p, json& view) {
                                                  number(p.design.allowable_factor, 2))));
   }
   view["design_rows"] = rows;
+  view["has_design_rows"] = !rows.empty();
   json sensors = json::array();
   for (const auto& s : p.monitoring)
-    sensors.push_back({{"name", s.name}, {"x", number(s.x, 3)}, {"y", number(s.y, 3)}, {"r", number(std::hypot(s.x, s.y), 3)},
+    sensors.push_back({{"name", s.name}, {"x", metres(s.x, 3)}, {"y", metres(s.y, 3)}, {"r", metres(std::hypot(s.x, s.y), 3)},
                        {"theta", number(std::atan2(s.y, s.x) * 180 / std::numbers::pi, 3)}});
   view["has_sensors"] = !sensors.empty();
   view["sensors"] = sensors;
+  view["has_design_or_sensors"] = !rows.empty() || !sensors.empty();
 }
 
 }  // namespace
@@ -194,12 +256,15 @@ void add_project(const RunRecord& run, json& view) {
     view[key] = json::array();
   for (const char* key : {"layout_svg", "layout_caption", "soil_name", "schedule_note"}) view[key] = "";
   view["schedule_svg"] = false;
-  view["has_sensors"] = false;
+  for (const char* key : {"has_sensors", "has_design_rows", "has_design_or_sensors", "has_solid_rows"}) view[key] = false;
+  view["solid_rows"] = json::array();
+  view["soil_heading"] = run.mechanics() || run.frost() ? "Material" : "Soil";
   view["has_project"] = run.project.has_value();
   if (!run.project) return;
   const auto& p = *run.project;
 
-  json domain = json::array({row("initial ground temperature", number(p.domain.initial_temperature, 1) + " °C")});
+  const bool shaft = std::holds_alternative<project::ShaftSection>(p.geometry);
+  json domain = json::array({row(shaft ? "initial ground temperature" : "initial temperature", number(p.domain.initial_temperature, 1) + " °C")});
   if (const auto* section = std::get_if<project::ShaftSection>(&p.geometry)) {
     add_layout(run, *section, view);
     domain.push_back(row("far field", (p.domain.far_field_temperature ? number(*p.domain.far_field_temperature, 1) + " °C" : std::string("adiabatic")) +
@@ -208,9 +273,10 @@ void add_project(const RunRecord& run, json& view) {
   } else {
     const auto& r = std::get<project::Rectangle>(p.geometry);
     view["layout_svg"] = rectangle_svg(r);
-    view["layout_caption"] = "Plain geometry (a verification problem): the rectangle and its boundary conditions.";
+    view["layout_caption"] = "Plain geometry: the rectangle and its boundary conditions.";
     view["layout_rows"] = json::array({row("geometry", fmt::format("rectangle {:g} m × {:g} m", r.width, r.height))});
-    view["schedule_note"] = "No freeze pipes: the boundaries are shown beside the drawing.";
+    view["schedule_note"] = "";
+    if (p.mechanics) add_solid(*p.mechanics, view);
   }
   view["domain_rows"] = domain;
   add_soil(p.soil, view);

@@ -6,8 +6,11 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
+#include <utility>
 
+#include "particles/vec.hpp"
 #include "project/project.hpp"
+#include "report/colour_scale.hpp"
 #include "report/svg_chart.hpp"
 
 namespace frostwall::report::detail {
@@ -18,7 +21,15 @@ struct RunRecord {
   nlohmann::json summary;
   std::optional<project::Project> project;  // from project.json, when recorded and valid
   bool shaft() const { return summary.contains("wall"); }
-  double freezing_point() const { return project ? project->soil.freezing_point : 0.0; }
+  // A PD solid ran (summary run.mechanics); a porous plate froze (summary pores).
+  bool mechanics() const { return summary.value("run", nlohmann::json::object()).contains("mechanics"); }
+  bool frost() const { return summary.contains("pores") && summary["pores"].is_array(); }
+  // The freezing point of what freezes: the pore water of a porous plate, else the soil.
+  double freezing_point() const {
+    return project ? (frost() ? project->pore_fluid.freezing_point : project->soil.freezing_point) : 0.0;
+  }
+  // Whether anything can freeze (a soil with latent heat, or pore water).
+  bool phase_change() const { return !project || frost() || project->soil.latent_heat > 0.0; }
 };
 
 // "1.23" with a true minus sign; "–" for null/NaN.
@@ -28,7 +39,32 @@ struct RunRecord {
 double smoothing_length(const nlohmann::json& run_facts);
 
 std::string number(double v, int decimals);
+// A length in m: `decimals` places from a millimetre up, four significant
+// digits below (a plate of micrometres).
+std::string metres(double v, int decimals);
 std::string number(const nlohmann::json& v, int decimals);
+
+// The method that ran, for the title block ("Peridynamics: ...").
+std::string method_line(const RunRecord& run);
+// Headline cards of a plain geometry: the front and sensors of a thermal
+// run; displacement, broken bonds and cracks of a PD solid; the pores'
+// freezing and cracking of a porous plate.
+void add_plain_headline(const RunRecord& run, nlohmann::json& view);
+// Temperature maps of a plain geometry's snapshots on the particles'
+// triangles (a plain thermal run's maps section).
+void add_plain_maps(const RunRecord& run, nlohmann::json& view);
+// One colour scale over every snapshot's temperature, ends at round
+// values, turning from blue to red at the freezing point.
+ColourScale temperature_scale(const std::vector<std::vector<double>>& snapshots, double freezing_point);
+// The longest edge of a triangle of the particles' cloud for the maps
+// (longer ones cross a hole): from summary.json's spacing facts.
+double triangle_edge(const nlohmann::json& run_facts);
+// The last snapshot of a plain geometry's front ("front": [[t, x], ...])
+// at which a front had formed (beyond the face's own row of particles);
+// nullopt for a run that never froze.
+std::optional<std::pair<double, double>> last_front(const nlohmann::json& summary);
+// A card of the headline.
+nlohmann::json card(const std::string& label, const std::string& value, const std::string& note);
 
 void add_project(const RunRecord& run, nlohmann::json& view);   // layout, soil, schedule, numerics, design
 void add_headline(const RunRecord& run, nlohmann::json& view);  // closure, thickness, design check, table

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <fstream>
 #include <limits>
+#include <regex>
 #include <sstream>
 #include <stdexcept>
 #include <vtkCellArray.h>
@@ -164,6 +165,16 @@ std::vector<post::Polyline> read_polylines(const fs::path& file) {
     lines.push_back(std::move(line));
   }
   return lines;
+}
+
+std::vector<PvdEntry> read_pvd(const fs::path& file) {
+  std::vector<PvdEntry> out;
+  const auto text = read_text(file);
+  if (!text) return out;
+  static const std::regex dataset(R"re(<DataSet\s+timestep="([^"]*)"[^>]*\sfile="([^"]*)")re");
+  for (auto it = std::sregex_iterator(text->begin(), text->end(), dataset); it != std::sregex_iterator(); ++it)
+    out.push_back({std::stod((*it)[1].str()), (*it)[2].str()});
+  return out;
 }
 
 nlohmann::json read_json(const fs::path& file) {

@@ -60,6 +60,14 @@ GrainSnapshot read_grains(const std::filesystem::path& file);
 // The polylines of an interface_XXXX.vtp file (closed ones repeat their first point).
 std::vector<post::Polyline> read_polylines(const std::filesystem::path& file);
 
+// The snapshots a .pvd collection lists, in its order: time (the
+// project's time unit) and file; empty when there is no such file.
+struct PvdEntry {
+  double time = 0.0;
+  std::string file;
+};
+std::vector<PvdEntry> read_pvd(const std::filesystem::path& file);
+
 nlohmann::json read_json(const std::filesystem::path& file);
 std::optional<std::string> read_text(const std::filesystem::path& file);
 
