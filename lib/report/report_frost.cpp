@@ -136,7 +136,7 @@ void add_frost_maps(const RunRecord& run, const std::string& unit, json& view) {
                     {"caption", fmt::format("temperature (°C) at {:g} {}", t, unit)}});
     maps.push_back({{"html", map.html(map.nearest_raster(colours), "material", {}, true, MapOverlay{}, title)},
                     {"caption", fmt::format("matrix, pore water and pore ice at {:g} {}", t, unit)}});
-    maps.push_back({{"html", map.html(map.raster(s.damage, damage), "damage", {}, true, MapOverlay{}, title)},
+    maps.push_back({{"html", map_html(cloud.raster(s.damage, damage), window, "damage", {}, MapOverlay{}, title)},
                     {"caption", fmt::format("damage (share of broken bonds) at {:g} {}", t, unit)}});
     rows.push_back({{"maps", maps}});
   }
@@ -146,10 +146,9 @@ void add_frost_maps(const RunRecord& run, const std::string& unit, json& view) {
   view["frost_material_legend_svg"] = material_legend_svg();
   view["frost_damage_bar_svg"] = damage.colour_bar_svg(340, "damage (share of broken bonds)");
   view["frost_maps_note"] = fmt::format(
-      "Each snapshot of the plate: the temperature (blue to red at the pore water's freezing point, {} °C) on the "
-      "particles' triangles, linear within each (as ParaView draws the VTK cells), and the damage resampled from the "
-      "particles (SPH interpolation); the material is each particle's own, its nearest "
-      "pixels taking its colour, so water and ice do not blend.",
+      "Each snapshot of the plate: the temperature (blue to red at the pore water's freezing point, {} °C) and the "
+      "damage on the particles' triangles, linear within each (as ParaView draws the VTK cells); the material is each "
+      "particle's own, its nearest pixels taking its colour, so water and ice do not blend.",
       number(freezing_point, 1));
 }
 
