@@ -115,4 +115,10 @@ void detail::check_rectangle_spacing(const Node& spacing_node, const Rectangle& 
                                      rows, key, side, side / rows));
 }
 
+void detail::check_shaft_spacing(const Node& spacing_node, const ShaftSection& s, std::optional<double> spacing) {
+  if (spacing && s.pipe.diameter > 0 && *spacing > s.pipe.diameter * (1 + 1e-9))
+    spacing_node.problem(fmt::format("{} m is larger than the pipe diameter ({} m): a pipe needs particles across it; use {} m "
+                                     "or less", *spacing, s.pipe.diameter, s.pipe.diameter));
+}
+
 }  // namespace frostwall::project

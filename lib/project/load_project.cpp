@@ -321,6 +321,7 @@ Project read_project(const Node& root) {
   project.numerics = read_numerics(root["numerics"], shaft);
   if (const auto* r = std::get_if<Rectangle>(&project.geometry))
     detail::check_rectangle_spacing(root["numerics"]["spacing"], *r, project.numerics.spacing);
+  else detail::check_shaft_spacing(root["numerics"]["spacing"], std::get<ShaftSection>(project.geometry), project.numerics.spacing);
   if (const double s = project.numerics.smoothing_ratio; s < 1.0 || s > 2.5)
     project.warnings.push_back(fmt::format(
         "numerics.smoothing_ratio: {} is outside the usual 1.0..2.5 (too few neighbours below, "
