@@ -91,3 +91,23 @@ TEST_CASE("frostwall check counts the PD plate's particles as the run does", "[c
   REQUIRE(c.exit_status == 0);
   CHECK(number_after(c.out, "particles:") == 100 * 100);
 }
+
+TEST_CASE("frostwall check gives the grains and DEM steps a short CFD-DEM run reports", "[cfd_dem][cli][check]") {
+  // projects/verify_ergun.json, a held bed of 400 grains: the run's own
+  // counts (LAMMPS' grain count and the steps it ran) in summary.json.
+  frostwall::test::TempDir dir;
+  const Check c = check(dir.path, projects_dir / "verify_ergun.json");
+  INFO(c.out);
+  REQUIRE(c.exit_status == 0);
+  std::ofstream(dir.path / "p.json") << [] {
+    std::ifstream in(projects_dir / "verify_ergun.json");
+    auto p = nlohmann::json::parse(in);
+    p["output"] = {{"directory", "out"}, {"vtk", false}, {"report", false}};
+    return p.dump();
+  }();
+  frostwall::test::require_frostwall(dir.path, "run p.json", {"", 60});
+  std::ifstream in(dir.path / "out" / "summary.json");
+  const auto summary = nlohmann::json::parse(in);
+  CHECK(number_after(c.out, "grains:") == summary["grains"].get<long>());
+  CHECK(number_after(c.out, "steps:") == summary["dem_steps"].get<long>());
+}
