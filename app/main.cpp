@@ -9,12 +9,14 @@
 #include <fmt/core.h>
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <sstream>
 #include <omp.h>
 #include <unistd.h>
 
 #include "project/project.hpp"
 #include "report/report.hpp"
+#include "run/check_project.hpp"
 #include "run/run_project.hpp"
 #include "study/run_layers.hpp"
 #include "study/study_report.hpp"
@@ -47,23 +49,33 @@ std::function<void(double, double)> progress_printer(const frostwall::project::T
   };
 }
 
+// The project file loaded, its warnings printed; nullopt after printing
+// its problems (bad input).
+std::optional<frostwall::project::Project> load_or_report(const std::string& file) {
+  try {
+    auto p = frostwall::project::load_project(file);
+    for (const auto& w : p.warnings) std::cerr << "warning: " << w << "\n";
+    return p;
+  } catch (const frostwall::project::ProjectError& e) {
+    for (const auto& line : e.problems()) std::cerr << line << "\n";
+    return std::nullopt;
+  }
+}
+
+std::string text_of(const std::string& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
 int run_command(const std::string& file) {
   using namespace frostwall;
-  project::Project p;
-  try {
-    p = project::load_project(file);
-  } catch (const project::ProjectError& e) {
-    for (const auto& line : e.problems()) std::cerr << line << "\n";
-    return 2;
-  }
-  for (const auto& w : p.warnings) std::cerr << "warning: " << w << "\n";
+  const auto loaded = load_or_report(file);
+  if (!loaded) return 2;
+  const project::Project& p = *loaded;
   run::RunOptions options;
-  {  // the text as given, recorded beside the results (project.json)
-    std::ifstream in(file, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    options.project_text = text.str();
-  }
+  options.project_text = text_of(file);  // the text as given, recorded beside the results (project.json)
   options.progress = progress_printer(p.time);
   options.note = [](const std::string& s) { std::cerr << s << "\n"; };
   try {
@@ -88,6 +100,26 @@ int run_command(const std::string& file) {
   // Under mpirun every rank runs this; one says so.
   if (first_rank())
     std::cerr << "wrote " << p.output.directory << "\n";
+  return 0;
+}
+
+// Checks a project as `run` does before any work, and prints what the run
+// would be; writes nothing. Exit status as `run`'s on bad input.
+int check_command(const std::string& file) {
+  using namespace frostwall;
+  const auto p = load_or_report(file);
+  if (!p) return 2;
+  try {
+    const auto lines = p->layers.empty() ? run::check_project(*p) : study::check_layers(*p, text_of(file));
+    std::cout << file << ": can run (output into " << p->output.directory << ")\n";
+    for (const auto& line : lines) std::cout << "  " << line << "\n";
+  } catch (const project::ProjectError& e) {
+    for (const auto& line : e.problems()) std::cerr << line << "\n";
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "frostwall: check failed: " << e.what() << "\n";
+    return 1;
+  }
   return 0;
 }
 
@@ -143,6 +175,9 @@ int main(int argc, char** argv) {
   std::string project_file;
   int threads = 0;
   run->add_option("project", project_file, "project file (JSON)")->required();
+  auto* check = app.add_subcommand("check", "check a project file without running it; print the particles, steps and an estimated run time");
+  std::string check_file;
+  check->add_option("project", check_file, "project file (JSON)")->required();
   auto* report = app.add_subcommand("report", "rebuild report.html from the files of an output directory");
   std::string report_dir;
   report->add_option("output-dir", report_dir, "output directory of a run")->required();
@@ -160,6 +195,7 @@ int main(int argc, char** argv) {
   }
   if (threads > 0) omp_set_num_threads(threads);
   if (run->parsed()) return run_command(project_file);
+  if (check->parsed()) return check_command(check_file);
   if (report->parsed()) return report_command(report_dir);
   if (study->parsed()) return study_command(study_file, jobs, threads);
   return 2;

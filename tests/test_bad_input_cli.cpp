@@ -72,16 +72,20 @@ TEST_CASE("bad project files stop the run with status 2 and write nothing", "[sh
     ScratchDir dir;
     fs::copy_file(entry.path(), dir.path / file);
 
-    const Run run = run_frostwall(dir.path, file);
-    CHECK(run.exit_status == 2);
-    for (const auto& expected : lines_of(bad_dir / (name + ".expected"))) {
-      INFO("stderr:\n" << [&] { std::string s; for (const auto& l : run.stderr_lines) s += l + "\n"; return s; }());
-      CHECK(contains(run.stderr_lines, expected));
+    // `frostwall check` refuses it with the same lines and status.
+    for (const char* command : {"run", "check"}) {
+      INFO(command);
+      const auto cli = frostwall::test::frostwall_cli(dir.path, std::string(command) + " '" + file + "'", {"", 10});
+      CHECK(cli.exit_status == 2);
+      for (const auto& expected : lines_of(bad_dir / (name + ".expected"))) {
+        INFO("stderr:\n" << [&] { std::string s; for (const auto& l : cli.stderr_lines) s += l + "\n"; return s; }());
+        CHECK(contains(cli.stderr_lines, expected));
+      }
+      CHECK_FALSE(fs::exists(dir.path / "out" / ("bad_" + name)));
+      CHECK_FALSE(fs::exists(dir.path / "out"));
     }
-    CHECK_FALSE(fs::exists(dir.path / "out" / ("bad_" + name)));
-    CHECK_FALSE(fs::exists(dir.path / "out"));
   }
-  CHECK(cases >= 27);
+  CHECK(cases >= 55);
 }
 
 // Without numerics.max_particles the limit comes from this machine's

@@ -301,9 +301,14 @@ TEST_CASE("files that cannot be read, text that is no project", "[shared][projec
   CHECK_THROWS_AS(load_project(data_dir.string()), ProjectError);
   CHECK(problems_of("[1, 2]", "p.json") == std::vector<std::string>{"p.json: must be a JSON object, got array"});
   CHECK(problems_of("", "p.json").size() == 1);
-  // The parser throws out_of_range, not parse_error, for this one.
+  // A number beyond a double, and a key given twice: named by their paths.
   CHECK(problems_of(R"({"name": 1e400})", "p.json") ==
-        std::vector<std::string>{"p.json: not valid JSON: number overflow parsing '1e400'"});
+        std::vector<std::string>{"name: the number 1e400 is out of range (beyond about 1.8e308)"});
+  CHECK(problems_of(R"({"a": {"b": [1, {"c": -2e999}]}})", "p.json") ==
+        std::vector<std::string>{"a.b[1].c: the number -2e999 is out of range (beyond about 1.8e308)"});
+  CHECK(problems_of(R"({"a": [{"x": 1}, {"x": 1, "y": 2, "x": 3}], "a": 1})", "p.json") ==
+        std::vector<std::string>{"a[1].x: given twice in one object (only one value may stand)",
+                                 "a: given twice in one object (only one value may stand)"});
   CHECK_THROWS_AS(parse_project("{"), ProjectError);
 }
 

@@ -34,12 +34,7 @@ using nlohmann::json;
 
 double dem_timestep(const project::CfdDem& c) {
   if (c.coupling.dem_timestep) return *c.coupling.dem_timestep;
-  // A fifth of the Rayleigh time of the smallest grain.
-  const auto& g = c.grains;
-  const double shear = g.youngs_modulus / (2.0 * (1.0 + g.poisson_ratio));
-  const double rayleigh = std::numbers::pi * 0.5 * g.diameter_min * std::sqrt(g.density / shear) /
-                          (0.1631 * g.poisson_ratio + 0.8766);
-  return 0.2 * rayleigh;
+  return 0.2 * project::rayleigh_time(c.grains);  // a fifth of the smallest grain's
 }
 
 int coupling_interval(const project::CfdDem& c, double dt, bool flowing) {
@@ -56,9 +51,6 @@ int coupling_interval(const project::CfdDem& c, double dt, bool flowing) {
 }
 
 void check_cfd_dem_resources(const project::CfdDem& c) {
-  // Peak memory per grain in LAMMPS with granular history and our held
-  // forces, rounded up; per fluid cell with the sparse system.
-  constexpr double bytes_per_grain = 4000.0, bytes_per_cell = 2000.0;
   const double memory = static_cast<double>(sysconf(_SC_PHYS_PAGES)) * static_cast<double>(sysconf(_SC_PAGE_SIZE));
   const double grains = static_cast<double>(dem::requested_grains(c));
   const double limit = c.max_grains.value_or(0.5 * memory / bytes_per_grain);
@@ -68,7 +60,8 @@ void check_cfd_dem_resources(const project::CfdDem& c) {
                                              c.max_grains ? "max_grains" : "half this machine's memory")});
   const double cells = static_cast<double>(c.fluid.cells[0]) * c.fluid.cells[1] * c.fluid.cells[2];
   if (cells * bytes_per_cell > 0.25 * memory)
-    throw project::ProjectError({fmt::format("fluid.cell_size: {:.0f} cells exceed a quarter of this machine's memory; use larger cells", cells)});
+    throw project::ProjectError({fmt::format("{}: {:.0f} cells exceed a quarter of this machine's memory; use {}", c.fluid.cells_given ? "fluid.cells" : "fluid.cell_size",
+                                             cells, c.fluid.cells_given ? "fewer cells" : "larger cells")});
 }
 
 namespace {

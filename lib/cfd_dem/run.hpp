@@ -13,6 +13,9 @@ double dem_timestep(const project::CfdDem& c);
 // DEM steps per fluid update: project's, else from the Stokes relaxation
 // time and the time the flow takes to carry a grain a tenth of its size.
 int coupling_interval(const project::CfdDem& c, double dt, bool flowing);
+// Peak memory per grain in LAMMPS with granular history and our held
+// forces, rounded up; per fluid cell with the sparse system.
+inline constexpr double bytes_per_grain = 4000.0, bytes_per_cell = 2000.0;
 // Throws project::ProjectError when the grains or the grid would not fit.
 void check_cfd_dem_resources(const project::CfdDem& c);
 

@@ -2,7 +2,9 @@
 
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <cstdlib>
+#include <fstream>
 #include <mpi.h>
 #include <stdexcept>
 // The API's MPI form and its integer sizes as this build was compiled
@@ -11,6 +13,28 @@
 #include <lammps/library.h>
 
 namespace frostwall::dem {
+
+namespace {
+
+// LAMMPS as Debian builds it (no C++ exceptions: lammps_config_has_exceptions
+// is 0) ends the process on an input error: exit(1) after writing "ERROR: ..."
+// to its log. The open session's log is remembered, and at such an exit its
+// ERROR line goes to stderr as the run's one line. (An error LAMMPS finds on
+// one rank only calls MPI_Abort, which runs no exit handler.)
+std::string open_log;
+int open_rank = 0;
+
+void report_lammps_exit() {
+  if (open_log.empty() || open_rank != 0) return;
+  std::ifstream in(open_log);
+  std::string error;
+  for (std::string line; std::getline(in, line);)
+    if (line.starts_with("ERROR")) error = line;
+  if (error.empty()) error = "stopped without an ERROR line";
+  std::fprintf(stderr, "frostwall: run failed: LAMMPS %s (%s)\n", error.c_str(), open_log.c_str());
+}
+
+}  // namespace
 
 void ensure_mpi() {
   int initialised = 0;
@@ -42,9 +66,12 @@ LammpsSession::LammpsSession(const std::string& log_file) {
   if (!lammps_) throw std::runtime_error("LAMMPS could not be started");
   MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
   MPI_Comm_size(MPI_COMM_WORLD, &ranks_);
+  static const bool registered = std::atexit(report_lammps_exit) == 0;
+  if (registered && !log_file.empty()) open_log = log_file, open_rank = rank_;
 }
 
 LammpsSession::~LammpsSession() {
+  open_log.clear();
   if (lammps_) lammps_close(lammps_);
 }
 

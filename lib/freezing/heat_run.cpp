@@ -305,12 +305,16 @@ void run_heat(const Project& p, Model& built, const project::RunOptions& options
   run.finish(loop);
 }
 
-void run(const Project& p, const project::RunOptions& options) {
+void check_run_inputs(const Project& p) {
   // The regional flow is held on the far field: an adiabatic one has none.
   if (p.groundwater && !p.domain.far_field_temperature)
     throw project::ProjectError({"groundwater: needs domain.far_field_temperature (the far field holds the regional flow "
                                  "and the temperature of the water that enters)"});
   io::check_output_directory(p.output.directory);
+}
+
+void run(const Project& p, const project::RunOptions& options) {
+  check_run_inputs(p);
   Model built = build_model(p);
   run_heat(p, built, options);
 }

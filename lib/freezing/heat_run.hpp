@@ -52,6 +52,10 @@ class RunExtension {
 void run_heat(const project::Project& p, Model& built, const project::RunOptions& options,
               RunExtension* extension = nullptr);
 
+// What the run refuses before any work beyond the loader's checks (a
+// regional flow without a far field, an output directory that cannot be
+// made); throws project::ProjectError.
+void check_run_inputs(const project::Project& p);
 // The freezing engine: a shaft section or a plain geometry, SPH heat
 // conduction with latent heat (and groundwater flow, brine pipes, the wall
 // check when the project has them).

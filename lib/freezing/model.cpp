@@ -90,7 +90,7 @@ void attach_brine(const project::Pipe& pipe, geometry::ShaftScene& scene, std::v
 }
 }  // namespace
 
-Model build_model(const project::Project& p) {
+Model build_cloud(const project::Project& p) {
   Model m;
   m.spacing = resolved_spacing(p);
   check_capacity(p, m.spacing);
@@ -141,6 +141,12 @@ Model build_model(const project::Project& p) {
   m.smoothing = m.particles().graded() ? sph::SmoothingLengths::of_particles(m.particles(), p.numerics.smoothing_ratio)
                                        : sph::SmoothingLengths(m.h);
   m.h = m.smoothing.smallest();
+  return m;
+}
+
+Model build_model(const project::Project& p) {
+  Model m = build_cloud(p);
+  const double spacing = m.spacing;
   m.kernel = sph::make_kernel<2>(p.numerics.kernel);
   thermal::PhaseChangeLaw law(p.soil);
   particles::PairWeights pairs =

@@ -60,5 +60,8 @@ using geometry::symmetry_wedge;
 // cannot run or the machine cannot hold (checked before any output is
 // written and before any particle is placed).
 Model build_model(const project::Project& p);
+// Only the particle cloud of build_model (scene, spacing, smoothing
+// lengths; no model or integrator), with the same checks.
+Model build_cloud(const project::Project& p);
 
 }  // namespace frostwall::freezing

@@ -1,10 +1,10 @@
 #include "io/output_directory.hpp"
 
 #include <cerrno>
-#include <cstring>
+#include <cstdio>
 #include <filesystem>
 #include <fmt/core.h>
-#include <unistd.h>
+#include <system_error>
 
 #include "project/project.hpp"
 
@@ -13,16 +13,28 @@ namespace frostwall::io {
 namespace fs = std::filesystem;
 
 void check_output_directory(const std::string& directory) {
-  // The nearest ancestor that exists must be a directory we may write in;
-  // nothing is created here (bad input writes nothing).
+  // Made and taken away again (bad input writes nothing): only making it
+  // proves it can be made (permissions pass for root where the file system
+  // refuses, as under /proc).
   std::error_code ec;
-  fs::path existing = fs::absolute(fs::path(directory).lexically_normal(), ec);
+  const fs::path target = fs::absolute(fs::path(directory).lexically_normal(), ec);
+  fs::path existing = target;
   while (!existing.empty() && !fs::exists(existing, ec) && existing.has_parent_path() && existing != existing.parent_path())
     existing = existing.parent_path();
-  const char* reason = nullptr;
-  if (!fs::is_directory(existing, ec)) reason = std::strerror(ENOTDIR);
-  else if (access(existing.c_str(), W_OK | X_OK) != 0) reason = std::strerror(errno);
-  if (reason) throw project::ProjectError({fmt::format("output.directory: cannot create '{}': {}", directory, reason)});
+  std::string reason;
+  if (!fs::is_directory(existing, ec)) reason = std::make_error_code(std::errc::not_a_directory).message();
+  else if (existing != target) {
+    fs::create_directories(target, ec);
+    if (ec) reason = ec.message();
+    for (fs::path made = target; made != existing && made.has_parent_path(); made = made.parent_path())
+      fs::remove(made, ec);  // what this check made (empty), deepest first
+  } else {
+    // It exists: a file written in it and removed proves it takes files.
+    const fs::path probe = target / ".frostwall-write-check";
+    if (FILE* f = std::fopen(probe.c_str(), "w")) std::fclose(f), fs::remove(probe, ec);
+    else reason = std::error_code(errno, std::generic_category()).message();
+  }
+  if (!reason.empty()) throw project::ProjectError({fmt::format("output.directory: cannot create '{}': {}", directory, reason)});
 }
 
 }  // namespace frostwall::io

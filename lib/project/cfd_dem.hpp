@@ -71,6 +71,7 @@ struct FluidSettings {
   double density = 1000.0;    // kg/m3
   double viscosity = 1e-3;    // dynamic, Pa s
   std::array<int, 3> cells{};  // grid cells per axis (from cell_size when given so)
+  bool cells_given = false;    // "cells" was written (else "cell_size"): what messages name
   double min_porosity = 0.3;   // voidage clamp of the coarse cells
 };
 
@@ -106,6 +107,15 @@ struct NeighbourSettings {
   int every = 1;                   // steps between the moved-half-the-skin checks
   std::optional<double> bin_size;  // m (nullopt: LAMMPS' half the cutoff)
 };
+
+// The Rayleigh time of the smallest grain, s: pi R sqrt(rho / G) /
+// (0.1631 nu + 0.8766). The DEM step is a fraction of it.
+double rayleigh_time(const GrainSettings& g);
+// The largest DEM step accepted, as a fraction of the Rayleigh time: at
+// 0.5 LAMMPS loses grains (bench/README.md); the shipped cases use 0.3.
+inline constexpr double max_rayleigh_fraction = 0.4;
+// The smallest neighbour bin accepted, as a fraction of the smallest grain's diameter.
+inline constexpr double min_bin_fraction = 0.1;
 
 struct CfdDem;
 // The axis gravity runs along most (0, 1, 2), or -1 without gravity.

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <set>
 
 namespace frostwall::project::detail {
 namespace {
@@ -32,7 +33,81 @@ std::string suggestion(std::string_view key, std::initializer_list<std::string_v
   return best.empty() ? "" : " (did you mean '" + std::string(best) + "'?)";
 }
 
+// Walks the text as the parser reads it (nlohmann's SAX interface), keeping
+// the path of the value being read, to name a key given twice or a number
+// out of range.
+class PathWalker {
+ public:
+  PathWalker(std::string source, std::vector<std::string>& problems) : source_(std::move(source)), problems_(&problems) {}
+  bool null() { return value(); }
+  bool boolean(bool) { return value(); }
+  bool number_integer(Json::number_integer_t) { return value(); }
+  bool number_unsigned(Json::number_unsigned_t) { return value(); }
+  bool number_float(Json::number_float_t, const std::string&) { return value(); }
+  bool string(std::string&) { return value(); }
+  bool binary(Json::binary_t&) { return value(); }
+  bool start_object(std::size_t) { return frames_.push_back({true}), true; }
+  bool start_array(std::size_t) { return frames_.push_back({false}), true; }
+  bool end_object() { return frames_.pop_back(), value(); }
+  bool end_array() { return frames_.pop_back(), value(); }
+  bool key(std::string& k) {
+    Frame& f = frames_.back();
+    f.key = k;
+    if (!f.keys.insert(k).second) problems_->push_back(path() + ": given twice in one object (only one value may stand)");
+    return true;
+  }
+  bool parse_error(std::size_t, const std::string& token, const nlohmann::detail::exception& e) {
+    std::string message = e.what();
+    if (e.id == 406) {  // out_of_range: a number beyond a double
+      const std::string where = path();
+      problems_->push_back((where.empty() ? source_ : where) + ": the number " + token +
+                           " is out of range (beyond about 1.8e308)");
+      return false;
+    }
+    // Drop the library's "[json.exception.parse_error.101] " tag; keep line and column.
+    if (const auto tag_end = message.find("] "); message.starts_with("[json.exception") && tag_end != std::string::npos)
+      message.erase(0, tag_end + 2);
+    problems_->push_back(source_ + ": not valid JSON: " + message);
+    return false;
+  }
+
+ private:
+  struct Frame {
+    bool object = true;
+    std::string key;           // the key being read (objects)
+    std::size_t index = 0;     // the element being read (arrays)
+    std::set<std::string> keys;
+  };
+  bool value() {
+    if (!frames_.empty() && !frames_.back().object) ++frames_.back().index;
+    return true;
+  }
+  // The path of the value being read, as Node names it: "a.b[2].c".
+  std::string path() const {
+    std::string p;
+    for (const Frame& f : frames_)
+      p += f.object ? (p.empty() ? "" : ".") + f.key : "[" + std::to_string(f.index) + "]";
+    return p;
+  }
+  std::string source_;
+  std::vector<std::string>* problems_;
+  std::vector<Frame> frames_;
+};
+
 }  // namespace
+
+std::optional<Json> parse_document(const std::string& text, const std::string& source, std::vector<std::string>& problems) {
+  const std::size_t before = problems.size();
+  PathWalker walker(source, problems);
+  Json::sax_parse(text, &walker);
+  if (problems.size() > before) return std::nullopt;
+  try {
+    return Json::parse(text);
+  } catch (const Json::exception& e) {  // the walk above found what the parser would
+    problems.push_back(source + ": not valid JSON: " + e.what());
+    return std::nullopt;
+  }
+}
 
 Node Node::operator[](std::string_view key) const {
   const Json* child = nullptr;

@@ -76,3 +76,13 @@ class Node {
 };
 
 }  // namespace frostwall::project::detail
+
+namespace frostwall::project::detail {
+
+// Parses a JSON text; nullopt after adding one problem line: the parser's
+// own message (prefixed "<source>: not valid JSON: "), a number out of the
+// range of a double named by its path, or each key given twice in one
+// object named by its path (the parser would silently keep the last).
+std::optional<Json> parse_document(const std::string& text, const std::string& source, std::vector<std::string>& problems);
+
+}  // namespace frostwall::project::detail

@@ -1,6 +1,7 @@
 // Temperature schedules and soils (load_basics.hpp).
 #include "project/load_basics.hpp"
 
+#include <algorithm>
 #include <array>
 #include <fmt/format.h>
 
@@ -99,6 +100,25 @@ Soil detail::read_soil(const Node& n, std::vector<std::string>& warnings) {
         "{}: {} J/kg is more than pure water's 334 kJ/kg; probably a slipped decimal point ({}?)",
         n["latent_heat"].path(), soil.latent_heat, soil.latent_heat / 10));
   return soil;
+}
+
+void detail::check_rectangle_spacing(const Node& spacing_node, const Rectangle& r, std::optional<double> spacing) {
+  if (!spacing || !(r.width > 0) || !(r.height > 0)) return;
+  constexpr double rows_across_narrow = 2.0, rows_along_long = 5.0;
+  const bool wide = r.width >= r.height;
+  const double narrow = std::min(r.width, r.height), longer = std::max(r.width, r.height);
+  const bool long_binds = longer / rows_along_long <= narrow / rows_across_narrow;
+  const double rows = long_binds ? rows_along_long : rows_across_narrow, side = long_binds ? longer : narrow;
+  const char* key = (long_binds == wide) ? "geometry.width" : "geometry.height";
+  if (*spacing > side / rows * (1 + 1e-9))
+    spacing_node.problem(fmt::format("{} m leaves fewer than {} particle rows across {} ({} m); use {} m or less", *spacing,
+                                     rows, key, side, side / rows));
+}
+
+void detail::check_shaft_spacing(const Node& spacing_node, const ShaftSection& s, std::optional<double> spacing) {
+  if (spacing && s.pipe.diameter > 0 && *spacing > s.pipe.diameter * (1 + 1e-9))
+    spacing_node.problem(fmt::format("{} m is larger than the pipe diameter ({} m): a pipe needs particles across it; use {} m "
+                                     "or less", *spacing, s.pipe.diameter, s.pipe.diameter));
 }
 
 }  // namespace frostwall::project

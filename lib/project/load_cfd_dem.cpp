@@ -37,6 +37,11 @@ double FlowSettings::velocity_at(double t) const {
   return darcy_velocity.back().second;
 }
 
+double rayleigh_time(const GrainSettings& g) {
+  const double shear = g.youngs_modulus / (2.0 * (1.0 + g.poisson_ratio));
+  return std::numbers::pi * 0.5 * g.diameter_min * std::sqrt(g.density / shear) / (0.1631 * g.poisson_ratio + 0.8766);
+}
+
 namespace detail {
 
 namespace {
@@ -158,6 +163,12 @@ FluidSettings read_fluid(const Node& n, const CfdDemBox& box) {
   const Node size = n["cell_size"], cells = n["cells"];
   if (size.present() == cells.present()) size.problem(R"(give either "cell_size" (m) or "cells" [nx, ny, nz])");
   if (const auto h = size.positive()) {
+    for (int k = 0; k < 3; ++k)
+      if (const double side = box.high[k] - box.low[k]; side > 0 && *h > side * (1 + 1e-9)) {
+        size.problem(fmt::format("{} m is larger than the box along {} ({} m); use at most {} m", *h, "xyz"[k], side,
+                                 std::min({box.high[0] - box.low[0], box.high[1] - box.low[1], box.high[2] - box.low[2]})));
+        return f;
+      }
     for (int k = 0; k < 3; ++k) {
       const double n_k = (box.high[k] - box.low[k]) / *h;
       if (n_k > 1e6) { size.problem(fmt::format("{} m gives more than a million cells along {}", *h, "xyz"[k])); return f; }
@@ -170,6 +181,7 @@ FluidSettings read_fluid(const Node& n, const CfdDemBox& box) {
     for (std::size_t k = 0; ok && k < 3; ++k) ok = j[k].is_number_integer() && j[k].get<long>() >= 1 && j[k].get<long>() <= 1000000;
     if (!ok) cells.problem("must be [nx, ny, nz], whole numbers from 1 to 1e6, got " + cells.shown());
     else for (int k = 0; k < 3; ++k) f.cells[k] = j[k].get<int>();
+    f.cells_given = true;
   }
   if (const auto e = n["min_porosity"].number()) {
     if (*e <= 0.0 || *e >= 1.0) n["min_porosity"].problem(fmt::format("must be above 0 and below 1, got {}", *e));
@@ -228,6 +240,43 @@ std::vector<std::string> read_forces(const Node& n) {
     forces.push_back(*name);
   }
   return forces;
+}
+
+// x to two significant digits, rounded down (or up): a suggested limit that passes.
+double two_digits(double x, bool up) {
+  const double unit = std::pow(10.0, std::floor(std::log10(x)) - 1);
+  return (up ? std::ceil(x / unit - 1e-9) : std::floor(x / unit + 1e-9)) * unit;
+}
+
+bool positive_number(const Node& n) { return n.present() && n.json().is_number() && n.json().get<double>() > 0; }
+
+// What LAMMPS and the coupling cannot run, though every value is in range
+// alone: grains that float, a cavity out of the box, a DEM step past half
+// the Rayleigh time ("Lost atoms"), bins far below a grain ("Too many
+// neighbor bins").
+void check_cfd_dem_limits(const Node& root, const CfdDem& c) {
+  const Node grains = root["grains"], density = grains["density"];
+  if (positive_number(density) && positive_number(root["fluid"]["density"]) && !(c.grains.density > c.fluid.density))
+    density.problem(fmt::format("{} kg/m3 is not above fluid.density ({} kg/m3): the grains would not settle", c.grains.density,
+                                c.fluid.density));
+  if (const Node cav = root["cavity"]; c.cavity && c.cavity->radius > 0 && inside(c.cavity->centre, c.box.low, c.box.high))
+    for (int k = 0; k < 3; ++k)
+      if (c.cavity->centre[k] - c.cavity->radius < c.box.low[k] || c.cavity->centre[k] + c.cavity->radius > c.box.high[k]) {
+        const auto& x = c.cavity->centre;
+        cav["radius"].problem(fmt::format("the cavity ({} m round ({}, {}, {})) does not fit in the box ({} to {} m along {})",
+                                          c.cavity->radius, x[0], x[1], x[2], c.box.low[k], c.box.high[k], "xyz"[k]));
+        break;
+      }
+  if (!(c.grains.diameter_min > 0) || !positive_number(density)) return;
+  const double rayleigh = rayleigh_time(c.grains);
+  if (const auto dt = c.coupling.dem_timestep; dt && *dt > max_rayleigh_fraction * rayleigh * (1 + 1e-9))
+    root["coupling"]["dem_timestep"].problem(fmt::format(
+        "{:.3g} s is more than {} of the smallest grain's Rayleigh time ({:.3g} s): the grains would fly apart; use {:.2g} s or less",
+        *dt, max_rayleigh_fraction, rayleigh, two_digits(max_rayleigh_fraction * rayleigh, false)));
+  if (const auto bin = c.neighbour.bin_size; bin && *bin < min_bin_fraction * c.grains.diameter_min)
+    root["neighbour"]["bin_size"].problem(fmt::format(
+        "{:.3g} m is less than {} of the smallest grain's diameter ({} m): far too many bins; use {:.2g} m or more", *bin,
+        min_bin_fraction, c.grains.diameter_min, two_digits(min_bin_fraction * c.grains.diameter_min, true)));
 }
 
 }  // namespace
@@ -298,6 +347,7 @@ void read_cfd_dem(const Node& root, Project& project) {
     for (const auto& [face, key] : {std::pair{c.flow->inflow, "inflow"}, std::pair{c.flow->outflow, "outflow"}})
       if (c.box.periodic[static_cast<int>(face) / 2])
         root["flow"][key].problem(fmt::format("'{}' lies on a periodic axis of box.periodic", face_name(face)));
+  check_cfd_dem_limits(root, c);
   project.time = read_time(root["time"].required());
   project.output = read_output(root["output"].required());
   project.cfd_dem = std::move(c);

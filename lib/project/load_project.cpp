@@ -79,7 +79,6 @@ std::string join(const std::vector<std::string>& lines) {
 
 }  // namespace
 
-
 namespace {
 
 // A boundary is "adiabatic" or {"temperature": T}: returns the node of T, or
@@ -320,6 +319,9 @@ Project read_project(const Node& root) {
 
   project.time = read_time(root["time"].required());
   project.numerics = read_numerics(root["numerics"], shaft);
+  if (const auto* r = std::get_if<Rectangle>(&project.geometry))
+    detail::check_rectangle_spacing(root["numerics"]["spacing"], *r, project.numerics.spacing);
+  else detail::check_shaft_spacing(root["numerics"]["spacing"], std::get<ShaftSection>(project.geometry), project.numerics.spacing);
   if (const double s = project.numerics.smoothing_ratio; s < 1.0 || s > 2.5)
     project.warnings.push_back(fmt::format(
         "numerics.smoothing_ratio: {} is outside the usual 1.0..2.5 (too few neighbours below, "
@@ -358,20 +360,12 @@ ProjectError::ProjectError(std::vector<std::string> problems)
 Project parse_project(const std::string& json_text) { return parse_project(json_text, "project"); }
 
 Project parse_project(const std::string& json_text, const std::string& source) {
-  Json document;
-  try {
-    document = Json::parse(json_text);
-  } catch (const Json::exception& e) {
-    // parse_error, or out_of_range for a number like 1e400. Drop the library's
-    // "[json.exception.parse_error.101] " tag; keep line and column.
-    std::string message = e.what();
-    if (const auto tag_end = message.find("] "); message.starts_with("[json.exception") && tag_end != std::string::npos)
-      message.erase(0, tag_end + 2);
-    throw ProjectError({source + ": not valid JSON: " + message});
-  }
+  std::vector<std::string> problems;
+  const auto parsed = detail::parse_document(json_text, source, problems);
+  if (!parsed) throw ProjectError(std::move(problems));
+  const Json& document = *parsed;
   if (!document.is_object()) throw ProjectError({source + ": must be a JSON object, got " + document.type_name()});
 
-  std::vector<std::string> problems;
   Project project;
   try {
     project = read_project(Node(&document, "", problems));

@@ -6,6 +6,7 @@
 #include "io/atomic_file.hpp"
 #include "report/report.hpp"
 #include "io/output_directory.hpp"
+#include "run/check_project.hpp"
 
 namespace frostwall::study {
 
@@ -35,20 +36,42 @@ std::size_t governing_layer(const std::vector<json>& summaries) {
   return governing;
 }
 
-StudyRun run_layers(const project::Project& p, const std::string& project_text, const StudyOptions& options) {
-  io::check_output_directory(p.output.directory);
+std::vector<json> layer_documents(const project::Project& p, const std::string& project_text) {
   const fs::path out = p.output.directory;
   const json base = json::parse(project_text);
-  Study study;
-  study.name = p.name;
-  study.output_directory = out;
+  std::vector<json> docs;
   for (const auto& layer : p.layers) {
     json doc = base;
     doc.merge_patch(json::parse(layer.patch));
     doc["output"]["directory"] = (out / layer_folder(layer.name)).string();
     project::parse_project(doc.dump(), "layers: " + layer.name);  // every layer loads before any runs
-    study.variants.push_back({layer_folder(layer.name), layer.name, doc});
+    docs.push_back(std::move(doc));
   }
+  return docs;
+}
+
+std::vector<std::string> check_layers(const project::Project& p, const std::string& project_text) {
+  io::check_output_directory(p.output.directory);
+  const auto docs = layer_documents(p, project_text);
+  std::vector<std::string> lines{fmt::format("layers: {} cross-sections, one run each", docs.size())};
+  for (std::size_t k = 0; k < docs.size(); ++k)
+    for (const auto& line : run::check_project(project::parse_project(docs[k].dump(), "layers: " + p.layers[k].name)))
+      lines.push_back(p.layers[k].name + ": " + line);
+  return lines;
+}
+
+StudyRun run_layers(const project::Project& p, const std::string& project_text, const StudyOptions& options) {
+  io::check_output_directory(p.output.directory);
+  const fs::path out = p.output.directory;
+  Study study;
+  study.name = p.name;
+  study.output_directory = out;
+  const auto docs = layer_documents(p, project_text);
+  // Made before the layers run side by side: each layer's own check makes
+  // and removes only its folder, never this shared parent under another.
+  fs::create_directories(out);
+  for (std::size_t k = 0; k < docs.size(); ++k)
+    study.variants.push_back({layer_folder(p.layers[k].name), p.layers[k].name, docs[k]});
   StudyRun run = run_study(study, options);
   std::vector<json> summaries;
   for (std::size_t k = 0; k < run.variants.size(); ++k) {

@@ -26,6 +26,13 @@ std::size_t governing_layer(const std::vector<nlohmann::json>& summaries);
 // own, patched). Throws project::ProjectError for a layer project that
 // does not load (before anything runs) and std::runtime_error when a
 // layer's run fails.
+// Each layer's project file: the base patched by the layer, its output in
+// <output>/<layer>; throws project::ProjectError for one that does not load.
+std::vector<nlohmann::json> layer_documents(const project::Project& project, const std::string& project_text);
+// `frostwall check` on a layered project: every layer checked as
+// run::check_project checks one cross-section; its lines prefixed by the layer's name.
+std::vector<std::string> check_layers(const project::Project& project, const std::string& project_text);
+
 StudyRun run_layers(const project::Project& project, const std::string& project_text, const StudyOptions& options);
 
 }  // namespace frostwall::study

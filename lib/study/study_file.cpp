@@ -197,14 +197,10 @@ std::optional<double> last_snapshot_day(const json& base) {
 }  // namespace
 
 Study parse_study(const std::string& text, const fs::path& directory, const std::string& source) {
-  json document;
-  try {
-    document = json::parse(text);
-  } catch (const json::exception& e) {
-    std::string message = e.what();
-    if (const auto at = message.find("] "); at != std::string::npos) message = message.substr(at + 2);
-    throw StudyError({source + ": not valid JSON: " + message});
-  }
+  std::vector<std::string> parse_problems;
+  const auto parsed = project::detail::parse_document(text, source, parse_problems);
+  if (!parsed) throw StudyError(parse_problems);
+  const json& document = *parsed;
   if (!document.is_object()) throw StudyError({source + ": must be a JSON object, got " + std::string(document.type_name())});
 
   std::vector<std::string> problems;

@@ -1,0 +1,143 @@
+#include "run/check_project.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fmt/format.h>
+
+#include "cfd_dem/run.hpp"
+#include "dem/packing.hpp"
+#include "freezing/capacity.hpp"
+#include "freezing/heat_run.hpp"
+#include "freezing/model.hpp"
+#include "io/output_directory.hpp"
+#include "run/run_project.hpp"
+#include "thermal/phase_change.hpp"
+
+namespace frostwall::run {
+
+namespace {
+
+// Run-time rates, all measured on the shared 2-core machine of
+// bench/README.md (2 threads; 1 rank for the grains). A work unit per
+// engine, and the rate at which the benchmark case got through it:
+//
+// SPH, explicit steps: particle-steps per second. Paper mode on the single
+// ring, 21 738 particles x 110 472 steps in 46.5 s ("Paper mode against
+// default mode").
+constexpr double sph_explicit_rate = 21738.0 * 110472.0 / 46.5;
+// Adaptive steps (rkl2, implicit) take as many steps as the physics asks,
+// each of about sqrt(step / explicit step) stages: the work is counted as
+// particles x sqrt(simulated time / explicit step), and the rates are
+// calibrated on one case each (particles x sqrt(its explicit steps, as
+// `frostwall check` prints them) over its wall time):
+// - SPH: the single ring's default mode, 6 707 particles to 120 d (1.74e5
+//   explicit steps) in 1.47 s ("Paper mode against default mode");
+// - PD heat with mechanics: the PD paper's plate, 10 000 particles to 400 s
+//   (5.79e4 explicit steps) in 8.4 s ("PD: the plate at the paper's resolution");
+// - PD with pores (frost damage, crack cascades): the mortar plate at 1 um,
+//   90 000 particles to 0.12 s (5.49e5 explicit steps) in 343.7 s ("Frost
+//   damage: the mortar plate").
+const double sph_adaptive_rate = 6707.0 * std::sqrt(1.74e5) / 1.47;
+const double pd_plate_rate = 10000.0 * std::sqrt(5.79e4) / 8.4;
+const double pd_frost_rate = 90000.0 * std::sqrt(5.49e5) / 343.7;
+// CFD-DEM: grain-steps per second on one core, the paper's leak case at
+// full size (settled packing, 116 000 grains; "CFD-DEM: the paper's leak
+// case at full size": 2.5e6 per core on 2 ranks).
+constexpr double dem_rate = 2.5e6;
+
+std::string duration(double seconds) {
+  if (seconds < 90) return fmt::format("{:.2g} s", seconds);
+  if (seconds < 5400) return fmt::format("{:.2g} min", seconds / 60);
+  return fmt::format("{:.2g} h", seconds / 3600);
+}
+
+std::string estimate(double seconds, const std::string& basis) {
+  return fmt::format("run time: about {} (an estimate for a 2-core machine like bench/README.md's, {})", duration(seconds), basis);
+}
+
+std::string unit_of_time(const project::TimeSettings& t) {
+  return t.unit == project::TimeUnit::d ? "d" : (t.unit == project::TimeUnit::h ? "h" : "s");
+}
+
+std::vector<std::string> check_heat(const project::Project& p, Engine engine) {
+  freezing::check_run_inputs(p);
+  const freezing::Model m = freezing::build_cloud(p);  // the cloud only: the pairs and solver are the run's set-up
+  const auto& P = m.particles();
+  const bool pd = p.numerics.method == project::Method::pd;
+  const auto* rect = std::get_if<project::Rectangle>(&p.geometry);
+  std::vector<std::string> lines;
+  std::string what = pd ? "PD heat conduction" : "SPH heat conduction";
+  if (engine == Engine::mechanics && p.mechanics) what += " with PD mechanics";
+  if (rect && !rect->pores.empty()) what += " and frost in pores";
+  lines.push_back("engine: " + what + (rect ? " on a rectangle" : " on a shaft section"));
+  lines.push_back(fmt::format("particles: {} free, {} on boundaries", P.n_free, P.size() - P.n_free));
+  lines.push_back(fmt::format("memory: at most about {:.0f} MB", static_cast<double>(P.n_free) * freezing::bytes_per_particle / 1e6));
+  std::string spacing = fmt::format("spacing: {:.4g} m", m.spacing);
+  if (P.graded()) spacing += " (finest; graded coarser away from the pipes and fronts)";
+  if (m.rectangle && (m.rectangle->spacing[0] != m.spacing || m.rectangle->spacing[1] != m.spacing))
+    spacing += fmt::format(" asked; {:.6g} m along x and {:.6g} m along y to fit the rectangle", m.rectangle->spacing[0], m.rectangle->spacing[1]);
+  lines.push_back(spacing);
+  double diffusivity = thermal::PhaseChangeLaw(p.soil).max_diffusivity();
+  if (rect && !rect->pores.empty()) diffusivity = std::max(diffusivity, thermal::pore_water_law(p.pore_fluid).max_diffusivity());
+  const double dt = p.numerics.beta * m.h * m.h / diffusivity;  // as freezing::build_model's explicit step
+  const double explicit_steps = p.time.end / dt;
+  const double t_unit = p.time.unit_seconds();
+  const std::string end = fmt::format("{:g} {}", p.time.end / t_unit, unit_of_time(p.time));
+  const double work = static_cast<double>(P.n_free) * std::sqrt(explicit_steps);
+  if (p.numerics.integrator == project::IntegratorKind::explicit_euler) {
+    lines.push_back(fmt::format("time step: {:.3g} s (explicit), {:.0f} steps to {}", dt, std::ceil(explicit_steps), end));
+    lines.push_back(estimate(static_cast<double>(P.n_free) * std::ceil(explicit_steps) / sph_explicit_rate,
+                             "at the explicit single ring's particle-steps per second"));
+    return lines;
+  }
+  const char* integrator = p.numerics.integrator == project::IntegratorKind::rkl2 ? "rkl2" : "implicit";
+  lines.push_back(fmt::format("time step: adaptive ({}) to {}; the explicit limit would be {:.3g} s ({:.3g} steps)", integrator,
+                              end, dt, explicit_steps));
+  if (p.numerics.integrator == project::IntegratorKind::implicit)  // no rate measured to scale from
+    return lines.push_back("run time: not estimated for implicit steps (bench/README.md: the shipped seepage reference, "
+                           "implicit under flow, ran more than an hour on a 2-core machine)"), lines;
+  if (!pd) return lines.push_back(estimate(work / sph_adaptive_rate, "scaled from the single ring's default run")), lines;
+  if (rect && !rect->pores.empty())
+    return lines.push_back(estimate(work / pd_frost_rate, "scaled from the mortar plate's; crack cascades can take far longer")), lines;
+  lines.push_back(estimate(work / pd_plate_rate, "scaled from the PD paper's plate"));
+  return lines;
+}
+
+std::vector<std::string> check_grains(const project::Project& p) {
+  const auto& c = *p.cfd_dem;
+  cfd_dem::check_cfd_dem_resources(c);
+  const auto grains = dem::initial_grains(c);  // refuses a count that does not fit
+  io::check_output_directory(p.output.directory);
+  const double dt = cfd_dem::dem_timestep(c);
+  const int interval = cfd_dem::coupling_interval(c, dt, true);
+  const long steps = std::max(1L, std::lround(p.time.end / dt));
+  const long settle_steps = std::lround(c.grains.settle_time / dt);
+  const double cells = static_cast<double>(c.fluid.cells[0]) * c.fluid.cells[1] * c.fluid.cells[2];
+  const bool cached = settle_steps > 0 && std::filesystem::exists(dem::packing_cache_file(c, dt, cfd_dem::coupling_interval(c, dt, false)));
+  std::vector<std::string> lines;
+  lines.push_back("engine: CFD-DEM (grains in LAMMPS, pore water on a coarse grid)");
+  lines.push_back(fmt::format("grains: {} of {:.3g} to {:.3g} m", grains.size(), c.grains.diameter_min, c.grains.diameter_max));
+  lines.push_back(fmt::format("fluid cells: {} x {} x {}", c.fluid.cells[0], c.fluid.cells[1], c.fluid.cells[2]));
+  lines.push_back(fmt::format("memory: about {:.0f} MB",
+                              (static_cast<double>(grains.size()) * cfd_dem::bytes_per_grain + cells * cfd_dem::bytes_per_cell) / 1e6));
+  lines.push_back(fmt::format("time step: {:.3g} s ({:.2f} of the smallest grain's Rayleigh time), fluid every {} steps", dt,
+                              dt / project::rayleigh_time(c.grains), interval));
+  std::string settle = settle_steps == 0 ? "no settling" : fmt::format("{} settling steps ({:g} s){}", settle_steps, c.grains.settle_time,
+                                                                      cached ? ", skipped: the settled packing is cached" : "");
+  lines.push_back(fmt::format("steps: {} to {:g} s, {}", steps, p.time.end, settle));
+  const double grain_steps = static_cast<double>(grains.size()) * static_cast<double>(steps + (cached ? 0 : settle_steps));
+  lines.push_back(estimate(grain_steps / dem_rate, "on one rank at the leak case's grain-steps per second; about half with mpirun -np 2"));
+  return lines;
+}
+
+}  // namespace
+
+std::vector<std::string> check_project(const project::Project& p) {
+  if (!p.layers.empty())
+    throw project::ProjectError({"layers: a layered project is checked layer by layer (frostwall check does it)"});
+  const Engine engine = engine_of(p);
+  return engine == Engine::cfd_dem ? check_grains(p) : check_heat(p, engine);
+}
+
+}  // namespace frostwall::run
