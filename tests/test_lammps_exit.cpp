@@ -16,8 +16,9 @@
 
 namespace fs = std::filesystem;
 
-// Hidden: run by the test below in a process of its own, since LAMMPS ends it.
-TEST_CASE("a LAMMPS session given a bad command", "[.lammps_exit]") {
+// Hidden, and out of ctest ([child]): run by the test below in a process of
+// its own, since LAMMPS ends it.
+TEST_CASE("a LAMMPS session given a bad command", "[.][child][lammps_exit]") {
   const char* log = std::getenv("FROSTWALL_TEST_LAMMPS_LOG");
   REQUIRE(log);
   frostwall::dem::LammpsSession lammps(log);
@@ -31,7 +32,7 @@ TEST_CASE("a LAMMPS error ends the process with status 1 and LAMMPS' own ERROR l
   const fs::path self = fs::read_symlink("/proc/self/exe");
   const fs::path log = dir.path / "lammps.log";
   const std::string command = "FROSTWALL_TEST_LAMMPS_LOG='" + log.string() + "' timeout 30 '" + self.string() +
-                              "' '[.lammps_exit]' >'" + (dir.path / "out.txt").string() + "' 2>'" + (dir.path / "err.txt").string() + "'";
+                              "' '[lammps_exit]' >'" + (dir.path / "out.txt").string() + "' 2>'" + (dir.path / "err.txt").string() + "'";
   const int status = std::system(command.c_str());
   REQUIRE(WIFEXITED(status));
   CHECK(WEXITSTATUS(status) == 1);

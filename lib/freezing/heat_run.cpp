@@ -198,7 +198,8 @@ void HeatRun::write_snapshot(const thermal::ThermalModel& m, double t, const std
   pvd_.push_back({t / unit_, stem + ".vtu"});
   if (write_ring_) {
     const std::string ring_file = "ring" + stem.substr(5) + ".vtu";
-    io::write_vtu(out_ / ring_file, frames_->ring(frame, built_.particles().mirrors, built_.shaft->far_field_radius));
+    io::write_vtu(out_ / ring_file, frames_->ring(frame, built_.particles().mirrors, built_.shaft->far_field_radius,
+                                                  results_->ring_triangles()));
     ring_pvd_.push_back({t / unit_, ring_file});
   }
 }

@@ -71,24 +71,6 @@ io::PointCloudFrame full_ring(const io::PointCloudFrame& wedge, const std::vecto
 
 namespace {
 
-// The cloud's triangles; in a shaft section, those with a corner off the
-// boundaries (flag < 0): the three-corner boundary ones lie across a pipe
-// disc, where there is no ground.
-std::vector<geometry::Triangle> ground_triangles(const std::vector<particles::Vec<2>>& points,
-                                                 const std::vector<double>& limit, const std::vector<double>& boundary,
-                                                 bool shaft) {
-  auto all = geometry::cloud_triangles(points, limit);
-  if (shaft)
-    std::erase_if(all, [&](const geometry::Triangle& t) {
-      return boundary[t[0]] >= 0 && boundary[t[1]] >= 0 && boundary[t[2]] >= 0;
-    });
-  // Smallest corner first (the orientation kept), triangles in the order of
-  // their corners: neighbouring numbers compress to a fraction of the size.
-  for (auto& t : all) std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
-  std::sort(all.begin(), all.end());
-  return all;
-}
-
 const std::vector<double>& field(const io::PointCloudFrame& frame, const std::string& name) {
   for (const auto& [n, values] : frame.fields)
     if (n == name) return values;
@@ -104,15 +86,34 @@ std::vector<particles::Vec<2>> plane_points(const io::PointCloudFrame& frame) {
 
 }  // namespace
 
+std::vector<geometry::Triangle> ground_triangles(const std::vector<particles::Vec<2>>& points,
+                                                 const std::vector<double>& limit, const std::vector<double>& boundary,
+                                                 bool shaft) {
+  auto all = geometry::cloud_triangles(points, limit);
+  if (shaft)
+    std::erase_if(all, [&](const geometry::Triangle& t) {
+      return boundary[t[0]] >= 0 && boundary[t[1]] >= 0 && boundary[t[2]] >= 0;
+    });
+  // Smallest corner first (the orientation kept), triangles in the order of
+  // their corners: neighbouring numbers compress to a fraction of the size.
+  for (auto& t : all) std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
+  std::sort(all.begin(), all.end());
+  return all;
+}
+
+bool shown_in_files(const particles::ParticleSet<2>& P, std::size_t i, const std::optional<std::array<double, 2>>& plate) {
+  if (P.is_free(i)) return true;
+  if (P.reflection[i].allFinite()) return false;  // a layer beyond a wall
+  const auto& x = P.position[i];
+  const double tol = 1e-9 * P.spacing;
+  return !plate || (x[0] >= -tol && x[0] <= (*plate)[0] + tol && x[1] >= -tol && x[1] <= (*plate)[1] + tol);
+}
+
 SnapshotFrames::SnapshotFrames(const particles::ParticleSet<2>& P, io::Labels labels,
                                std::optional<std::array<double, 2>> plate)
     : labels_(std::move(labels)), shaft_(!plate) {
-  auto on_plate = [&](const particles::Vec<2>& x) {
-    const double tol = 1e-9 * P.spacing;
-    return !plate || (x[0] >= -tol && x[0] <= (*plate)[0] + tol && x[1] >= -tol && x[1] <= (*plate)[1] + tol);
-  };
   for (std::size_t i = 0; i < P.size(); ++i)
-    if (P.is_free(i) || (!P.reflection[i].allFinite() && on_plate(P.position[i]))) {
+    if (shown_in_files(P, i, plate)) {
       shown_.push_back(i);
       limit_.push_back(3.0 * P.spacing_of(i));
     }
@@ -130,8 +131,13 @@ io::PointCloudFrame SnapshotFrames::wedge(const io::PointCloudFrame& all) const 
 }
 
 io::PointCloudFrame SnapshotFrames::ring(const io::PointCloudFrame& wedge,
-                                         const std::vector<particles::MirrorPlane<2>>& mirrors, double length_scale) {
+                                         const std::vector<particles::MirrorPlane<2>>& mirrors, double length_scale,
+                                         const std::vector<geometry::Triangle>* triangles) {
   auto ring = full_ring(wedge, mirrors, length_scale);
+  if (triangles) {
+    ring.triangles = *triangles;
+    return ring;
+  }
   if (ring_triangles_.empty()) {
     std::vector<double> limit;
     limit.reserve(ring.points.size());

@@ -33,6 +33,19 @@ io::PointCloudFrame frame_of(const particles::ParticleSet<2>& particles, const t
 io::PointCloudFrame full_ring(const io::PointCloudFrame& wedge, const std::vector<particles::MirrorPlane<2>>& mirrors,
                               double length_scale);
 
+// Whether particle i is written to the snapshot files (below): free, or
+// fixed with the boundary's own temperature and on the plate (plate: its
+// width and height; nullopt: a shaft section).
+bool shown_in_files(const particles::ParticleSet<2>& P, std::size_t i, const std::optional<std::array<double, 2>>& plate);
+
+// The cloud's triangles at most `limit` (per point) long; in a shaft
+// section (shaft true) without those whose three corners all hold a
+// boundary temperature (boundary >= 0): they lie across a pipe disc.
+// Sorted (smallest corner first, then by corners) so files compress well.
+std::vector<geometry::Triangle> ground_triangles(const std::vector<particles::Vec<2>>& points,
+                                                 const std::vector<double>& limit, const std::vector<double>& boundary,
+                                                 bool shaft);
+
 // What a user sees of the particles in the snapshot files:
 //  - the free particles and the fixed ones that hold a boundary's own
 //    temperature on the domain (on a pipe wall, a cooled face, a point-model
@@ -55,9 +68,11 @@ class SnapshotFrames {
   // The shown particles of a frame of every particle (frame_of plus what
   // the run added to it), with their triangles.
   io::PointCloudFrame wedge(const io::PointCloudFrame& all) const;
-  // The whole ring of a wedge() frame; triangulated at the first call.
+  // The whole ring of a wedge() frame; triangulated at the first call,
+  // unless the triangles of the same ring points are given (the shaft
+  // results' front curves have them).
   io::PointCloudFrame ring(const io::PointCloudFrame& wedge, const std::vector<particles::MirrorPlane<2>>& mirrors,
-                           double length_scale);
+                           double length_scale, const std::vector<geometry::Triangle>* triangles = nullptr);
   std::size_t shown() const { return shown_.size(); }
 
  private:

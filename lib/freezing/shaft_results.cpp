@@ -15,6 +15,7 @@
 #include "freezing/design_check.hpp"
 #include "sph/laplacian.hpp"
 #include "particles/symmetry_group.hpp"
+#include "freezing/output_frames.hpp"
 #include "design/wall_strength.hpp"
 
 namespace frostwall::freezing {
@@ -85,10 +86,11 @@ ShaftResults::ShaftResults(const project::Project& p, const Model& m)
   curve_source_.insert(curve_source_.end(), images.source.begin(), images.source.end());
   if (p.output.full_ring && !P.mirrors.empty())
     for (const auto& g : group)
-      for (std::uint32_t i = 0; i < P.size(); ++i) {
-        ring_points_.push_back(g(P.position[i]));
-        ring_source_.push_back(i);
-      }
+      for (std::uint32_t i = 0; i < P.size(); ++i)
+        if (shown_in_files(P, i, std::nullopt)) {
+          ring_points_.push_back(g(P.position[i]));
+          ring_source_.push_back(i);
+        }
 }
 
 ShaftResults::~ShaftResults() = default;
@@ -159,7 +161,14 @@ void ShaftResults::snapshot(double t, const thermal::ThermalModel& model, const 
   json entry = {{"day", t / day}, {"file", file}};
   if (!ring_points_.empty()) {
     const std::string ring_file = "interface_ring" + stem.substr(5) + ".vtp";
-    if (!ring_mesh_) ring_mesh_ = mesh_of(ring_points_, ring_source_);
+    if (!ring_mesh_) {
+      // The ring files' triangles (output_frames.hpp): three local spacings,
+      // none across a pipe disc.
+      std::vector<double> limit(ring_source_.size()), boundary(ring_source_.size());
+      for (std::size_t k = 0; k < limit.size(); ++k)
+        limit[k] = 3.0 * P.spacing_of(ring_source_[k]), boundary[k] = P.boundary[ring_source_[k]];
+      ring_mesh_ = std::make_unique<post::IsolineMesh>(ring_points_, ground_triangles(ring_points_, limit, boundary, true));
+    }
     io::write_vtp(out / ring_file, ring_mesh_->isolines(values(ring_source_), 0.5), io::file_labels(project_));
     entry["full_ring_file"] = ring_file;
   }

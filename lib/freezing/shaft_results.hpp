@@ -38,6 +38,10 @@ class ShaftResults {
                 const std::string& stem);                         // at each snapshot day
   // Summary entries (wall, design, monitoring, interface) and the CSV files.
   nlohmann::json finish(const std::filesystem::path& out) const;
+  // The whole ring's triangles (once a snapshot has built them; else
+  // nullptr), over the copies of the particles the snapshot files show, in
+  // the order of the ring files: shared with them.
+  const std::vector<geometry::Triangle>* ring_triangles() const { return ring_mesh_ ? &ring_mesh_->triangles() : nullptr; }
 
  private:
   nlohmann::json wall_entries(std::optional<DesignMet>& met) const;
@@ -71,9 +75,10 @@ class ShaftResults {
   std::vector<std::vector<double>> profiles_OA_, profiles_OB_;  // per snapshot
   std::vector<std::vector<std::pair<double, double>>> sensor_readings_;
   nlohmann::json interface_ = nlohmann::json::array();
-  // Points for the front curves: the particles and their copies around the
-  // ring (full ring) or their mirror images (wedge), with the source index.
-  // Triangulated at the first snapshot, reused for every later one.
+  // Points for the front curves: the particles and their mirror images
+  // (wedge), and the copies of the particles the files show around the ring
+  // (full ring), with the source index. Triangulated at the first snapshot,
+  // reused for every later one.
   std::vector<particles::Vec<2>> curve_points_, ring_points_;
   std::vector<std::uint32_t> curve_source_, ring_source_;
   std::unique_ptr<post::IsolineMesh> curve_mesh_, ring_mesh_;

@@ -66,6 +66,9 @@ class IsolineMesh {
  public:
   IsolineMesh(std::vector<particles::Vec<2>> points, double max_edge = std::numeric_limits<double>::infinity());
   IsolineMesh(std::vector<particles::Vec<2>> points, const std::vector<double>& max_edge_at);
+  // Triangles given (counterclockwise, indices into points).
+  IsolineMesh(std::vector<particles::Vec<2>> points, std::vector<geometry::Triangle> triangles)
+      : points_(std::move(points)), triangles_(std::move(triangles)) {}
   std::vector<Polyline> isolines(const std::vector<double>& values, double level) const;
   std::size_t size() const { return points_.size(); }
   const std::vector<particles::Vec<2>>& points() const { return points_; }
