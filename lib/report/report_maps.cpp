@@ -29,6 +29,31 @@ WedgeSymmetry wedge_of(const json& summary) {
   return w;
 }
 
+// The square a shaft's maps show: the whole ring, or a window around OA's
+// pipe wide enough for the neighbouring pipes and the wall; `where` says
+// which, for the note.
+MapWindow map_window(bool full_ring, double ring, double inner, const std::vector<geometry::Pipe2>& pipes,
+                     double domain_radius, std::string& where) {
+  MapWindow window;
+  window.pixels = 400;
+  if (full_ring || ring == 0.0) {
+    double R = ring > 0 ? std::max(1.4 * ring, ring + 1.5) : 0.5 * domain_radius;
+    if (domain_radius > 0) R = std::min(R, domain_radius);
+    window.x0 = window.y0 = -R;
+    window.size = 2 * R;
+    where = "the whole ring";
+    return window;
+  }
+  const auto planes = geometry::interface_planes(pipes);
+  const double mid = 0.5 * (ring + inner), gap = std::abs(planes.OB - planes.OA) * 2 * planes.ring_radius;
+  const double half = std::max(1.5 * gap, 0.5 * (ring - inner) + 1.5);
+  window.x0 = mid * std::cos(planes.OA) - half;
+  window.y0 = mid * std::sin(planes.OA) - half;
+  window.size = 2 * half;
+  where = "a window around the pipe on OA";
+  return window;
+}
+
 }  // namespace
 
 void add_maps(const RunRecord& run, json& view) {
@@ -84,8 +109,8 @@ void add_maps(const RunRecord& run, json& view) {
     for (std::size_t i = 0; i < f.temperature.size(); ++i)
       if (f.boundary[i] < 0) lo = std::min(lo, f.temperature[i]), hi = std::max(hi, f.temperature[i]);
   }
-  // The pipe walls' own temperatures too (fixed particles beyond a wall hold
-  // extrapolated values, which would stretch the scale).
+  // The pipe walls' own temperatures too (the files hold no particle beyond
+  // a wall, whose mirrored values would stretch the scale).
   if (run.project)
     if (const auto* s = std::get_if<project::ShaftSection>(&run.project->geometry))
       for (const auto& [t, T] : s->pipe.temperature.points)
@@ -94,25 +119,8 @@ void add_maps(const RunRecord& run, json& view) {
   const ColourScale colours(ends.lo, ends.hi, run.freezing_point());
 
   const bool full_ring = run.project ? run.project->output.full_ring : fs::exists(run.dir / "ring.pvd");
-  MapWindow window;
-  window.pixels = 400;
   std::string where;
-  if (full_ring || ring == 0.0) {
-    double R = ring > 0 ? std::max(1.4 * ring, ring + 1.5) : 0.5 * overlay.domain_radius;
-    if (overlay.domain_radius > 0) R = std::min(R, overlay.domain_radius);
-    window.x0 = window.y0 = -R;
-    window.size = 2 * R;
-    where = "the whole ring";
-  } else {
-    // Around OA's pipe, wide enough for the neighbouring pipes and the wall.
-    const auto planes = geometry::interface_planes(pipes);
-    const double mid = 0.5 * (ring + inner), gap = std::abs(planes.OB - planes.OA) * 2 * planes.ring_radius;
-    const double half = std::max(1.5 * gap, 0.5 * (ring - inner) + 1.5);
-    window.x0 = mid * std::cos(planes.OA) - half;
-    window.y0 = mid * std::sin(planes.OA) - half;
-    window.size = 2 * half;
-    where = "a window around the pipe on OA";
-  }
+  const MapWindow window = map_window(full_ring, ring, inner, pipes, overlay.domain_radius, where);
   const FieldMap map(fields.front(), symmetry, kernel, h, spacing, window, overlay.domain_radius);
 
   const auto& fronts = run.summary.value("interface", json::array());
