@@ -69,6 +69,22 @@ std::string text_of(const std::string& file) {
   return text.str();
 }
 
+// A command's work: bad input ends it with its lines and status 2, any other
+// failure with one line and status 1 ("frostwall: <verb> failed: ...").
+template <class Work>
+int exit_status(const char* verb, Work&& work) {
+  try {
+    work();
+  } catch (const frostwall::project::ProjectError& e) {
+    for (const auto& line : e.problems()) std::cerr << line << "\n";
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "frostwall: " << verb << " failed: " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}
+
 int run_command(const std::string& file) {
   using namespace frostwall;
   const auto loaded = load_or_report(file);
@@ -78,7 +94,7 @@ int run_command(const std::string& file) {
   options.project_text = text_of(file);  // the text as given, recorded beside the results (project.json)
   options.progress = progress_printer(p.time);
   options.note = [](const std::string& s) { std::cerr << s << "\n"; };
-  try {
+  const int status = exit_status("run", [&] {
     if (!p.layers.empty()) {
       // One cross-section per layer, side by side as a study runs its variants.
       study::StudyOptions layered;
@@ -90,13 +106,8 @@ int run_command(const std::string& file) {
       // The report, from the files the run just wrote (one rank writes them).
       if (p.output.report && first_rank()) report::write_report(p.output.directory);
     }
-  } catch (const project::ProjectError& e) {
-    for (const auto& line : e.problems()) std::cerr << line << "\n";
-    return 2;
-  } catch (const std::exception& e) {
-    std::cerr << "frostwall: run failed: " << e.what() << "\n";
-    return 1;
-  }
+  });
+  if (status != 0) return status;
   // Under mpirun every rank runs this; one says so.
   if (first_rank())
     std::cerr << "wrote " << p.output.directory << "\n";
@@ -109,18 +120,11 @@ int check_command(const std::string& file) {
   using namespace frostwall;
   const auto p = load_or_report(file);
   if (!p) return 2;
-  try {
+  return exit_status("check", [&] {
     const auto lines = p->layers.empty() ? run::check_project(*p) : study::check_layers(*p, text_of(file));
     std::cout << file << ": can run (output into " << p->output.directory << ")\n";
     for (const auto& line : lines) std::cout << "  " << line << "\n";
-  } catch (const project::ProjectError& e) {
-    for (const auto& line : e.problems()) std::cerr << line << "\n";
-    return 2;
-  } catch (const std::exception& e) {
-    std::cerr << "frostwall: check failed: " << e.what() << "\n";
-    return 1;
-  }
-  return 0;
+  });
 }
 
 // Rebuilds report.html from the files of an output directory.
@@ -129,13 +133,7 @@ int report_command(const std::string& dir) {
     std::cerr << dir << ": no summary.json here; give the output directory of a frostwall run\n";
     return 2;
   }
-  try {
-    std::cerr << "wrote " << frostwall::report::write_report(dir).string() << "\n";
-  } catch (const std::exception& e) {
-    std::cerr << "frostwall: report failed: " << e.what() << "\n";
-    return 1;
-  }
-  return 0;
+  return exit_status("report", [&] { std::cerr << "wrote " << frostwall::report::write_report(dir).string() << "\n"; });
 }
 
 // Runs every variant of a study file, then writes study.html and study.csv.

@@ -6,6 +6,7 @@
 #include <memory>
 #include <omp.h>
 #include <optional>
+#include <stdexcept>
 
 #include "freezing/brine_log.hpp"
 #include "freezing/closure_tracker.hpp"
@@ -198,8 +199,13 @@ void HeatRun::write_snapshot(const thermal::ThermalModel& m, double t, const std
   pvd_.push_back({t / unit_, stem + ".vtu"});
   if (write_ring_) {
     const std::string ring_file = "ring" + stem.substr(5) + ".vtu";
-    io::write_vtu(out_ / ring_file, frames_->ring(frame, built_.particles().mirrors, built_.shaft->far_field_radius,
-                                                  results_->ring_triangles()));
+    // The ring's triangles: the shaft results built them at this snapshot
+    // for the ring's front curves, over the same copies of the particles.
+    const auto* triangles = results_->ring_triangles();
+    if (!triangles) throw std::logic_error("ring files without the ring's triangles");
+    auto ring = full_ring(frame, built_.particles().mirrors, built_.shaft->far_field_radius);
+    ring.triangles = *triangles;
+    io::write_vtu(out_ / ring_file, ring);
     ring_pvd_.push_back({t / unit_, ring_file});
   }
 }
@@ -277,7 +283,7 @@ nlohmann::ordered_json HeatRun::summary(const thermal::TimeLoopResult& loop) con
         {"coarsest_spacing", P.coarsest_spacing()},
         {"smoothing_length", built_.h},
         {"kernel", built_.kernel->name()},
-        {"time_unit", time_unit_name(p_.time.unit)}}},
+        {"time_unit", p_.time.unit_name()}}},
       {"warnings", warnings},
   });
   if (const auto* implicit = thermal::find_integrator<thermal::BackwardEuler>(built_.integrator.get())) {

@@ -69,23 +69,6 @@ io::PointCloudFrame full_ring(const io::PointCloudFrame& wedge, const std::vecto
   return ring;
 }
 
-namespace {
-
-const std::vector<double>& field(const io::PointCloudFrame& frame, const std::string& name) {
-  for (const auto& [n, values] : frame.fields)
-    if (n == name) return values;
-  throw std::logic_error("snapshot frame without " + name);
-}
-
-std::vector<particles::Vec<2>> plane_points(const io::PointCloudFrame& frame) {
-  std::vector<particles::Vec<2>> points;
-  points.reserve(frame.points.size());
-  for (const auto& x : frame.points) points.emplace_back(x[0], x[1]);
-  return points;
-}
-
-}  // namespace
-
 std::vector<geometry::Triangle> ground_triangles(const std::vector<particles::Vec<2>>& points,
                                                  const std::vector<double>& limit, const std::vector<double>& boundary,
                                                  bool shaft) {
@@ -111,16 +94,14 @@ bool shown_in_files(const particles::ParticleSet<2>& P, std::size_t i, const std
 
 SnapshotFrames::SnapshotFrames(const particles::ParticleSet<2>& P, io::Labels labels,
                                std::optional<std::array<double, 2>> plate)
-    : labels_(std::move(labels)), shaft_(!plate) {
+    : labels_(std::move(labels)) {
   for (std::size_t i = 0; i < P.size(); ++i)
-    if (shown_in_files(P, i, plate)) {
-      shown_.push_back(i);
-      limit_.push_back(3.0 * P.spacing_of(i));
-    }
+    if (shown_in_files(P, i, plate)) shown_.push_back(i);
   std::vector<particles::Vec<2>> points;
-  std::vector<double> boundary;
-  for (std::size_t i : shown_) points.push_back(P.position[i]), boundary.push_back(P.boundary[i]);
-  wedge_triangles_ = ground_triangles(points, limit_, boundary, shaft_);
+  std::vector<double> limit, boundary;
+  for (std::size_t i : shown_)
+    points.push_back(P.position[i]), limit.push_back(3.0 * P.spacing_of(i)), boundary.push_back(P.boundary[i]);
+  wedge_triangles_ = ground_triangles(points, limit, boundary, !plate);
 }
 
 io::PointCloudFrame SnapshotFrames::wedge(const io::PointCloudFrame& all) const {
@@ -130,33 +111,10 @@ io::PointCloudFrame SnapshotFrames::wedge(const io::PointCloudFrame& all) const 
   return frame;
 }
 
-io::PointCloudFrame SnapshotFrames::ring(const io::PointCloudFrame& wedge,
-                                         const std::vector<particles::MirrorPlane<2>>& mirrors, double length_scale,
-                                         const std::vector<geometry::Triangle>* triangles) {
-  auto ring = full_ring(wedge, mirrors, length_scale);
-  if (triangles) {
-    ring.triangles = *triangles;
-    return ring;
-  }
-  if (ring_triangles_.empty()) {
-    std::vector<double> limit;
-    limit.reserve(ring.points.size());
-    while (limit.size() < ring.points.size()) limit.insert(limit.end(), limit_.begin(), limit_.end());
-    ring_triangles_ = ground_triangles(plane_points(ring), limit, field(ring, "boundary"), shaft_);
-  }
-  ring.triangles = ring_triangles_;
-  return ring;
-}
-
 const char* integrator_name(project::IntegratorKind k) {
   if (k == project::IntegratorKind::rkl2) return "rkl2";
   return k == project::IntegratorKind::implicit ? "implicit" : "explicit";
 }
 
-const char* time_unit_name(project::TimeUnit u) {
-  project::TimeSettings t;
-  t.unit = u;
-  return t.unit_name();
-}
 
 }  // namespace frostwall::freezing

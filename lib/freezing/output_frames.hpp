@@ -57,7 +57,9 @@ std::vector<geometry::Triangle> ground_triangles(const std::vector<particles::Ve
 //    corners all hold a boundary temperature: across a pipe disc), so
 //    ParaView contours the field with no preparation. Built once: the
 //    particles do not move.
-// The whole ring gets the same for all copies of the wedge.
+// The whole ring's files get the triangles of all copies of the wedge's
+// shown particles, which the shaft results build for the ring's front
+// curves (ShaftResults::ring_triangles).
 class SnapshotFrames {
  public:
   // labels: the field data of every file (project, time unit, version);
@@ -68,22 +70,14 @@ class SnapshotFrames {
   // The shown particles of a frame of every particle (frame_of plus what
   // the run added to it), with their triangles.
   io::PointCloudFrame wedge(const io::PointCloudFrame& all) const;
-  // The whole ring of a wedge() frame; triangulated at the first call,
-  // unless the triangles of the same ring points are given (the shaft
-  // results' front curves have them).
-  io::PointCloudFrame ring(const io::PointCloudFrame& wedge, const std::vector<particles::MirrorPlane<2>>& mirrors,
-                           double length_scale, const std::vector<geometry::Triangle>* triangles = nullptr);
   std::size_t shown() const { return shown_.size(); }
 
  private:
   std::vector<std::size_t> shown_;
-  std::vector<double> limit_;  // per shown particle: three local spacings
-  bool shaft_ = false;
   io::Labels labels_;
-  std::vector<geometry::Triangle> wedge_triangles_, ring_triangles_;
+  std::vector<geometry::Triangle> wedge_triangles_;
 };
 
 const char* integrator_name(project::IntegratorKind k);
-const char* time_unit_name(project::TimeUnit u);
 
 }  // namespace frostwall::freezing
