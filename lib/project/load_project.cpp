@@ -139,12 +139,13 @@ Numerics read_numerics(const Node& n, bool shaft) {
   };
   if (!n.object({"spacing", "kernel", "smoothing_ratio", "integrator", "beta", "step_change", "conductivity_mean",
                  "laplacian", "symmetry", "placement", "coarsening", "growth", "band_coarsening", "band_width",
-                 "max_particles", "method", "horizon"})) {
+                 "max_particles", "method", "horizon", "error_estimate"})) {
     default_step_change();
     return numerics;
   }
   numerics.spacing = n["spacing"].positive();
   numerics.max_particles = n["max_particles"].positive();
+  numerics.error_estimate = n["error_estimate"].boolean().value_or(numerics.error_estimate);
   numerics.kernel = n["kernel"].choice<KernelKind>(
       "kernel", {{"wendland_c2", KernelKind::wendland_c2}, {"cubic_spline", KernelKind::cubic_spline}})
                         .value_or(numerics.kernel);

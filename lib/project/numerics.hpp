@@ -52,6 +52,11 @@ struct Numerics {
   // Refuse a project estimated to need more free particles than this
   // (nullopt: from the machine's memory, freezing/capacity.hpp).
   std::optional<double> max_particles;
+  // true: after the run, three coarser runs (1.35, 1.5 and 1.65 times the
+  // spacing) estimate the discretisation error of every headline number
+  // (lib/run/error_estimate.hpp). Off by default (it costs about 1.4 runs);
+  // `frostwall study` turns it on unless the project says false.
+  bool error_estimate = false;
 };
 
 }  // namespace frostwall::project

@@ -70,4 +70,13 @@ std::string tick_label(double v, int decimals) {
   return text;
 }
 
+std::string with_error(double value, double error, int decimals) {
+  if (!std::isfinite(value)) return "–";
+  if (!std::isfinite(error) || !(error > 0.0)) return tick_label(value, decimals);
+  const int first = static_cast<int>(std::floor(std::log10(error)));
+  const bool starts_with_one = error / std::pow(10.0, first) < 2.0;
+  const int places = std::clamp(-first + (starts_with_one ? 1 : 0), 0, 6);
+  return tick_label(value, places) + " ± " + tick_label(error, places);
+}
+
 }  // namespace frostwall::report

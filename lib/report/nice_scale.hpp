@@ -28,5 +28,9 @@ NiceScale ticks_within(double lo, double hi, int target = 5);
 
 // v with `decimals` digits after the point, "−" for minus, "0" not "−0".
 std::string tick_label(double v, int decimals);
+// A number with its estimated error, "13.88 ± 0.16": the error to one
+// significant digit (two when it starts with 1), the value to the same
+// place; without a positive error, tick_label(value, decimals).
+std::string with_error(double value, double error, int decimals);
 
 }  // namespace frostwall::report

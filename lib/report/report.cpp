@@ -31,6 +31,11 @@ double smoothing_length(const json& run_facts) {
 }
 std::string number(const json& v, int decimals) { return v.is_number() ? number(v.get<double>(), decimals) : "–"; }
 
+std::string with_error(const json& value, const json& error, int decimals) {
+  if (!value.is_number() || !error.is_number()) return number(value, decimals);
+  return report::with_error(value.get<double>(), error.get<double>(), decimals);
+}
+
 namespace {
 
 json row(const std::string& label, const std::string& value) { return {{"label", label}, {"value", value}}; }
@@ -59,29 +64,33 @@ void add_headline(const RunRecord& run, json& view) {
   const auto& closure = s.value("closure_time_days", json());
   const auto& wall = s["wall"];
   const std::string end_day = wall.empty() ? "the end" : number(wall.back()["day"], 0);
-  view["closure_value"] = closure.is_number() ? "day " + number(closure, 1) : "not closed";
+  view["closure_value"] = closure.is_number() ? "day " + with_error(closure, s.value("closure_time_days_error", json()), 1) : "not closed";
   view["closure_note"] = closure.is_number() ? "a fully frozen ring cuts the shaft off from the far field"
                                               : "not within the run (to day " + end_day + ")";
   // Older summaries have no front_contact_days: the card then says so.
   const auto& contact = s.value("front_contact_days", json());
-  view["contact_value"] = contact.is_number() ? "day " + number(contact, 1) : (s.contains("front_contact_days") ? "not yet" : "–");
+  view["contact_value"] = contact.is_number() ? "day " + with_error(contact, s.value("front_contact_days_error", json()), 1)
+                                              : (s.contains("front_contact_days") ? "not yet" : "–");
   view["contact_note"] = contact.is_number() ? "half-frozen columns touch; not yet a closed wall"
                                              : "the columns have not touched within the run";
   json rows = json::array();
   for (const auto& w : wall)
     rows.push_back({{"day", fmt::format("{:g}", w["day"].get<double>())},
-                    {"min_thickness", number(w["min_thickness"], 2)},
-                    {"OA_thickness", number(w["OA"]["thickness"], 2)},
+                    {"min_thickness", with_error(w["min_thickness"], w.value("min_thickness_error", json()), 2)},
+                    {"OA_thickness", with_error(w["OA"]["thickness"], w["OA"].value("thickness_error", json()), 2)},
                     {"OA_extent", extent(w["OA"])},
-                    {"OB_thickness", number(w["OB"]["thickness"], 2)},
+                    {"OB_thickness", with_error(w["OB"]["thickness"], w["OB"].value("thickness_error", json()), 2)},
                     {"OB_extent", extent(w["OB"])},
-                    {"mean_temperature", number(w["mean_temperature_OB"], 2)}});
+                    {"mean_temperature", with_error(w["mean_temperature_OB"], w.value("mean_temperature_OB_error", json()), 2)}});
   view["snapshots"] = rows;
   if (!wall.empty()) {
     view["last_day"] = fmt::format("{:g}", wall.back()["day"].get<double>());
-    view["last_min_thickness"] = number(wall.back()["min_thickness"], 2) + " m";
+    const auto& last = wall.back();
+    view["last_min_thickness"] = with_error(last["min_thickness"], last.value("min_thickness_error", json()), 2) + " m";
     view["last_mean_temperature"] =
-        wall.back()["mean_temperature_OB"].is_number() ? number(wall.back()["mean_temperature_OB"], 1) + " °C" : "–";
+        last["mean_temperature_OB"].is_number()
+            ? with_error(last["mean_temperature_OB"], last.value("mean_temperature_OB_error", json()), 1) + " °C"
+            : "–";
   }
   const auto& d = s.value("design", json::object());
   const bool has_target = d.value("required_thickness", json()).is_number() || d.value("max_mean_temperature", json()).is_number();
@@ -104,7 +113,7 @@ void add_headline(const RunRecord& run, json& view) {
   const bool pass = d.value("pass", false);
   view["design_value"] = pass ? "PASS" : "FAIL";
   view["design_class"] = pass ? "pass" : "fail";
-  view["design_note"] = pass ? targets + ", met on day " + number(d["reached_day"], 1)
+  view["design_note"] = pass ? targets + ", met on day " + with_error(d["reached_day"], d.value("reached_day_error", json()), 1)
                              : targets + ": not met by day " + end_day;
 }
 
@@ -137,7 +146,18 @@ void add_run_facts(const RunRecord& run, json& view) {
     const double stored = hb.value("stored_change", 0.0);
     rows.push_back(row("heat balance", fmt::format("stored change {} MJ/m, from the boundaries {} MJ/m", number(stored / 1e6, 2),
                                                    number(from / 1e6, 2))));
+  }  if (const auto& e = run.summary.value("error_estimate", json::object()); e.contains("status")) {
+    if (e["status"] == "done") {
+      std::string spacings;
+      for (const auto& h : e.value("spacings", json::array())) spacings += (spacings.empty() ? "" : ", ") + metres(h.get<double>(), 4);
+      rows.push_back(row("error estimate", fmt::format("from three coarser runs (spacings {} m; {} s): the ± values are the "
+                                                       "discretisation's error only, not the soil data's or the model's",
+                                                       spacings, number(e.value("coarse_seconds", json()), 1))));
+    } else {
+      rows.push_back(row("error estimate", "none: " + e.value("reason", std::string())));
+    }
   }
+
   view["run_rows"] = rows;
 
   // Links to the other files of the run, as they are in the directory.

@@ -46,6 +46,26 @@ std::vector<double> ring_radii(const RunRecord& run) {
   return radii;
 }
 
+// The estimated error of the thinnest ray and of OB at the snapshot days
+// (numerics.error_estimate), as bars on the thickness chart.
+void add_thickness_error_bars(const json& summary, Chart& chart) {
+  const struct { const char* parent; const char* key; const char* colour; } bars[] = {
+      {nullptr, "min_thickness", "#000000"}, {"OB", "thickness", "#E69F00"}};
+  for (const auto& b : bars) {
+    ErrorBars s;
+    s.colour = b.colour;
+    for (const auto& w : summary.value("wall", json::array())) {
+      const json& entry = b.parent ? w.value(b.parent, json::object()) : w;
+      const json& e = entry.value(std::string(b.key) + "_error", json());
+      if (!e.is_number() || !entry.value(b.key, json()).is_number()) continue;
+      s.x.push_back(w["day"].get<double>());
+      s.y.push_back(entry[b.key].get<double>());
+      s.error.push_back(e.get<double>());
+    }
+    if (!s.x.empty()) chart.error_bars.push_back(std::move(s));
+  }
+}
+
 void wall_charts(const RunRecord& run, json& charts) {
   if (!fs::exists(run.dir / "wall.csv")) return;
   const CsvTable wall = read_csv(run.dir / "wall.csv");
@@ -69,12 +89,14 @@ void wall_charts(const RunRecord& run, json& charts) {
   };
   for (const auto& l : lines)
     if (const auto* c = wall.column(l.column)) t.series.push_back({l.label, *day, *c, l.colour, l.dashed, false, l.width});
+  add_thickness_error_bars(run.summary, t);
   t.guides = closure_guide;
   if (const auto req = design_value(run.summary, "required_thickness"))
     t.guides.push_back({false, *req, fmt::format("required {} m", number(*req, 2))});
   charts.push_back(figure("thickness", "Wall thickness", t,
                           "Longest frozen stretch (liquid fraction at most 0.5) containing a ring of pipes, on OA, "
-                          "on OB and on the thinnest ray of the wedge. Until the columns touch only the ground around "
+                          "on OB and on the thinnest ray of the wedge; where the run estimated its error, bars at the "
+                          "snapshot days show it (plus or minus). Until the columns touch only the ground around "
                           "the pipes is frozen, so OB and the thinnest ray read zero; closure (the line) follows when "
                           "a fully frozen path has formed."));
 

@@ -29,6 +29,13 @@ std::string length(double metres) {
   return metres < 1e-3 ? micrometres(metres) : fmt::format("{:.3g} mm", 1e3 * metres);
 }
 
+// The front's estimated error at time t (summary "front_error"), or null.
+json front_error(const json& summary, double t) {
+  for (const auto& row : summary.value("front_error", json::array()))
+    if (row.is_array() && row.size() == 2 && row[0].is_number() && row[0].get<double>() == t) return row[1];
+  return json();
+}
+
 const json& run_facts(const RunRecord& run) {
   static const json none = json::object();
   const auto it = run.summary.find("run");
@@ -42,7 +49,9 @@ void sensor_temperature_cards(const RunRecord& run, const std::string& unit, jso
   for (const auto& [name, series] : m.items()) {
     if (!series.is_array() || series.empty() || shown == 4) continue;
     const auto& last = series.back();
-    cards.push_back(card("Sensor " + name + ", " + at(value_of(last[0]), unit), number(last[1], 2) + " °C", "temperature"));
+    const auto& errors = run.summary.value("monitoring_error", json::object()).value(name, json::array());
+    const json error = !errors.empty() && errors.back().size() > 1 ? errors.back()[1] : json();
+    cards.push_back(card("Sensor " + name + ", " + at(value_of(last[0]), unit), with_error(last[1], error, 2) + " °C", "temperature"));
     ++shown;
   }
 }
@@ -157,7 +166,8 @@ void add_plain_headline(const RunRecord& run, json& view) {
   if (!run.mechanics() && !run.frost()) {
     // The front only where one formed: a plate that never freezes has none.
     if (const auto front = last_front(run.summary))
-      cards.push_back(card("Frozen front, " + at(front->first, unit), number(front->second, 4) + " m",
+      cards.push_back(card("Frozen front, " + at(front->first, unit),
+                           with_error(front->second, front_error(run.summary, front->first), 4) + " m",
                            "from the cooled face (liquid fraction 0.5)"));
     sensor_temperature_cards(run, unit, cards);
   }

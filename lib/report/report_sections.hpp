@@ -43,6 +43,10 @@ std::string number(double v, int decimals);
 // digits below (a plate of micrometres).
 std::string metres(double v, int decimals);
 std::string number(const nlohmann::json& v, int decimals);
+// A number with its estimated error, "13.88 ± 0.16": the error to one
+// significant digit (two when it starts with 1), the value to the same
+// place. Without an error (null, missing): number(value, decimals).
+std::string with_error(const nlohmann::json& value, const nlohmann::json& error, int decimals);
 
 // The method that ran, for the title block ("Peridynamics: ...").
 std::string method_line(const RunRecord& run);

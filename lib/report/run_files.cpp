@@ -23,52 +23,11 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::vector<std::string> split(const std::string& line) {
-  std::vector<std::string> cells;
-  std::string cell;
-  std::istringstream in(line);
-  while (std::getline(in, cell, ',')) cells.push_back(cell);
-  if (!line.empty() && line.back() == ',') cells.emplace_back();
-  return cells;
-}
-
 void require_file(const fs::path& file) {
   if (!fs::is_regular_file(file)) throw std::runtime_error("missing output file " + file.string());
 }
 
 }  // namespace
-
-const std::vector<double>* CsvTable::column(const std::string& name) const {
-  for (std::size_t c = 0; c < header.size(); ++c)
-    if (header[c] == name) return &columns[c];
-  return nullptr;
-}
-
-CsvTable read_csv(const fs::path& file) {
-  std::ifstream in(file);
-  if (!in) throw std::runtime_error("cannot read " + file.string());
-  CsvTable t;
-  std::string line;
-  if (!std::getline(in, line)) return t;
-  t.header = split(line);
-  t.columns.resize(t.header.size());
-  while (std::getline(in, line)) {
-    if (line.empty()) continue;
-    const auto cells = split(line);
-    for (std::size_t c = 0; c < t.header.size(); ++c) {
-      double v = std::numeric_limits<double>::quiet_NaN();
-      if (c < cells.size() && !cells[c].empty()) {
-        try {
-          v = std::stod(cells[c]);
-        } catch (const std::exception&) {
-          throw std::runtime_error(file.string() + ": not a number: '" + cells[c] + "'");
-        }
-      }
-      t.columns[c].push_back(v);
-    }
-  }
-  return t;
-}
 
 namespace {
 // The particles of a .vtu snapshot (throws when there are none).

@@ -11,20 +11,15 @@
 #include <string>
 #include <vector>
 
+#include "io/csv_table.hpp"
 #include "post/isoline.hpp"
 #include "particles/vec.hpp"
 
 namespace frostwall::report {
 
-// A CSV file of numbers with one header row; an empty cell is NaN.
-struct CsvTable {
-  std::vector<std::string> header;
-  std::vector<std::vector<double>> columns;  // columns[c][row]
-  std::size_t rows() const { return columns.empty() ? 0 : columns.front().size(); }
-  // nullptr when there is no such column.
-  const std::vector<double>* column(const std::string& name) const;
-};
-CsvTable read_csv(const std::filesystem::path& file);
+// The run's CSV tables (io/csv_table.hpp).
+using io::CsvTable;
+using io::read_csv;
 
 // The particles of a field_XXXX.vtu snapshot and the fields the report uses.
 struct FieldSnapshot {

@@ -149,6 +149,21 @@ std::vector<std::string> sequential_colours(std::size_t n) {
   return out;
 }
 
+// Vertical error bars with caps, one per point with a finite error.
+template <class Px, class Py>
+std::string error_bars_svg(const ErrorBars& b, Px&& px, Py&& py) {
+  std::string o;
+  const std::size_t n = std::min({b.x.size(), b.y.size(), b.error.size()});
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!std::isfinite(b.x[i]) || !std::isfinite(b.y[i]) || !std::isfinite(b.error[i])) continue;
+    const double x = px(b.x[i]), lo = py(b.y[i] - b.error[i]), hi = py(b.y[i] + b.error[i]);
+    o += fmt::format(R"(<path class="error-bar" stroke="{0}" stroke-width="1.2" fill="none" d="M{1},{2}V{3}M{4},{2}h7M{4},{3}h7"/>)"
+                     R"(<circle cx="{1}" cy="{5}" r="2.2" fill="{0}" stroke="none"/>)",
+                     b.colour, num(x), num(lo), num(hi), num(x - 3.5), num(py(b.y[i])));
+  }
+  return o;
+}
+
 std::string render_svg(const Chart& chart) {
   Range xr, yr;
   bool has_points = false;
@@ -157,6 +172,9 @@ std::string render_svg(const Chart& chart) {
     for (std::size_t i = 0; i < n; ++i)
       if (std::isfinite(s.x[i]) && std::isfinite(s.y[i])) xr.add(s.x[i]), yr.add(s.y[i]), has_points = true;
   }
+  for (const auto& b : chart.error_bars)
+    for (std::size_t i = 0; i < std::min({b.x.size(), b.y.size(), b.error.size()}); ++i)
+      if (std::isfinite(b.error[i])) xr.add(b.x[i]), yr.add(b.y[i] - b.error[i]), yr.add(b.y[i] + b.error[i]);
   for (double v : chart.x_include) xr.add(v);
   for (double v : chart.y_include) yr.add(v);
   for (const auto& g : chart.guides) (g.vertical ? xr : yr).add(g.value);
@@ -223,6 +241,7 @@ std::string render_svg(const Chart& chart) {
                            colour_of[k]);
     }
   }
+  for (const auto& b : chart.error_bars) o += error_bars_svg(b, px, py);
   o += "</g>\n";
   if (!has_points)
     o += fmt::format(R"(<text x="{}" y="{}" text-anchor="middle" fill="#777">{}</text>)", num(left + pw / 2),

@@ -18,6 +18,13 @@ struct Series {
   double width = 1.6;        // stroke width in px
 };
 
+// Error bars: y +- error at each x, with a dot at y and caps at the ends;
+// the axis reaches the ends.
+struct ErrorBars {
+  std::vector<double> x, y, error;
+  std::string colour = "#000000";
+};
+
 // A reference line across the plot: vertical at x = value, or horizontal at y = value.
 struct Guide {
   bool vertical = false;
@@ -30,6 +37,7 @@ struct Chart {
   std::string x_label, y_label; // with units, e.g. "time (d)"
   std::vector<Series> series;
   std::vector<Guide> guides;
+  std::vector<ErrorBars> error_bars;
   std::vector<double> x_include, y_include;  // values the axes must reach (e.g. 0)
   std::string empty_note = "no values";      // written across the plot when no series has a point
   int width = 540, height = 330;

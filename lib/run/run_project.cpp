@@ -3,6 +3,7 @@
 #include "cfd_dem/run.hpp"
 #include "freezing/heat_run.hpp"
 #include "mechanics/engine.hpp"
+#include "run/error_estimate.hpp"
 
 namespace frostwall::run {
 
@@ -11,14 +12,20 @@ Engine engine_of(const project::Project& p) {
   return mechanics::runs(p) ? Engine::mechanics : Engine::freezing;
 }
 
-void run_project(const project::Project& p, const RunOptions& options) {
-  if (!p.layers.empty())  // study::run_layers runs them, one project per layer
-    throw project::ProjectError({"layers: a layered project runs with `frostwall run`, one cross-section per layer"});
+void run_engine(const project::Project& p, const RunOptions& options) {
   switch (engine_of(p)) {
     case Engine::cfd_dem: return cfd_dem::run_cfd_dem(p, options);
     case Engine::mechanics: return mechanics::run(p, options);
     case Engine::freezing: return freezing::run(p, options);
   }
+}
+
+void run_project(const project::Project& p, const RunOptions& options) {
+  if (!p.layers.empty())  // study::run_layers runs them, one project per layer
+    throw project::ProjectError({"layers: a layered project runs with `frostwall run`, one cross-section per layer"});
+  run_engine(p, options);
+  // Another packing is not a coarser grid: CFD-DEM runs have no estimate.
+  if (p.numerics.error_estimate && engine_of(p) != Engine::cfd_dem) add_error_estimate(p, options, run_engine);
 }
 
 }  // namespace frostwall::run

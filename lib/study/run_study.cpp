@@ -24,7 +24,13 @@ VariantOutcome run_variant(const Variant& v, const std::function<void(const std:
   out.name = v.name;
   out.changes = v.changes;
   out.directory = v.project["output"]["directory"].get<std::string>();
-  const std::string text = v.project.dump(2) + "\n";
+  // Variants are ranked with their error bars: the estimate is on unless
+  // the project turns it off (CFD-DEM runs have none).
+  nlohmann::json project = v.project;
+  if (project.value("physics", std::string()) != "cfd-dem" &&
+      !(project.contains("numerics") && project["numerics"].contains("error_estimate")))
+    project["numerics"]["error_estimate"] = true;
+  const std::string text = project.dump(2) + "\n";
   try {
     const project::Project p = project::parse_project(text, v.name);
     run::RunOptions options;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fmt/core.h>
+#include <map>
 
 #include "io/atomic_file.hpp"
 #include "report/mustache_view.hpp"
@@ -56,6 +57,7 @@ std::vector<Standing> rank_variants(const StudyRun& run, double thickness_day) {
     if (v.ok) {
       const auto& c = v.summary.value("closure_time_days", json());
       if (c.is_number()) st.closure_day = c.get<double>();
+      if (const auto& e = v.summary.value("closure_time_days_error", json()); e.is_number()) st.closure_error = e.get<double>();
       if (fs::exists(v.directory / "wall.csv")) {
         const auto wall = report::read_csv(v.directory / "wall.csv");
         st.thickness = at_day(wall, "min_thickness_m", thickness_day);
@@ -77,23 +79,31 @@ std::vector<Standing> rank_variants(const StudyRun& run, double thickness_day) {
     return std::pair{1, std::isfinite(st.thickness) ? -st.thickness : 0.0};
   };
   std::stable_sort(s.begin(), s.end(), [&](const Standing& a, const Standing& b) { return key(a) < key(b); });
-  int rank = 0;
-  for (auto& st : s)
-    if (st.variant->ok) st.closure_rank = ++rank;
+  int position = 0;
+  const Standing* before = nullptr;
+  for (auto& st : s) {
+    if (!st.variant->ok) continue;
+    ++position;
+    st.closure_tied = before && before->closure_day && st.closure_day &&
+                      std::abs(*st.closure_day - *before->closure_day) < before->closure_error + st.closure_error;
+    st.closure_rank = st.closure_tied ? before->closure_rank : position;
+    before = &st;
+  }
   return s;
 }
 
 void write_study_csv(const fs::path& file, const std::vector<Standing>& standings, double thickness_day) {
   std::string text =
-      "closure_rank,variant,status,closure_day,thickness_rank,thickness_day,min_thickness_m,mean_temperature_OB_C,"
+      "closure_rank,variant,status,closure_day,closure_day_error,closure_tied,thickness_rank,thickness_day,min_thickness_m,mean_temperature_OB_C,"
       "design_pass,design_reached_day,particles,steps,wall_seconds,report,changes,error\n";
   for (const auto& st : standings) {
     const auto& v = *st.variant;
     const json design = v.ok ? v.summary.value("design", json::object()) : json::object();
     const json facts = v.ok ? v.summary.value("run", json::object()) : json::object();
     auto integer = [&](const char* key) { return facts.contains(key) ? fmt::format("{}", facts[key].get<long long>()) : std::string(); };
-    text += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n", st.closure_rank ? std::to_string(st.closure_rank) : "",
+    text += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n", st.closure_rank ? std::to_string(st.closure_rank) : "",
                         csv_text(v.name), v.ok ? "ok" : "failed", st.closure_day ? csv_number(*st.closure_day) : "",
+                        csv_number(st.closure_error), st.closure_tied ? "true" : "false",
                         st.thickness_rank ? std::to_string(st.thickness_rank) : "", csv_number(thickness_day),
                         csv_number(st.thickness), csv_number(st.mean_temperature),
                         design.contains("pass") ? (design["pass"].get<bool>() ? "true" : "false") : "",
@@ -122,15 +132,22 @@ json study_view(const Study& study, const StudyRun& run, const std::vector<Stand
       {{"label", "wall time"}, {"value", fmt::format("{:.1f} s", run.seconds)}},
   });
 
-  auto row = [&](const Standing& st, int rank) {
+  std::map<int, int> closure_ranks;  // how many variants share each closure rank
+  for (const auto& st : standings) ++closure_ranks[st.closure_rank];
+  auto row = [&](const Standing& st, int rank, bool closure_table) {
     const auto& v = *st.variant;
     const json design = v.summary.value("design", json::object());
     const bool has_design = design.value("required_thickness", json()).is_number() || design.value("max_mean_temperature", json()).is_number();
     const bool pass = design.value("pass", false);
-    return json{{"rank", rank},
+    std::string closure = "not closed";
+    if (st.closure_day)
+      closure = std::isfinite(st.closure_error) ? report::with_error(*st.closure_day, st.closure_error, 1)
+                                                : number(*st.closure_day, 1);
+    const bool shared = closure_table && closure_ranks[rank] > 1;
+    return json{{"rank", shared ? fmt::format("{}=", rank) : std::to_string(rank)},
                 {"name", v.name},
                 {"href", v.name + "/report.html"},
-                {"closure", st.closure_day ? number(*st.closure_day, 1) : "not closed"},
+                {"closure", closure + (closure_table && shared ? " (tied)" : "")},
                 {"thickness", number(st.thickness, 2)},
                 {"mean_temperature", number(st.mean_temperature, 1)},
                 {"design", !has_design ? "–" : (pass ? "pass, day " + number(design["reached_day"].is_number() ? design["reached_day"].get<double>() : nan, 1) : "fail")},
@@ -140,12 +157,12 @@ json study_view(const Study& study, const StudyRun& run, const std::vector<Stand
   };
   json by_closure = json::array(), by_thickness = json::array(), failures = json::array();
   for (const auto& st : standings)
-    if (st.variant->ok) by_closure.push_back(row(st, st.closure_rank));
+    if (st.variant->ok) by_closure.push_back(row(st, st.closure_rank, true));
   std::vector<const Standing*> t;
   for (const auto& st : standings)
     if (st.thickness_rank > 0) t.push_back(&st);
   std::sort(t.begin(), t.end(), [](auto* a, auto* b) { return a->thickness_rank < b->thickness_rank; });
-  for (const auto* st : t) by_thickness.push_back(row(*st, st->thickness_rank));
+  for (const auto* st : t) by_thickness.push_back(row(*st, st->thickness_rank, false));
   for (const auto& st : standings)
     if (!st.variant->ok) {
       json lines = json::array();

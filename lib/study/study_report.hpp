@@ -18,13 +18,19 @@ namespace frostwall::study {
 struct Standing {
   const VariantOutcome* variant = nullptr;
   std::optional<double> closure_day;
+  double closure_error = std::numeric_limits<double>::quiet_NaN();  // its estimated error (d); NaN: none
+  // Closed within the combined error (the two errors added) of the variant
+  // ranked just before it: the same closure rank, and marked as tied.
+  bool closure_tied = false;
   double thickness = std::numeric_limits<double>::quiet_NaN();         // thinnest wall at the ranking day (m)
   double mean_temperature = std::numeric_limits<double>::quiet_NaN();  // on OB at that day (degC)
   int closure_rank = 0, thickness_rank = 0;                            // 1 = best; 0 = not ranked (failed)
 };
 
 // In closure order: closed variants by day, then those that never closed
-// (thickest first), then failed ones.
+// (thickest first), then failed ones. A closed variant whose day differs
+// from the one ranked before it by less than their two errors added is
+// tied with it: it takes that variant's rank.
 std::vector<Standing> rank_variants(const StudyRun& run, double thickness_day);
 
 void write_study_csv(const std::filesystem::path& file, const std::vector<Standing>& standings, double thickness_day);
