@@ -102,23 +102,41 @@ Soil detail::read_soil(const Node& n, std::vector<std::string>& warnings) {
   return soil;
 }
 
-void detail::check_rectangle_spacing(const Node& spacing_node, const Rectangle& r, std::optional<double> spacing) {
-  if (!spacing || !(r.width > 0) || !(r.height > 0)) return;
+std::optional<std::string> rectangle_spacing_problem(const Rectangle& r, double spacing) {
+  if (!(r.width > 0) || !(r.height > 0)) return std::nullopt;
   constexpr double rows_across_narrow = 2.0, rows_along_long = 5.0;
   const bool wide = r.width >= r.height;
   const double narrow = std::min(r.width, r.height), longer = std::max(r.width, r.height);
   const bool long_binds = longer / rows_along_long <= narrow / rows_across_narrow;
   const double rows = long_binds ? rows_along_long : rows_across_narrow, side = long_binds ? longer : narrow;
   const char* key = (long_binds == wide) ? "geometry.width" : "geometry.height";
-  if (*spacing > side / rows * (1 + 1e-9))
-    spacing_node.problem(fmt::format("{} m leaves fewer than {} particle rows across {} ({} m); use {} m or less", *spacing,
-                                     rows, key, side, side / rows));
+  if (spacing <= side / rows * (1 + 1e-9)) return std::nullopt;
+  return fmt::format("{} m leaves fewer than {} particle rows across {} ({} m); use {} m or less", spacing, rows, key, side,
+                     side / rows);
+}
+
+std::optional<std::string> shaft_spacing_problem(const ShaftSection& s, double spacing) {
+  if (!(s.pipe.diameter > 0) || spacing <= s.pipe.diameter * (1 + 1e-9)) return std::nullopt;
+  return fmt::format("{} m is larger than the pipe diameter ({} m): a pipe needs particles across it; use {} m or less",
+                     spacing, s.pipe.diameter, s.pipe.diameter);
+}
+
+void check_spacing(const Project& p) {
+  if (!p.numerics.spacing) return;
+  std::optional<std::string> problem;
+  if (const auto* r = std::get_if<Rectangle>(&p.geometry)) problem = rectangle_spacing_problem(*r, *p.numerics.spacing);
+  if (const auto* s = std::get_if<ShaftSection>(&p.geometry)) problem = shaft_spacing_problem(*s, *p.numerics.spacing);
+  if (problem) throw ProjectError({"numerics.spacing: " + *problem});
+}
+
+void detail::check_rectangle_spacing(const Node& spacing_node, const Rectangle& r, std::optional<double> spacing) {
+  if (!spacing) return;
+  if (const auto problem = rectangle_spacing_problem(r, *spacing)) spacing_node.problem(*problem);
 }
 
 void detail::check_shaft_spacing(const Node& spacing_node, const ShaftSection& s, std::optional<double> spacing) {
-  if (spacing && s.pipe.diameter > 0 && *spacing > s.pipe.diameter * (1 + 1e-9))
-    spacing_node.problem(fmt::format("{} m is larger than the pipe diameter ({} m): a pipe needs particles across it; use {} m "
-                                     "or less", *spacing, s.pipe.diameter, s.pipe.diameter));
+  if (!spacing) return;
+  if (const auto problem = shaft_spacing_problem(s, *spacing)) spacing_node.problem(*problem);
 }
 
 }  // namespace frostwall::project

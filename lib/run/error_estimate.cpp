@@ -253,6 +253,7 @@ void add_error_estimate(const project::Project& p, const project::RunOptions& op
       options.note(fmt::format("error estimate: coarser run {} of {}, spacing {:.4g} m", k + 1, coarse_ratios.size(),
                                *twin.numerics.spacing));
     try {
+      project::check_spacing(twin);
       engine(twin, quiet);
       twins.push_back(read_summary(fs::path(twin.output.directory) / "summary.json"));
       spacings.push_back(number(at(twins.back(), {"run", "spacing"})));
