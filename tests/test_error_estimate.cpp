@@ -21,6 +21,7 @@
 #include "io/csv_table.hpp"
 #include "run/error_law.hpp"
 #include "shipped_run.hpp"
+#include "study/study_erosion.hpp"
 #include "study/study_report.hpp"
 #include "temp_dir.hpp"
 #include "text_file.hpp"
@@ -236,4 +237,31 @@ TEST_CASE("A study ties two variants whose closure days differ by less than thei
   const std::string csv = test::read_text(dir.path / "study.csv");
   CHECK(csv.find("closure_day,closure_day_error,closure_tied,") != std::string::npos);
   CHECK(csv.find("\n1,B,ok,10.08,0.05,true,") != std::string::npos);
+}
+
+TEST_CASE("CFD-DEM variants that differ by their seed alone get the seed-to-seed spread", "[study][error_estimate]") {
+  // By hand: lost 100, 110, 120 -> 110 ± 10; crater 30, 32, 34 mm -> 32 ± 2;
+  // settlement 5, 5, 5 mm -> 5.0 (no spread: one decimal). The variant at another
+  // velocity has one seed: no group.
+  study::StudyRun run;
+  auto variant = [](const std::string& name, const std::string& changes, double lost, double crater) {
+    study::VariantOutcome v;
+    v.name = name;
+    v.changes = changes;
+    v.ok = true;
+    v.summary = {{"physics", "cfd-dem"},
+                 {"soil", {{"lost_to_cavity", lost - 4}, {"washed_out", 4}, {"series", json::array({{{"time", 1.0}, {"crater_depth_m", crater}, {"settlement_max_m", 0.005}}})}}}};
+    return v;
+  };
+  run.variants = {variant("v1-s1", "cfd_dem.inflow.velocity = 0.1; cfd_dem.grains.seed = 1", 100, 0.030),
+                  variant("v1-s2", "cfd_dem.inflow.velocity = 0.1; cfd_dem.grains.seed = 2", 110, 0.032),
+                  variant("v1-s3", "cfd_dem.inflow.velocity = 0.1; cfd_dem.grains.seed = 3", 120, 0.034),
+                  variant("v2-s1", "cfd_dem.inflow.velocity = 0.2; cfd_dem.grains.seed = 1", 300, 0.050)};
+  const json rows = study::seed_spread(run);
+  REQUIRE(rows.size() == 1);
+  CHECK(rows[0]["changes"] == "cfd_dem.inflow.velocity = 0.1");
+  CHECK(rows[0]["seeds"] == 3);
+  CHECK(rows[0]["lost"] == "110 ± 10");
+  CHECK(rows[0]["crater_depth"] == "32 ± 2");
+  CHECK(rows[0]["settlement"] == "5.0");
 }

@@ -1,5 +1,6 @@
 #include "study/study_erosion.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <fmt/core.h>
 
@@ -82,9 +83,71 @@ void add_erosion(const StudyRun& run, json& view) {
     lost.series.push_back(a), zone.series.push_back(b), settled.series.push_back(c);
   }
   view["erosion_rows"] = rows;
+  view["seed_rows"] = seed_spread(run);
+  view["has_seed_spread"] = !view["seed_rows"].empty();
   view["erosion_charts"] = json::array({{{"svg", report::render_svg(lost)}, {"caption", "Grains that left the soil: fell into the cavity (kept there, or taken away where the cavity drains) or were washed out through the outflow face."}},
                                         {{"svg", report::render_svg(zone)}, {"caption", "The cylinder over the cavity's crown to the surface; 1 when it is empty."}},
                                         {{"svg", report::render_svg(settled)}, {"caption", "The deepest settlement of the surface along the line through the cavity."}}});
+}
+
+namespace {
+
+// A variant's changes without its seed ("...seed = 3" parts): the variants
+// that share it differ by their packing's seed alone.
+std::pair<std::string, bool> without_seed(const std::string& changes) {
+  std::string rest;
+  bool seeded = false;
+  std::size_t from = 0;
+  while (from <= changes.size()) {
+    const std::size_t end = std::min(changes.find("; ", from), changes.size());
+    const std::string part = changes.substr(from, end - from);
+    const std::size_t eq = part.find(" = ");
+    const std::string path = part.substr(0, eq);
+    if (eq != std::string::npos && path.size() >= 4 && path.compare(path.size() - 4, 4, "seed") == 0) seeded = true;
+    else if (!part.empty()) rest += (rest.empty() ? "" : "; ") + part;
+    from = end + 2;
+  }
+  return {rest.empty() ? "the base project" : rest, seeded};
+}
+
+// "mean ± sd" of a sample (sd with n - 1).
+std::string spread(const std::vector<double>& x, double scale) {
+  double mean = 0.0, squares = 0.0;
+  for (double v : x) mean += scale * v / static_cast<double>(x.size());
+  for (double v : x) squares += (scale * v - mean) * (scale * v - mean);
+  return report::with_error(mean, std::sqrt(squares / static_cast<double>(x.size() - 1)), 1);
+}
+
+}  // namespace
+
+json seed_spread(const StudyRun& run) {
+  struct Group {
+    std::vector<std::string> names;
+    std::vector<double> lost, crater, settlement;
+  };
+  std::vector<std::pair<std::string, Group>> groups;
+  for (const auto& v : run.variants) {
+    if (!v.ok || !v.summary.contains("soil")) continue;
+    const auto [key, seeded] = without_seed(v.changes);
+    if (!seeded) continue;
+    auto it = std::find_if(groups.begin(), groups.end(), [&](const auto& g) { return g.first == key; });
+    if (it == groups.end()) it = groups.insert(groups.end(), {key, Group{}});
+    const json& s = soil(v);
+    const auto& last = s["series"].empty() ? json::object() : s["series"].back();
+    it->second.names.push_back(v.name);
+    it->second.lost.push_back(get(s, "lost_to_cavity") + get(s, "washed_out"));
+    it->second.crater.push_back(get(last, "crater_depth_m"));
+    it->second.settlement.push_back(get(last, "settlement_max_m"));
+  }
+  json rows = json::array();
+  for (const auto& [key, g] : groups) {
+    if (g.names.size() < 2) continue;
+    std::string names;
+    for (const auto& n : g.names) names += (names.empty() ? "" : ", ") + n;
+    rows.push_back({{"changes", key}, {"variants", names}, {"seeds", g.names.size()}, {"lost", spread(g.lost, 1.0)},
+                    {"crater_depth", spread(g.crater, 1e3)}, {"settlement", spread(g.settlement, 1e3)}});
+  }
+  return rows;
 }
 
 void write_erosion_csv(const std::filesystem::path& file, const StudyRun& run) {
