@@ -48,7 +48,9 @@ std::vector<double> ring_radii(const RunRecord& run) {
 
 // The estimated error of the thinnest ray and of OB at the snapshot days
 // (numerics.error_estimate), as bars on the thickness chart.
-void add_thickness_error_bars(const json& summary, Chart& chart) {
+// Returns the largest error drawn (0: none).
+double add_thickness_error_bars(const json& summary, Chart& chart) {
+  double largest = 0.0;
   const struct { const char* parent; const char* key; const char* colour; } bars[] = {
       {nullptr, "min_thickness", "#000000"}, {"OB", "thickness", "#E69F00"}};
   for (const auto& b : bars) {
@@ -61,9 +63,11 @@ void add_thickness_error_bars(const json& summary, Chart& chart) {
       s.x.push_back(w["day"].get<double>());
       s.y.push_back(entry[b.key].get<double>());
       s.error.push_back(e.get<double>());
+      largest = std::max(largest, e.get<double>());
     }
     if (!s.x.empty()) chart.error_bars.push_back(std::move(s));
   }
+  return largest;
 }
 
 void wall_charts(const RunRecord& run, json& charts) {
@@ -89,16 +93,20 @@ void wall_charts(const RunRecord& run, json& charts) {
   };
   for (const auto& l : lines)
     if (const auto* c = wall.column(l.column)) t.series.push_back({l.label, *day, *c, l.colour, l.dashed, false, l.width});
-  add_thickness_error_bars(run.summary, t);
+  const double largest_error = add_thickness_error_bars(run.summary, t);
   t.guides = closure_guide;
   if (const auto req = design_value(run.summary, "required_thickness"))
     t.guides.push_back({false, *req, fmt::format("required {} m", number(*req, 2))});
+  const std::string bars =
+      largest_error > 0.0 ? fmt::format(" The dots at the snapshot days carry the estimated numerical error of OB and of the "
+                                        "thinnest ray as bars (at most ± {} m here; smaller ones hide behind their dot).",
+                                        number(largest_error, 3))
+                          : std::string();
   charts.push_back(figure("thickness", "Wall thickness", t,
                           "Longest frozen stretch (liquid fraction at most 0.5) containing a ring of pipes, on OA, "
-                          "on OB and on the thinnest ray of the wedge; where the run estimated its error, bars at the "
-                          "snapshot days show it (plus or minus). Until the columns touch only the ground around "
+                          "on OB and on the thinnest ray of the wedge. Until the columns touch only the ground around "
                           "the pipes is frozen, so OB and the thinnest ray read zero; closure (the line) follows when "
-                          "a fully frozen path has formed."));
+                          "a fully frozen path has formed." + bars));
 
   if (const auto* T = wall.column("mean_temperature_OB_C")) {
     Chart m;

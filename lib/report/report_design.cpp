@@ -41,11 +41,12 @@ std::string verdict(const json& summary, const std::string& where) {
   const json d = summary.value("design", json::object());
   const json wall = summary.value("wall", json::array());
   const std::string last_day = wall.empty() ? "the end" : number(wall.back()["day"], 0);
-  const std::string u = wall.empty() ? "–" : number(wall.back().value("utilisation", json()), 2);
+  const std::string u =
+      wall.empty() ? "–" : with_error(wall.back().value("utilisation", json()), wall.back().value("utilisation_error", json()), 2);
   // A wall that passes and later fails again (a pipe lost, a warm spell of brine) says so.
   const std::string again = d.value("stays_met", true) ? "" : " (but not for good: it fails again later)";
   const std::string met = d.value("met_day", json()).is_number()
-                              ? fmt::format("design met on day {}{}{}", number(d["met_day"], 0), where, again)
+                              ? fmt::format("design met on day {}{}{}", with_error(d["met_day"], d.value("met_day_error", json()), 0), where, again)
                               : fmt::format("design not met by day {}{}", last_day, where);
   return fmt::format("{}; utilisation {} on day {}", met, u, last_day);
 }

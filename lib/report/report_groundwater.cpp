@@ -28,7 +28,7 @@ void add_groundwater(const RunRecord& run, json& view) {
   for (const auto& gap : g.value("gaps", json::array())) {
     view["groundwater_gaps"].push_back({{"between", gap.value("between", "")},
                                         {"position", gap.value("position", "")},
-                                        {"closure_day", number(gap["closure_day"], 2)}});
+                                        {"closure_day", with_error(gap["closure_day"], gap.value("closure_day_error", json()), 2)}});
     if (!gap.contains("flow")) continue;
     Series s;
     s.label = gap.value("between", "") + " (" + gap.value("position", "") + ")";

@@ -66,6 +66,7 @@ StudyRun run_layers(const project::Project& p, const std::string& project_text, 
   Study study;
   study.name = p.name;
   study.output_directory = out;
+  study.estimate_errors = false;  // as the project says: a layered run is no study
   const auto docs = layer_documents(p, project_text);
   // Made before the layers run side by side: each layer's own check makes
   // and removes only its folder, never this shared parent under another.

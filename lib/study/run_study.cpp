@@ -18,7 +18,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-VariantOutcome run_variant(const Variant& v, const std::function<void(const std::string&)>& note) {
+VariantOutcome run_variant(const Variant& v, bool estimate_errors, const std::function<void(const std::string&)>& note) {
   const auto start = std::chrono::steady_clock::now();
   VariantOutcome out;
   out.name = v.name;
@@ -27,7 +27,7 @@ VariantOutcome run_variant(const Variant& v, const std::function<void(const std:
   // Variants are ranked with their error bars: the estimate is on unless
   // the project turns it off (CFD-DEM runs have none).
   nlohmann::json project = v.project;
-  if (project.value("physics", std::string()) != "cfd-dem" &&
+  if (estimate_errors && project.value("physics", std::string()) != "cfd-dem" &&
       !(project.contains("numerics") && project["numerics"].contains("error_estimate")))
     project["numerics"]["error_estimate"] = true;
   const std::string text = project.dump(2) + "\n";
@@ -77,7 +77,8 @@ StudyRun run_study(const Study& study, const StudyOptions& options) {
   auto worker = [&] {
     // Per-thread OpenMP setting: each worker's runs use this many threads.
     omp_set_num_threads(result.threads);
-    for (std::size_t k; (k = next++) < study.variants.size();) result.variants[k] = run_variant(study.variants[k], note);
+    for (std::size_t k; (k = next++) < study.variants.size();)
+      result.variants[k] = run_variant(study.variants[k], study.estimate_errors, note);
   };
   if (result.jobs == 1) {
     worker();

@@ -37,6 +37,10 @@ struct Study {
   std::filesystem::path output_directory;
   double thickness_day = 0.0;              // thickness ranking day (default: the base's last snapshot)
   std::vector<Variant> variants;
+  // A study ranks with error bars: numerics.error_estimate is on in every
+  // variant that does not set it. The layers of a layered project (run as
+  // a study, one variant per layer) keep the project's own setting.
+  bool estimate_errors = true;
 };
 
 // Every problem of a study file, "json.path: what is wrong", one per line.
