@@ -170,7 +170,7 @@ struct TimeSettings {
 };
 
 
-// One layer of the ground the shaft passes (issue 18): a cross-section of
+// One layer of the ground the shaft passes: a cross-section of
 // its own at its depth, with its soil, pressure and strength. The JSON of
 // its soil and design entries is kept as given, so that the layer's run
 // records the project file it ran (project.json) like any other run.

@@ -1,4 +1,4 @@
-// The wall check's section of the report (issue 18): the verdict in words,
+// The wall check's section of the report: the verdict in words,
 // every formula's thickness on the last snapshot with its validity, required
 // against achieved thickness over time (per layer for a layered shaft), the
 // table by layer, and the brine pipes' wall temperature and heat.

@@ -1,4 +1,4 @@
-// The groundwater section of a shaft run under seepage (issue 17): the
+// The groundwater section of a shaft run under seepage: the
 // verdict, closure per gap with its side of the shaft, the wall's thinnest
 // upstream and downstream, and the water through each gap over time (the
 // last gap's stops when it closes). The flow field itself is drawn on the
