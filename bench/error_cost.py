@@ -19,20 +19,8 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
 
 def run_main(work, estimate):
-    with open(bench.CASE) as f:
-        project = json.load(f)
-    out = os.path.join(work, f"main_{estimate}")
-    project.setdefault("numerics", {})["error_estimate"] = estimate
-    project["output"] = dict(directory=out, vtk=False, full_ring=False, report=False)
-    path = out + ".json"
-    with open(path, "w") as f:
-        json.dump(project, f)
-    proc = subprocess.Popen([bench.EXE, "--threads", "1", "run", path], stdout=subprocess.DEVNULL,
-                            stderr=subprocess.DEVNULL, env=dict(os.environ, CI="1"))
-    _, status, usage = os.wait4(proc.pid, 0)
-    if os.waitstatus_to_exitcode(status) != 0:
-        sys.exit("error_cost: main job failed")
-    return usage.ru_utime + usage.ru_stime
+    # bench.run: the main job with these numerics (the case has none of its own), no VTK, no report.
+    return bench.run({"error_estimate": estimate}, 1, work, f"main_{estimate}")["cpu"]
 
 
 def run_study(work, estimate):

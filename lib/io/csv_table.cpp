@@ -7,6 +7,9 @@
 
 namespace frostwall::io {
 
+namespace {
+
+// The cells of one CSV line (no quoting: the run's tables have none).
 std::vector<std::string> split_csv_line(const std::string& line) {
   std::vector<std::string> cells;
   std::string cell;
@@ -15,6 +18,8 @@ std::vector<std::string> split_csv_line(const std::string& line) {
   if (!line.empty() && line.back() == ',') cells.emplace_back();
   return cells;
 }
+
+}  // namespace
 
 const std::vector<double>* CsvTable::column(const std::string& name) const {
   for (std::size_t c = 0; c < header.size(); ++c)

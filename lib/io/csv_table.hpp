@@ -19,7 +19,4 @@ struct CsvTable {
 };
 CsvTable read_csv(const std::filesystem::path& file);
 
-// The cells of one CSV line (no quoting: the run's tables have none).
-std::vector<std::string> split_csv_line(const std::string& line);
-
 }  // namespace frostwall::io

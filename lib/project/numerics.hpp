@@ -54,7 +54,8 @@ struct Numerics {
   std::optional<double> max_particles;
   // true: after the run, three coarser runs (1.35, 1.5 and 1.65 times the
   // spacing) estimate the discretisation error of every headline number
-  // (lib/run/error_estimate.hpp). Off by default (it costs about 1.4 runs);
+  // (lib/run/error_estimate.hpp). Off by default (the twins take about as
+  // long as the run: 0.91 of the main job's CPU time, bench/README.md);
   // `frostwall study` turns it on unless the project says false.
   bool error_estimate = false;
 };

@@ -237,10 +237,6 @@ class ProjectError : public std::runtime_error {
   std::vector<std::string> problems_;
 };
 
-// Reads and validates a project file. Throws ProjectError (never anything
-// else for bad content; an unreadable file is also a ProjectError).
-Project load_project(const std::string& path);
-// The same from text already in memory (tests, the study command).
 // The loader's spacing checks, as one problem each (nullopt: fine): a
 // rectangle needs 2 rows across and 5 along, a shaft section a spacing no
 // larger than the pipe diameter.
@@ -250,6 +246,10 @@ std::optional<std::string> shaft_spacing_problem(const ShaftSection& s, double s
 // ProjectError naming numerics.spacing.
 void check_spacing(const Project& p);
 
+// Reads and validates a project file. Throws ProjectError (never anything
+// else for bad content; an unreadable file is also a ProjectError).
+Project load_project(const std::string& path);
+// The same from text already in memory (tests, the study command).
 Project parse_project(const std::string& json_text);
 // As above; `source` (a file name) names the text in a problem with the text
 // as a whole, such as "not valid JSON". The one-argument form uses "project".

@@ -146,7 +146,8 @@ void add_run_facts(const RunRecord& run, json& view) {
     const double stored = hb.value("stored_change", 0.0);
     rows.push_back(row("heat balance", fmt::format("stored change {} MJ/m, from the boundaries {} MJ/m", number(stored / 1e6, 2),
                                                    number(from / 1e6, 2))));
-  }  if (const auto& e = run.summary.value("error_estimate", json::object()); e.contains("status")) {
+  }
+  if (const auto& e = run.summary.value("error_estimate", json::object()); e.contains("status")) {
     if (e["status"] == "done") {
       std::string spacings;
       for (const auto& h : e.value("spacings", json::array())) spacings += (spacings.empty() ? "" : ", ") + metres(h.get<double>(), 4);
@@ -157,7 +158,6 @@ void add_run_facts(const RunRecord& run, json& view) {
       rows.push_back(row("error estimate", "none: " + e.value("reason", std::string())));
     }
   }
-
   view["run_rows"] = rows;
 
   // Links to the other files of the run, as they are in the directory.

@@ -5,7 +5,6 @@
 #include <fmt/core.h>
 #include <fstream>
 #include <limits>
-#include <sstream>
 
 #include "io/atomic_file.hpp"
 #include "io/csv_table.hpp"
@@ -55,6 +54,14 @@ struct Twins {
   std::vector<const json*> summaries;
   double ratio = 1.5;  // mean twin spacing over the run's
 };
+
+// The twins' mean spacing over the run's (run.spacing of each summary);
+// the nominal 1.5 when a summary lacks it.
+double twin_ratio(double h, const std::vector<json>& twins) {
+  double ratio = 0.0;
+  for (const auto& s : twins) ratio += number(at(s, {"run", "spacing"})) / h / static_cast<double>(twins.size());
+  return std::isfinite(ratio) && ratio > 1.0 ? ratio : 1.5;
+}
 
 // A number of the summary (at path) and its error beside it.
 void number_entry(ordered_json& summary, const Twins& twins, const std::vector<std::string>& path) {
@@ -147,13 +154,8 @@ void gap_entries(ordered_json& summary, const Twins& twins) {
 
 void add_summary_errors(ordered_json& summary, const std::vector<json>& twin_summaries) {
   Twins twins;
-  const double h = number(at(summary, {"run", "spacing"}));
-  double ratio = 0.0;
-  for (const auto& s : twin_summaries) {
-    twins.summaries.push_back(&s);
-    ratio += number(at(s, {"run", "spacing"})) / h / static_cast<double>(twin_summaries.size());
-  }
-  if (std::isfinite(ratio) && ratio > 1.0) twins.ratio = ratio;
+  for (const auto& s : twin_summaries) twins.summaries.push_back(&s);
+  twins.ratio = twin_ratio(number(at(summary, {"run", "spacing"})), twin_summaries);
   number_entry(summary, twins, {"closure_time_days"});
   number_entry(summary, twins, {"front_contact_days"});
   if (summary.contains("wall") && summary["wall"].is_array()) {
@@ -213,10 +215,11 @@ void add_csv_errors(const fs::path& file, const std::vector<fs::path>& twin_file
   io::write_text_file(file, text);
 }
 
-json read_summary(const fs::path& file) {
+template <class J>
+J read_summary(const fs::path& file) {
   std::ifstream in(file);
   if (!in) throw std::runtime_error("cannot read " + file.string());
-  return json::parse(in);
+  return J::parse(in);
 }
 
 // The scratch directory of the twins, removed however the estimate ends.
@@ -226,6 +229,7 @@ struct Scratch {
     std::error_code ignored;
     fs::remove_all(dir, ignored);
   }
+  fs::path twin(std::size_t k) const { return dir / fmt::format("twin_{}", k + 1); }
 };
 
 }  // namespace
@@ -233,19 +237,16 @@ struct Scratch {
 void add_error_estimate(const project::Project& p, const project::RunOptions& options, const EngineRun& engine) {
   const fs::path out = p.output.directory;
   const auto start = std::chrono::steady_clock::now();
-  std::ifstream in(out / "summary.json");
-  ordered_json summary = ordered_json::parse(in);
-  in.close();
+  ordered_json summary = read_summary<ordered_json>(out / "summary.json");
   const double h = number(at(summary, {"run", "spacing"}));
   Scratch scratch{out / scratch_name};
   std::vector<json> twins;
-  std::vector<double> spacings;
   std::string unavailable;
   for (std::size_t k = 0; k < coarse_ratios.size() && unavailable.empty(); ++k) {
     project::Project twin = p;
     twin.numerics.spacing = coarse_ratios[k] * h;
     twin.numerics.error_estimate = false;
-    twin.output.directory = (scratch.dir / fmt::format("twin_{}", k + 1)).string();
+    twin.output.directory = scratch.twin(k).string();
     twin.output.vtk = twin.output.full_ring = twin.output.report = false;
     project::RunOptions quiet;
     quiet.progress = options.progress;
@@ -255,8 +256,7 @@ void add_error_estimate(const project::Project& p, const project::RunOptions& op
     try {
       project::check_spacing(twin);
       engine(twin, quiet);
-      twins.push_back(read_summary(fs::path(twin.output.directory) / "summary.json"));
-      spacings.push_back(number(at(twins.back(), {"run", "spacing"})));
+      twins.push_back(read_summary<json>(scratch.twin(k) / "summary.json"));
     } catch (const project::ProjectError& e) {
       unavailable = fmt::format("the run at {:.4g} times the spacing cannot be made: {}", coarse_ratios[k],
                                 e.problems().empty() ? std::string() : e.problems().front());
@@ -271,10 +271,11 @@ void add_error_estimate(const project::Project& p, const project::RunOptions& op
     if (options.note) options.note("warning: no error estimate: " + unavailable);
   } else {
     add_summary_errors(summary, twins);
-    double ratio = 0.0;
-    for (double s : spacings) ratio += s / h / static_cast<double>(spacings.size());
-    std::vector<double> days;
-    for (const auto& t : twins) days.push_back(number(t.value("closure_time_days", json())));
+    std::vector<double> spacings, days;
+    for (const auto& t : twins) {
+      spacings.push_back(number(at(t, {"run", "spacing"})));
+      days.push_back(number(t.value("closure_time_days", json())));
+    }
     summary["error_estimate"] = {
         {"status", "done"},
         {"covers", "the discretisation only (spacing and the time steps that follow it)"},
@@ -286,8 +287,8 @@ void add_error_estimate(const project::Project& p, const project::RunOptions& op
     if (summary.contains("closure_time_days")) summary["error_estimate"]["coarse_closure_days"] = days;
     for (const char* table : {"wall.csv", "monitoring.csv"}) {
       std::vector<fs::path> files;
-      for (std::size_t k = 0; k < twins.size(); ++k) files.push_back(scratch.dir / fmt::format("twin_{}", k + 1) / table);
-      add_csv_errors(out / table, files, ratio);
+      for (std::size_t k = 0; k < twins.size(); ++k) files.push_back(scratch.twin(k) / table);
+      add_csv_errors(out / table, files, twin_ratio(h, twins));
     }
   }
   io::write_text_file(out / "summary.json", summary.dump(2) + "\n");
