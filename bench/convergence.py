@@ -1,0 +1,94 @@
+#!/usr/bin/env python3
+"""Convergence of the shipped shafts in the spacing.
+
+  python3 bench/convergence.py                 # single ring, three-hole, four-hole at 3, 2.5, 2, 1.5, 1 cm
+  python3 bench/convergence.py --spacings 0.03,0.02  --projects single_ring_sand
+
+Each project runs to its own end (120 days) with only numerics.spacing
+changed, without VTK, report or error estimate, on all cores. Prints one
+markdown table per project (closure day, OB thickness at 60 days, free
+particles, wall seconds) and the observed order of the closure day from
+each three successive spacings (p = ln(|d1| / |d2|) / ln(r) for the two
+differences d1, d2 and a constant ratio r; '-' where the ratio changes or
+the differences change sign).
+"""
+import argparse
+import json
+import math
+import os
+import subprocess
+import sys
+import tempfile
+import time
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+EXE = os.path.join(ROOT, "build", "app", "frostwall")
+PROJECTS = ["single_ring_sand", "three_hole_sand", "four_hole_sand"]
+SPACINGS = [0.03, 0.025, 0.02, 0.015, 0.01]
+REFERENCES = {"single_ring_sand": (13.845, 0.004), "three_hole_sand": (6.612, 0.037),
+              "four_hole_sand": (1.1436, 0.0095)}
+
+
+def run(name, spacing, work, threads, exe=EXE):
+    with open(os.path.join(ROOT, "projects", name + ".json")) as f:
+        project = json.load(f)
+    project.setdefault("numerics", {})
+    project["numerics"].update({"spacing": spacing, "error_estimate": False})
+    out = os.path.join(work, f"{name}_{spacing}")
+    project["output"] = {"directory": out, "vtk": False, "full_ring": False, "report": False}
+    path = out + ".json"
+    with open(path, "w") as f:
+        json.dump(project, f)
+    start = time.perf_counter()
+    proc = subprocess.run([exe, "--threads", str(threads), "run", path], capture_output=True, text=True,
+                          env=dict(os.environ, CI="1"))
+    wall = time.perf_counter() - start
+    if proc.returncode != 0:
+        sys.exit(f"convergence: {name} at {spacing} failed: {proc.stderr}")
+    with open(os.path.join(out, "summary.json")) as f:
+        s = json.load(f)
+    ob60 = next((w["OB"]["thickness"] for w in s["wall"] if round(w["day"]) == 60), None)
+    return {"closure": s["closure_time_days"], "ob60": ob60, "particles": s["run"]["particles"], "wall": wall}
+
+
+def observed_order(h, c):
+    """Orders from each three successive spacings with a constant ratio."""
+    orders = []
+    for k in range(len(c) - 2):
+        r1, r2 = h[k] / h[k + 1], h[k + 1] / h[k + 2]
+        d1, d2 = c[k] - c[k + 1], c[k + 1] - c[k + 2]
+        if abs(r1 - r2) > 1e-9 * r1 or d1 * d2 <= 0:
+            orders.append(None)
+        else:
+            orders.append(math.log(abs(d1) / abs(d2)) / math.log(r1))
+    return orders
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--projects", default=",".join(PROJECTS))
+    ap.add_argument("--spacings", default=",".join(str(s) for s in SPACINGS))
+    ap.add_argument("--threads", type=int, default=os.cpu_count() or 1)
+    ap.add_argument("--exe", default=EXE, help="the frostwall program (default: build/app/frostwall)")
+    args = ap.parse_args()
+    spacings = [float(s) for s in args.spacings.split(",")]
+    work = tempfile.mkdtemp(prefix="frostwall-convergence-")
+    for name in args.projects.split(","):
+        ref, u = REFERENCES.get(name, (None, None))
+        print(f"\n{name} (reference {ref} +- {u} d)\n")
+        print("| spacing (m) | free particles | closure day | vs reference | OB thickness 60 d (m) | wall s |")
+        print("|---|---|---|---|---|---|")
+        closures = []
+        for h in spacings:
+            r = run(name, h, work, args.threads, args.exe)
+            closures.append(r["closure"])
+            vs = f"{100 * (r['closure'] / ref - 1):+.2f} %" if ref else ""
+            ob = f"{r['ob60']:.3f}" if r["ob60"] is not None else "-"
+            print(f"| {h} | {r['particles']} | {r['closure']:.4f} | {vs} | {ob} | {r['wall']:.1f} |", flush=True)
+        orders = observed_order(spacings, closures)
+        print("\nobserved order of the closure day (successive triples): " +
+              ", ".join("-" if p is None else f"{p:.2f}" for p in orders))
+
+
+if __name__ == "__main__":
+    main()
