@@ -23,6 +23,8 @@ std::string encode_png(const RgbaImage& image) {
     std::memcpy(out + std::size_t(image.height - 1 - y) * row, image.pixels.data() + std::size_t(y) * row, row);
   vtkNew<vtkPNGWriter> writer;
   writer->SetInputData(data);
+  // Level 1: a few times faster than the default 5 for maps about a fifth larger.
+  writer->SetCompressionLevel(1);
   writer->WriteToMemoryOn();
   writer->Write();
   vtkUnsignedCharArray* bytes = writer->GetResult();

@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include "geometry/layout.hpp"
+#include "particles/parallel.hpp"
 #include "report/field_map.hpp"
 #include "report/flow_arrows.hpp"
 #include "report/nice_scale.hpp"
@@ -123,28 +124,35 @@ void add_maps(const RunRecord& run, json& view) {
   const MapWindow window = map_window(full_ring, ring, inner, pipes, overlay.domain_radius, where);
   const FieldMap map(fields.front(), symmetry, kernel, h, spacing, window, overlay.domain_radius);
 
+  // The curves and arrows of every snapshot first (file reads), then the
+  // maps drawn and encoded on all threads, one snapshot each.
   const auto& fronts = run.summary.value("interface", json::array());
-  json maps = json::array();
+  std::vector<std::vector<post::Polyline>> curves(snapshots.size());
+  std::vector<char> whole(snapshots.size(), 0);
+  std::vector<MapOverlay> overlays(snapshots.size(), overlay);
   for (std::size_t k = 0; k < snapshots.size(); ++k) {
     // The front files are listed in summary.json in snapshot order.
     // The whole ring's curves when the run wrote them (closed across the
     // wedge sides); else the wedge's, copied around by the map.
-    std::vector<post::Polyline> curves;
-    bool whole = false;
     if (k < fronts.size())
       for (const char* key : {"full_ring_file", "file"})
         if (fronts[k].contains(key) && fs::exists(run.dir / fronts[k][key].get<std::string>())) {
-          curves = read_polylines(run.dir / fronts[k][key].get<std::string>());
-          whole = std::string(key) == "full_ring_file";
+          curves[k] = read_polylines(run.dir / fronts[k][key].get<std::string>());
+          whole[k] = std::string(key) == "full_ring_file";
           break;
         }
-    const std::string title = fmt::format("day {:g}", snapshots[k].time);
-    MapOverlay with_flow = overlay;
-    with_flow.arrows = flow_arrows(fields[k], symmetry, window, overlay.domain_radius);
-    maps.push_back({{"html", map.html(fields[k].temperature, colours, curves, whole, with_flow, title)},
-                    {"caption", fmt::format("Temperature on day {:g}; black line: frozen front (liquid fraction 0.5){}.", snapshots[k].time,
-                                            with_flow.arrows.empty() ? "" : "; white arrows: the groundwater's Darcy flux (length to scale on this map)")}});
+    overlays[k].arrows = flow_arrows(fields[k], symmetry, window, overlay.domain_radius);
   }
+  std::vector<std::string> html(snapshots.size());
+  particles::for_each_item(snapshots.size(), [&](std::size_t k) {
+    html[k] = map.html(fields[k].temperature, colours, curves[k], whole[k] != 0, overlays[k],
+                       fmt::format("day {:g}", snapshots[k].time));
+  });
+  json maps = json::array();
+  for (std::size_t k = 0; k < snapshots.size(); ++k)
+    maps.push_back({{"html", std::move(html[k])},
+                    {"caption", fmt::format("Temperature on day {:g}; black line: frozen front (liquid fraction 0.5){}.", snapshots[k].time,
+                                            overlays[k].arrows.empty() ? "" : "; white arrows: the groundwater's Darcy flux (length to scale on this map)")}});
   view["maps"] = maps;
   view["has_maps"] = true;
   view["colour_bar_svg"] = colours.colour_bar_svg(520);
