@@ -1,4 +1,4 @@
-// Issue 17, check 2: a uniform Darcy flow past an impermeable disc (a
+// A uniform Darcy flow past an impermeable disc (a
 // frozen column as an obstacle), on a particle cloud with the heat's own
 // SPH pairs. Potential flow gives psi = -U x (1 + a^2 / r^2): twice the
 // far-field speed at the disc's flanks and a stagnation point upstream.
@@ -102,7 +102,7 @@ TEST_CASE("Darcy flow past a disc: balanced at every particle, the potential con
   }
 }
 
-// The issue's 2 % at the flanks is not met yet: the flow beside the disc is
+// The required 2 % at the flanks is not met yet: the flow beside the disc is
 // 7.3 % (pipe) and 8.5 % (frozen) off on the fine cloud, and does not fall
 // with refinement. The particles next to the disc lose the pairs that
 // cross it, and the renormalised SPH operator is not consistent on a
