@@ -132,15 +132,11 @@ TEST_CASE("Groundwater without flow is still water, and flowing water delays clo
   }
 }
 
-// The coupled scheme (the water's heat inside the conduction's backward-
-// Euler step) against the explicit limited one on the same ring at 1 m/d:
-// first order in time, so closure comes a little late at the default step
-// change and converges on the explicit run as the step shrinks; the heat
-// balance holds through the water's walls.
-// The coupled step against the explicit limited scheme (held to the
-// advective Courant limit, 592 short steps): the flow is solved again for
-// each step's own ice after two Newton iterations and the limiter is then
-// held, so the closure day stays within 1 % of the explicit run's at a
+// The coupled step (the water's heat inside the conduction's backward-Euler
+// step) against the explicit limited scheme (held to the advective Courant
+// limit, 592 short steps) on the same ring at 1 m/d: the flow is solved
+// again for each step's own ice after two Newton iterations and the limiter
+// is then held, so the closure day stays within 1 % of the explicit run's at a
 // fraction of its steps, and the heat balance closes to the Newton
 // tolerance (1e-7 of the latent heat per particle and step).
 TEST_CASE("Groundwater: the coupled step closes within 1 % of the explicit scheme", "[freezing][groundwater][cli]") {
