@@ -22,7 +22,7 @@ default mode on 1 and 2 OpenMP threads, and the kernel's pair-update rate
   python3 bench/bench.py --convergence   # the default mode's closure day as the spacing is refined
 
 Closure is the first fully frozen path (project-format.md); the independent
-solvers of issue 12 (P1 finite elements and vertex-centred finite volumes,
+solvers (P1 finite elements and vertex-centred finite volumes,
 converged) put it at 13.85 d for this case (INDEPENDENT_CLOSURE below).
 """
 import argparse, copy, json, os, statistics, subprocess, sys, tempfile, time
@@ -35,7 +35,7 @@ CONVERGED = os.path.join(ROOT, "bench", "converged.json")
 
 PAPER = {"integrator": "explicit", "beta": 0.1, "spacing": 0.025, "placement": "lattice"}
 CONVERGED_NUMERICS = {"integrator": "rkl2", "spacing": 0.0125, "step_change": 0.05, "placement": "lattice"}
-INDEPENDENT_CLOSURE = 13.85  # d: P1 FE and vertex-centred FV enthalpy models, converged (issue 12)
+INDEPENDENT_CLOSURE = 13.85  # d: P1 FE and vertex-centred FV enthalpy models, converged (tests/test_shaft_section.cpp)
 CONVERGENCE_SPACINGS = [0.04, 0.03, 0.02, 0.015, 0.01, 0.007]
 
 

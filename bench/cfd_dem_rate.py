@@ -3,7 +3,7 @@
 5 cm cavity, 1 cm fluid cells (20^3), water entering the y = 0 face at
 0.1 m/s, run through `frostwall run` on 1 and on 2 MPI ranks in one script
 run. Prints DEM particle-steps per second per core and the coupling's share
-of the wall time (fluid grid, deposits, forces; issue 15 asks < 10 %).
+of the wall time (fluid grid, deposits, forces; the target is < 10 %).
 
   python3 bench/cfd_dem_rate.py              # 80 000 grains settled, then 0.04 s of flow
   python3 bench/cfd_dem_rate.py --grains 20000 --end 0.01 --settle 0.05

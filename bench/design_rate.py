@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Issue 18's cost: the single ring in sand (120 days, 1 thread) with the fixed
+"""The design features' cost: the single ring in sand (120 days, 1 thread) with the fixed
 pipe wall, with brine behind a film (the wall's temperature solved at every
 stage), with the wall check on the -8 degC isotherm added, and the shipped
 three-layer project (three such runs side by side on the machine's cores,

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""What each speed lever buys on the CFD-DEM leak case (issue 16), as ratios
+"""What each speed lever buys on the CFD-DEM leak case, as ratios
 in one script run, and whether the answer moves with it.
 
 Part A, the paper's case (projects/leak_cavity.json: 116 000 grains, 0.2 m

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Issue 17's speed target: the single ring in sand at 1 m/d of seepage against
+"""The seepage run's speed target: the single ring in sand at 1 m/d of seepage against
 still water, CPU seconds on one thread over the first `--days` (0.5 by default:
 the full 120 days under seepage take more than an hour). Four rows in one script
 run: still water on its wedge (the product's run), still water on the full ring

@@ -89,7 +89,7 @@ TEST_CASE("bad project files stop the run with status 2 and write nothing", "[sh
 }
 
 // Without numerics.max_particles the limit comes from this machine's
-// memory (run/capacity.hpp): a micrometre spacing is far beyond any.
+// memory (freezing/capacity.hpp): a micrometre spacing is far beyond any.
 TEST_CASE("a project the machine cannot hold is refused before any work", "[shared][cli]") {
   ScratchDir dir;
   {

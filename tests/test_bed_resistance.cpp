@@ -2,7 +2,7 @@
 // (pore_water/bed_resistance.hpp) against independent numbers:
 //  - CFDEMcoupling's Ergun case (d 1 mm, porosity 0.4513, bed 0.0156 m,
 //    rho_f 10, nu 1.5e-4): dP = 23.0, 115.1, 230.5 Pa at U = 0.002, 0.01,
-//    0.02 m/s (issue 15, check 2's reference values);
+//    0.02 m/s (the reference values of the fixed-bed check, test_cfd_dem.cpp);
 //  - Wen-Yu's dilute limit: the Schiller-Naumann drag of the grains in a
 //    unit volume, summed grain by grain (pore_water/drag_law.hpp; the
 //    drag coefficient is shared, the voidage, grain count and area not);

@@ -1,4 +1,4 @@
-// Brine pipes (issue 18): a Robin condition at the pipe wall, q = h (T_wall -
+// Brine pipes: a Robin condition at the pipe wall, q = h (T_wall -
 // T_brine). Checked against the exact steady solution round one pipe (a
 // film and a conducting annulus in series), against the fixed-temperature
 // run as h grows, and for the heat it takes out: the film law integrated

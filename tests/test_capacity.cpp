@@ -1,6 +1,6 @@
 // Story: a project the machine cannot hold is refused before any particle
 // is placed, so the estimate must be close to what placement then makes.
-// The estimate (run/capacity.hpp) integrates the spacing the placement asks
+// The estimate (freezing/capacity.hpp) integrates the spacing the placement asks
 // for over the simulated region; it is compared with the particles the
 // builder actually places: the graded main job at two spacings, a graded
 // four-hole, a lattice wedge, the full ring (symmetry off) and a graded

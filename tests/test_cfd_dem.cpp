@@ -1,4 +1,4 @@
-// Story: the CFD-DEM engine's checks (issue 15), each through the shipped
+// Story: the CFD-DEM engine's checks, each through the shipped
 // project and the command line, against formulas written out here:
 //  - check 1: one grain settles at its drag law's terminal velocity;
 //  - check 2: a fixed bed's pressure drop is Ergun's, and the grains'

@@ -6,7 +6,7 @@
 // each front is the 1-D Neumann solution X = 2 lambda sqrt(t), lambda from
 // the transcendental equation for the given latent heat (computed here by
 // bisection; 0.70766 for L = 0.25, 0.52026 for L = 1). Tolerance: 1 % at
-// the default spacing (the number), and the error must fall as the
+// the default spacing (the acceptance tolerance), and the error must fall as the
 // spacing halves (it is first order: the front is read where the liquid
 // fraction crosses 0.5). The diagonal front (the corner freezes ahead of
 // both faces) is reported and must lie beyond sqrt(2) X.

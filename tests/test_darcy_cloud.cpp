@@ -1,13 +1,14 @@
-// Issue 17, check 2: a uniform Darcy flow past an impermeable disc (a
-// frozen column as an obstacle), on a particle cloud with the heat's own
-// SPH pairs. Potential flow gives psi = -U x (1 + a^2 / r^2): twice the
-// far-field speed at the disc's flanks and a stagnation point upstream.
-// The far field holds the exact potential, so the only error is the
-// cloud's. Checked within 2 % beside the disc, with the discrete flow
-// balanced at every particle to round-off, and the error falling as the
-// cloud is refined. (The 2 % beside the disc is a pending check, below.) The disc is made two ways: particles that carry no
-// flow (a pipe), and ground whose relative permeability is the law's floor
-// (frozen soil) - the second is how freezing blocks the flow in a run.
+// A uniform Darcy flow past an impermeable disc (a frozen column as an
+// obstacle), on a particle cloud with the heat's own SPH pairs. Potential
+// flow gives psi = -U x (1 + a^2 / r^2): twice the far-field speed at the
+// disc's flanks and a stagnation point upstream. The far field holds the
+// exact potential, so the only error is the cloud's. Checked within 2 %
+// beside the disc, with the discrete flow balanced at every particle to
+// round-off, and the error falling as the cloud is refined. (The 2 % beside
+// the disc is a pending check, below.) The disc is made two ways: particles
+// that carry no flow (a pipe), and ground whose relative permeability is
+// the law's floor (frozen soil) - the second is how freezing blocks the
+// flow in a run.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <fmt/core.h>
@@ -102,7 +103,7 @@ TEST_CASE("Darcy flow past a disc: balanced at every particle, the potential con
   }
 }
 
-// The issue's 2 % at the flanks is not met yet: the flow beside the disc is
+// The required 2 % at the flanks is not met yet: the flow beside the disc is
 // 7.3 % (pipe) and 8.5 % (frozen) off on the fine cloud, and does not fall
 // with refinement. The particles next to the disc lose the pairs that
 // cross it, and the renormalised SPH operator is not consistent on a

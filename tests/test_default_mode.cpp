@@ -4,7 +4,7 @@
 // beta = 0.1) and in frostwall's default mode with no numerics given
 // (graded 2 cm cloud with a 16 cm far field, RKL2 with its own steps), both
 // on the case cut to 20 days. Independent answer: the paper-mode run.
-// Tolerance: 2 % on the closure day (the number; the bench holds
+// Tolerance: 2 % on the closure day (the acceptance tolerance; the bench holds
 // the default to 1 % of a converged run). A default that gains its speed by
 // losing the front's timing (too long a step, too coarse a cloud where the
 // columns meet) fails here. (Graded clouds at 3-5 cm were measured 2.0-3.0 %

@@ -1,4 +1,4 @@
-// Story: one grain settling in still fluid (issue 15, check 1), through
+// Story: one grain settling in still fluid, through
 // LAMMPS (lib/dem) with the fluid force of a drag law (lib/pore_water)
 // and buoyancy added every step:
 //  - a 4 mm quartz grain in water under the Dallavalle law (Di Felice at

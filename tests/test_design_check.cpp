@@ -1,4 +1,4 @@
-// Issue 18's wall check through the command line (run/design_check.hpp): a
+// The wall check through the command line (freezing/design_check.hpp): a
 // scaled ring with the frozen soil's strength and the ground pressure.
 // Every snapshot's allowable strength, the Domke thickness and the
 // utilisation are recomputed here by hand from the summary's own mean

@@ -11,8 +11,8 @@
 // - the Neumann front against the exact sqrt(t), at two spacings;
 // - the study's ties on a constructed pair.
 // An estimate that covers the error is what an engineer can sign on; one
-// far above it would be useless, hence the upper bound of four
-// times the error (or 0.05 d).
+// far above it would be useless, hence the upper bound of four times the
+// error (or 0.05 d).
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <fmt/core.h>

@@ -1,4 +1,4 @@
-// The "no closure" verdict (issue 17) against hand values: a frozen area
+// The "no closure" verdict against hand values: a frozen area
 // that saturates as 1 - exp(-t / tau) enters the 1 % band of its last
 // value where exp(-t/tau) - exp(-T/tau) = 0.01 (1 - exp(-T/tau)); one that
 // grows linearly never does.

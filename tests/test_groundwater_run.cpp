@@ -1,4 +1,4 @@
-// Issue 17 through the command line, on a scaled shaft (6 pipes on a
+// Groundwater through the command line, on a scaled shaft (6 pipes on a
 // 0.8 m ring, 2.5 m domain, 5 cm lattice; closes in about 4 days in still
 // water): a groundwater block with no flow is still water to the last
 // digit; flowing water delays closure more the faster it flows; the heat
@@ -91,7 +91,7 @@ TEST_CASE("Groundwater without flow is still water, and flowing water delays clo
   CHECK(verdict.rfind(fmt::format("closed on day {:.1f}; the last gap, {} (upstream)", closure(fast),
                                   last["between"].get<std::string>()), 0) == 0);
   CHECK(last["closure_day"].get<double>() >= closure(fast));
-  // The wall facing the flow is the thinner (issue 17, check 6), and the
+  // The wall facing the flow is the thinner, and the
   // thinnest ray overall is no thicker than either side's.
   const auto& wall = fast["wall"].back();
   WARN(fmt::format("day {}: wall upstream {:.3f} m, downstream {:.3f} m, thinnest {:.3f} m", wall["day"].get<double>(),
@@ -132,15 +132,11 @@ TEST_CASE("Groundwater without flow is still water, and flowing water delays clo
   }
 }
 
-// The coupled scheme (the water's heat inside the conduction's backward-
-// Euler step) against the explicit limited one on the same ring at 1 m/d:
-// first order in time, so closure comes a little late at the default step
-// change and converges on the explicit run as the step shrinks; the heat
-// balance holds through the water's walls.
-// The coupled step against the explicit limited scheme (held to the
-// advective Courant limit, 592 short steps): the flow is solved again for
-// each step's own ice after two Newton iterations and the limiter is then
-// held, so the closure day stays within 1 % of the explicit run's at a
+// The coupled step (the water's heat inside the conduction's backward-Euler
+// step) against the explicit limited scheme (held to the advective Courant
+// limit, 592 short steps) on the same ring at 1 m/d: the flow is solved
+// again for each step's own ice after two Newton iterations and the limiter
+// is then held, so the closure day stays within 1 % of the explicit run's at a
 // fraction of its steps, and the heat balance closes to the Newton
 // tolerance (1e-7 of the latent heat per particle and step).
 TEST_CASE("Groundwater: the coupled step closes within 1 % of the explicit scheme", "[freezing][groundwater][cli]") {
@@ -299,8 +295,8 @@ TEST_CASE("Groundwater: the Darcy flux in the VTU is the regional flow away from
   });
 }
 
-// Check 6's last clause on the scaled ring (long: about 80 s): at some rate
-// the wall stops closing. At 4 m/d no gap closes in 24 days and the frozen
+// The seepage sweep's last clause on the scaled ring (long: about 80 s): at
+// some rate the wall stops closing. At 4 m/d no gap closes in 24 days and the frozen
 // area levels off, which the verdict says; closure stays null.
 TEST_CASE("Groundwater: at 4 m/d the scaled ring does not close and the verdict says the frozen area stopped growing", "[freezing][groundwater][cli][long]") {
   json p = scaled_ring({4.0, 0.0});
@@ -341,7 +337,7 @@ TEST_CASE("The shipped seepage study, on the scaled ring, delays closure with th
     CHECK(html.find(fmt::format("<td class=\"nowrap\"><a href=\"{0}/report.html\">{0}</a></td>", name)) != std::string::npos);
 }
 
-// Check 6 at full size, coarsened: the shipped seepage study on the single
+// The seepage sweep at full size, coarsened: the shipped seepage study on the single
 // ring in sand (120 days, the coupled step) with the particle spacing
 // doubled (45 000 particles on the half section instead of 174 000): 52
 // minutes on one core of a shared machine (README: the table), so a long test. Closure must come later as the

@@ -1,4 +1,4 @@
-// Issue 17, checks 3 and 5: heat carried by groundwater on the particle
+// Heat carried by groundwater on the particle
 // pairs (thermal/heat_advection.hpp) with the Darcy solver's own pair
 // fluxes (groundwater/darcy_cloud.hpp).
 //  - 1-D advection-conduction between two fixed-temperature faces, steady:

@@ -1,5 +1,5 @@
-// A shaft through layers (issue 18): one cross-section per layer, run side by
-// side. Each layer's results must be those of the same project run alone
+// A shaft through layers: one cross-section per layer, run side by side.
+// Each layer's results must be those of the same project run alone
 // with that layer's soil, depth, pressure and strength; the governing layer
 // is the one met last; the report leads with its verdict.
 #include <catch2/catch.hpp>

@@ -1,4 +1,4 @@
-// Issue 17, check 1: a line heat source in a uniform Darcy flow, without
+// A line heat source in a uniform Darcy flow, without
 // phase change (OpenGeoSys' "moving line source" benchmark data:
 // lambda 2.5 W/(m K), rho c 2.818 MJ/(m3 K), q = 1e-7 m/s, q_L = 20 W/m,
 // two years). The exact temperature rise (Diao et al. 2004):

@@ -4,7 +4,7 @@
 // is at X = 2 lambda sqrt(t) with lambda from the transcendental equation
 // (0.5 here, so X = sqrt(t)), temperatures erf/erfc profiles (Carslaw &
 // Jaeger 11.2). Tolerance: 1 % on the front at the finest spacing (the
-// issue's number; the paper's SPH reached 1.2 %), and the error must fall
+// acceptance tolerance; the paper's SPH reached 1.2 %), and the error must fall
 // as the spacing halves twice: a wrong flux or latent-heat balance shows
 // as an error that stalls.
 #include <catch2/catch.hpp>

@@ -1,4 +1,4 @@
-// Issue 17, check 4: ice blocks the pores on every permeability law. Each
+// Ice blocks the pores on every permeability law. Each
 // law is 1 in unfrozen ground, never rises as ice forms, falls by orders
 // of magnitude by the time the pores are frozen (down to the floor), and
 // matches a hand value; research codes have been seen to switch this

@@ -330,7 +330,7 @@ TEST_CASE("implausible but computable input loads with warnings", "[shared][proj
                                 "pipe.temperature: 0.75 degC is above the soil's freezing point (-0.25 degC); a "
                                 "pipe this warm cannot freeze the ground"});
   }
-  SECTION("brine warmer than the freezing point (issue 18)") {
+  SECTION("brine warmer than the freezing point") {
     const Project p = load_edited("single_ring_sand.json",
                                   {{"pipe", {{"temperature", nullptr}, {"boundary", "brine"}, {"brine_temperature", 2.0},
                                              {"heat_transfer_coefficient", 300}}}});

@@ -1,6 +1,6 @@
 // Stories of a shaft section (SPH paper section 3): 26 pipes of 127 mm on a
 // 5 m ring at -20 C in sand at 15 C, far field 15 C at 15 m. These run at a
-// coarse spacing (5-10 cm) to stay fast; the closing note of the issue has
+// coarse spacing (5-10 cm) to stay fast; docs/verification.md (F16) has
 // the converged numbers.
 #include <catch2/catch.hpp>
 #include <map>
@@ -26,7 +26,7 @@ json coarse(double spacing, double end_days, const json& extra = json::object())
 // "off"), run without any mirror plane, so the two runs differ only in how
 // the symmetry planes are handled: images folded onto their sources, the
 // 52 images near the apex, pipes cut in half. Exact answer: the same field,
-// up to summation order. The issue's tolerance is 1 % of the 35 K range;
+// up to summation order. The acceptance tolerance is 1 % of the 35 K range;
 // we hold the runs to 1e-6 K, so that a slip in the images cannot hide in
 // the discretisation error. (A full ring on a lattice of its own differs
 // by the lattice-placement error around each pipe: about 1.6 K near the
@@ -135,8 +135,8 @@ TEST_CASE("Shaft layouts close in the expected order and time", "[freezing][shaf
 // (graded cloud, RKL2; nothing in "numerics") against two independent
 // solvers that share no code with frostwall: a P1 finite-element model with
 // lumped mass and a vertex-centred finite-volume enthalpy model, both with
-// the 127 mm pipes cut out exactly and converged in mesh and step (issue
-// 12). Closure is the first fully frozen path; the references use the same
+// the 127 mm pipes cut out exactly and converged in mesh and step.
+// Closure is the first fully frozen path; the references use the same
 // definition, which they reproduce to 0.004 d over three meshes. Tolerance:
 // 1 %, and 0.02 d for the four-hole (closed after about a day, when its
 // inner ring of 52 pipes joins).

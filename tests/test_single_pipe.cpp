@@ -7,7 +7,7 @@
 //    isoline varies by less than one particle spacing around the pipe
 //    (a square lattice has preferred directions; this bounds them);
 //  - its mean radius agrees with the radial solution within 2 % (the
-//    issue's number), and the error falls as the spacing is refined.
+//    acceptance tolerance), and the error falls as the spacing is refined.
 #include <catch2/catch.hpp>
 
 #include "post/isoline.hpp"

@@ -3,7 +3,7 @@
 // Tf = -0.25 C. At steady state the frozen front sits where the conductive
 // fluxes balance, ks (Tf - Ttop) / X = kl (Tbot - Tf) / (0.20 - X), which
 // gives X = 0.1539 m from the top (a hand calculation, done below).
-// Tolerance 2 % (the number); the front depth error of the
+// Tolerance 2 % (the acceptance tolerance); the front depth error of the
 // lattice scheme is a fraction of the spacing (2.5 mm = 1.6 %... of X is
 // the worst case, and it sits well inside).
 // The paper reports the front settling after about 35 h; we report ours.

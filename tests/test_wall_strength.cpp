@@ -1,5 +1,5 @@
-// Issue 18: the thickness a frozen shaft wall needs (design/wall_strength.hpp)
-// against hand values computed from the formulas as printed in the issue,
+// The thickness a frozen shaft wall needs (design/wall_strength.hpp)
+// against hand values computed from the formulas as written out there,
 // and the invariants a designer relies on: a colder (stronger) wall needs
 // less thickness, Mohr-Coulomb without friction is the Tresca limit with
 // s = 2 c, and a strength table must not weaken as the soil gets colder.
@@ -11,7 +11,7 @@
 using namespace frostwall::design;
 
 TEST_CASE("Wall thickness formulas match hand values", "[freezing][design]") {
-  // a = 3.5 m, P = 2.6 MPa, s = 5 MPa (issue 18): P / s = 0.52.
+  // a = 3.5 m, P = 2.6 MPa, s = 5 MPa: P / s = 0.52.
   CHECK(required_thickness(Formula::domke, 3.5, 2.6, 5.0).value() == Approx(2.70).margin(0.005));
   CHECK(required_thickness(Formula::plastic_tresca, 3.5, 2.6, 5.0).value() == Approx(2.39).margin(0.005));
   CHECK(required_thickness(Formula::lame_mises, 3.5, 2.6, 5.0).value() == Approx(7.605).margin(0.005));

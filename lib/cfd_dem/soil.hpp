@@ -1,4 +1,4 @@
-// What the CFD-DEM paper measures of the ground over a leak (issue 16),
+// What the CFD-DEM paper measures of the ground over a leak,
 // found from every rank's grains at an output time (collective calls):
 // the porosity of the zone above the cavity, the fluid at point A's cell
 // and the forces on its grains, the surface's settlement along the line

@@ -1,9 +1,9 @@
-// The brine film's heat transfer coefficient in a freeze pipe (issue 18):
+// The brine film's heat transfer coefficient in a freeze pipe:
 // brine goes down the supply pipe and returns up the annulus between it and
 // the freeze pipe, taking heat from the freeze pipe's wall. Fully developed
 // flow, hydraulic diameter D_h = d_o - d_i, Re = rho v D_h / mu, Pr = mu c_p / k:
 //  - laminar, Re <= 2300: Nu = 4.9 (annulus, heat through the outer wall,
-//    the inner one insulated; the value the issue names);
+//    the inner one insulated; a fixed design value, whatever the radius ratio);
 //  - turbulent, Re >= 1e4: Gnielinski, Nu = (f/8)(Re - 1000) Pr /
 //    (1 + 12.7 sqrt(f/8)(Pr^(2/3) - 1)), f = (0.79 ln Re - 1.64)^-2;
 //  - between: transitional, linear in Re between the two ends (Gnielinski's

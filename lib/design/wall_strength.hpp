@@ -1,5 +1,5 @@
 // The thickness a frozen shaft wall needs to carry the lateral ground
-// pressure (issue 18), from the classical thick-cylinder formulas, with a
+// pressure, from the classical thick-cylinder formulas, with a
 // the excavation radius, P the lateral pressure at the layer's depth and s
 // the allowable strength of the frozen soil at the wall's mean temperature
 // (allowable factor times the uniaxial compressive strength):

@@ -1,4 +1,4 @@
-// The wall check of a shaft run (issue 18): at each snapshot, the thickness
+// The wall check of a shaft run: at each snapshot, the thickness
 // every formula asks for (design/wall_strength.hpp) with the allowable
 // strength at the mean temperature of the thinnest ray's frozen stretch,
 // the governing formula's value, and utilisation = required / achieved

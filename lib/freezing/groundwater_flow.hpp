@@ -1,4 +1,4 @@
-// Groundwater flowing through a freezing shaft section (issue 17): the
+// Groundwater flowing through a freezing shaft section: the
 // steady Darcy flow on the run's own particle pairs and the heat it
 // carries, either inside the conduction's backward-Euler step (coupled,
 // the default) or alternated with the conduction (Strang: half the water's

@@ -289,7 +289,10 @@ void ShaftResults::write_tables(const std::filesystem::path& out) const {
     text += "\n";
     for (std::size_t i = 0; i < profile_radii_.size(); ++i) {
       text += fmt::format("{:.4g}", profile_radii_[i]);
-      for (const auto& p : profiles) text += "," + csv_number(std::isnan(p[i]) ? std::nullopt : std::optional(p[i]));
+      for (const auto& p : profiles) {
+        text += ',';
+        text += csv_number(std::isnan(p[i]) ? std::nullopt : std::optional(p[i]));
+      }
       text += "\n";
     }
     return text;

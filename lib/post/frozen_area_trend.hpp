@@ -1,5 +1,5 @@
-// Whether a wall that has not closed ever will (issue 17): the frozen area
-// followed in time. Under strong seepage the heat the water brings balances
+// Whether a wall that has not closed ever will: the frozen area followed
+// in time. Under strong seepage the heat the water brings balances
 // what the pipes take, and the frozen area levels off with a gap still
 // open. Steady from day N: the area stays within `band` (1 %) of its last
 // value from N on, and grew by less than that over the last fifth of the

@@ -1,4 +1,4 @@
-// Closure per gap (issue 17): the day the straight bridge between two
+// Closure per gap: the day the straight bridge between two
 // neighbouring pipes of a ring is fully frozen, i.e. the latent heat left
 // (H / H_latent, as the closure detector uses) is at or below 0 at every
 // free particle within 0.75 of its own spacing of the segment between the

@@ -46,8 +46,8 @@ class PathWalker {
   bool number_float(Json::number_float_t, const std::string&) { return value(); }
   bool string(std::string&) { return value(); }
   bool binary(Json::binary_t&) { return value(); }
-  bool start_object(std::size_t) { return frames_.push_back({true}), true; }
-  bool start_array(std::size_t) { return frames_.push_back({false}), true; }
+  bool start_object(std::size_t) { return frames_.push_back(Frame{true, {}, 0, {}}), true; }
+  bool start_array(std::size_t) { return frames_.push_back(Frame{false, {}, 0, {}}), true; }
   bool end_object() { return frames_.pop_back(), value(); }
   bool end_array() { return frames_.pop_back(), value(); }
   bool key(std::string& k) {
@@ -85,8 +85,16 @@ class PathWalker {
   // The path of the value being read, as Node names it: "a.b[2].c".
   std::string path() const {
     std::string p;
-    for (const Frame& f : frames_)
-      p += f.object ? (p.empty() ? "" : ".") + f.key : "[" + std::to_string(f.index) + "]";
+    for (const Frame& f : frames_) {
+      if (!f.object) {
+        p += '[';
+        p += std::to_string(f.index);
+        p += ']';
+      } else {
+        if (!p.empty()) p += '.';
+        p += f.key;
+      }
+    }
     return p;
   }
   std::string source_;

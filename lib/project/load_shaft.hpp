@@ -1,5 +1,6 @@
 // Readers of the shaft section's blocks: the layout, the freeze pipe (fixed
-// wall or brine) and the layers of the ground (issue 18). Internal to lib/project; problems go to the Node.
+// wall or brine) and the layers of the ground. Internal to lib/project;
+// problems go to the Node.
 #pragma once
 
 #include <string>

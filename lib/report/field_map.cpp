@@ -237,7 +237,8 @@ std::string map_html(const RgbaImage& image, const MapWindow& window, const std:
     if (c.points.size() < 2) continue;
     for (std::size_t k = 0; k < c.points.size(); ++k) {
       const auto [x, y] = px(c.points[k]);
-      d += (k == 0 ? "M" : "L") + num(x) + " " + num(y);
+      d += k == 0 ? 'M' : 'L';
+      d += num(x) + " " + num(y);
     }
     if (c.closed) d += "Z";
   }
@@ -253,9 +254,9 @@ std::string map_html(const RgbaImage& image, const MapWindow& window, const std:
       const double len = std::hypot(x1 - x0, y1 - y0);
       if (len < 1.0) continue;
       const double ux = (x1 - x0) / len, uy = (y1 - y0) / len, head = std::min(4.0, 0.4 * len);
-      a += "M" + num(x0) + " " + num(y0) + "L" + num(x1) + " " + num(y1) + "M" + num(x1 - head * (ux - 0.5 * uy)) + " " +
-           num(y1 - head * (uy + 0.5 * ux)) + "L" + num(x1) + " " + num(y1) + "L" + num(x1 - head * (ux + 0.5 * uy)) + " " +
-           num(y1 - head * (uy - 0.5 * ux));
+      a += fmt::format("M{} {}L{} {}M{} {}L{} {}L{} {}", num(x0), num(y0), num(x1), num(y1), num(x1 - head * (ux - 0.5 * uy)),
+                 num(y1 - head * (uy + 0.5 * ux)), num(x1), num(y1), num(x1 - head * (ux + 0.5 * uy)),
+                 num(y1 - head * (uy - 0.5 * ux)));
     }
     o += fmt::format(R"(<path d="{0}" fill="none" stroke="#000" stroke-width="2.2" stroke-opacity="0.5"/>)"
                      R"(<path d="{0}" fill="none" stroke="#fff" stroke-width="1"/>)",

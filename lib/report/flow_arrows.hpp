@@ -1,4 +1,4 @@
-// The groundwater's flow on the temperature maps (issue 17): arrows of the
+// The groundwater's flow on the temperature maps: arrows of the
 // Darcy flux on a square grid over the map window, each the flux of the
 // nearest free particle to its grid point. The point is folded into the
 // simulated section first, and the flux mirrored with it (seepage keeps at

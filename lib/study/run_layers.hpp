@@ -1,4 +1,4 @@
-// A shaft through several layers of ground (issue 18): one cross-section per
+// A shaft through several layers of ground: one cross-section per
 // layer, run side by side as a study's variants (run_study.hpp), each into
 // its own folder <output>/<layer>. Then the layered summary.json beside them:
 // the governing layer's summary (the layer the design waits longest for)

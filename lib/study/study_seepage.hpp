@@ -1,5 +1,5 @@
-// The study page's part for shaft variants under seepage (issue 17, check
-// 6: the same ring at several regional Darcy fluxes): closure against the
+// The study page's part for shaft variants under seepage (the same ring at
+// several regional Darcy fluxes): closure against the
 // flux in one chart, still water at 0, and a table of each variant's
 // closure, last gap and its side, the wall's thinnest upstream and
 // downstream, and the verdict.

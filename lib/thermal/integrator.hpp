@@ -1,6 +1,7 @@
 // Time integrators advance a ThermalModel from t to t + dt. The explicit
-// one is the SPH paper's forward Euler; an implicit one (a later issue)
-// implements the same interface and chooses its own step.
+// one is the SPH paper's forward Euler; the implicit one (backward_euler.hpp)
+// and super time stepping (super_time_stepping.hpp) implement the same
+// interface and choose their own step.
 #pragma once
 
 #include <memory>
