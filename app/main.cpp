@@ -35,7 +35,8 @@ bool show_progress() { return isatty(fileno(stderr)) && std::getenv("CI") == nul
 std::function<void(double, double)> progress_printer(const frostwall::project::TimeSettings& time) {
   if (!show_progress()) return {};
   const double unit = time.unit_seconds();
-  const char* unit_name = time.unit == frostwall::project::TimeUnit::d ? "d" : (time.unit == frostwall::project::TimeUnit::h ? "h" : "s");
+  const char* unit_name =
+      time.unit == frostwall::project::TimeUnit::d ? "d" : (time.unit == frostwall::project::TimeUnit::h ? "h" : "s");
   auto start = std::chrono::steady_clock::now();
   auto last = start;
   return [=](double t, double t_end) mutable {
@@ -109,8 +110,7 @@ int run_command(const std::string& file) {
   });
   if (status != 0) return status;
   // Under mpirun every rank runs this; one says so.
-  if (first_rank())
-    std::cerr << "wrote " << p.output.directory << "\n";
+  if (first_rank()) std::cerr << "wrote " << p.output.directory << "\n";
   return 0;
 }
 
@@ -159,8 +159,8 @@ int study_command(const std::string& file, int jobs, int threads) {
     return 1;
   }
   const auto failed = std::count_if(run.variants.begin(), run.variants.end(), [](const auto& v) { return !v.ok; });
-  std::cerr << fmt::format("wrote {} ({} variants, {} failed, {:.1f} s)\n", (s.output_directory / "study.html").string(),
-                           run.variants.size(), failed, run.seconds);
+  std::cerr << fmt::format("wrote {} ({} variants, {} failed, {:.1f} s)\n",
+                           (s.output_directory / "study.html").string(), run.variants.size(), failed, run.seconds);
   return failed > 0 ? 1 : 0;
 }
 
@@ -173,7 +173,8 @@ int main(int argc, char** argv) {
   std::string project_file;
   int threads = 0;
   run->add_option("project", project_file, "project file (JSON)")->required();
-  auto* check = app.add_subcommand("check", "check a project file without running it; print the particles, steps and an estimated run time");
+  auto* check = app.add_subcommand(
+      "check", "check a project file without running it; print the particles, steps and an estimated run time");
   std::string check_file;
   check->add_option("project", check_file, "project file (JSON)")->required();
   auto* report = app.add_subcommand("report", "rebuild report.html from the files of an output directory");
@@ -183,7 +184,8 @@ int main(int argc, char** argv) {
   std::string study_file;
   int jobs = 0;
   study->add_option("study", study_file, "study file (JSON)")->required();
-  study->add_option("--jobs", jobs, "variants at once, each on --threads threads (default: one per core, 1 thread each)");
+  study->add_option("--jobs", jobs,
+                    "variants at once, each on --threads threads (default: one per core, 1 thread each)");
   app.add_option("--threads", threads, "OpenMP threads (default: all cores; in a study: per variant)");
   app.set_version_flag("--version", FROSTWALL_VERSION);
   try {

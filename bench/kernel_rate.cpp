@@ -16,7 +16,6 @@
 using namespace frostwall;
 using frostwall::bench::seconds_per_call;
 
-
 int main() {
   project::Project p = project::load_project(FROSTWALL_SOURCE_DIR "/projects/single_ring_sand.json");
   p.numerics.integrator = project::IntegratorKind::explicit_euler;
@@ -48,8 +47,9 @@ int main() {
     }
   });
   const double cached = seconds_per_call([&] { model.conduction_rate(rate); });
-  std::printf("  1 thread: harmonic mean per pair in the loop %.2e pairs/s; cached coefficients %.2e pairs/s (%.2fx)\n\n",
-              pairs / inline_mean, pairs / cached, inline_mean / cached);
+  std::printf(
+      "  1 thread: harmonic mean per pair in the loop %.2e pairs/s; cached coefficients %.2e pairs/s (%.2fx)\n\n",
+      pairs / inline_mean, pairs / cached, inline_mean / cached);
   std::printf("  threads  conduction_rate     plain CSR gather    kernel / gather\n");
   for (int threads : {1, 2}) {
     omp_set_num_threads(threads);
@@ -101,9 +101,11 @@ int main() {
   for (std::size_t i = 0; i < model.size(); ++i) built[i] = morton[i] = shuffled[i] = i;
   const double cell = 2.0 * m.h;
   auto code = [&](std::size_t i) {
-    const auto ix = static_cast<std::uint32_t>((X[i][0] + 100.0) / cell), iy = static_cast<std::uint32_t>((X[i][1] + 100.0) / cell);
+    const auto ix = static_cast<std::uint32_t>((X[i][0] + 100.0) / cell),
+               iy = static_cast<std::uint32_t>((X[i][1] + 100.0) / cell);
     std::uint64_t c = 0;
-    for (int b = 0; b < 16; ++b) c |= (std::uint64_t((ix >> b) & 1u) << (2 * b)) | (std::uint64_t((iy >> b) & 1u) << (2 * b + 1));
+    for (int b = 0; b < 16; ++b)
+      c |= (std::uint64_t((ix >> b) & 1u) << (2 * b)) | (std::uint64_t((iy >> b) & 1u) << (2 * b + 1));
     return c;
   };
   std::stable_sort(morton.begin(), morton.end(), [&](std::size_t a, std::size_t b) { return code(a) < code(b); });
@@ -114,7 +116,7 @@ int main() {
   }
   const double t_built = gather_in(built), t_morton = gather_in(morton), t_random = gather_in(shuffled);
   std::printf("\n  memory order (plain gather, 1 thread): as built (rows) %.2e pairs/s, Morton %.2e pairs/s (%.2fx), "
-              "random %.2e pairs/s (%.2fx)\n", pairs / t_built, pairs / t_morton, t_built / t_morton, pairs / t_random,
-              t_built / t_random);
+              "random %.2e pairs/s (%.2fx)\n",
+              pairs / t_built, pairs / t_morton, t_built / t_morton, pairs / t_random, t_built / t_random);
   return 0;
 }

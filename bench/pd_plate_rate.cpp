@@ -17,7 +17,6 @@
 using namespace frostwall;
 using frostwall::bench::seconds_per_call;
 
-
 int main() {
   project::Project p = project::load_project(FROSTWALL_SOURCE_DIR "/projects/plate_cooling.json");
   freezing::Model m = freezing::build_model(p);

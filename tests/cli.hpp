@@ -44,7 +44,8 @@ inline CliRun frostwall_cli(const std::filesystem::path& dir, const std::string&
 }
 
 // The same, and it must succeed (what it printed is shown when it does not).
-inline void require_frostwall(const std::filesystem::path& dir, const std::string& arguments, const CliOptions& o = {}) {
+inline void require_frostwall(const std::filesystem::path& dir, const std::string& arguments,
+                              const CliOptions& o = {}) {
   const CliRun run = frostwall_cli(dir, arguments, o);
   std::ostringstream said;
   for (const auto& line : run.stderr_lines) said << line << "\n";

@@ -14,8 +14,8 @@ namespace frostwall::test {
 // first problem. Comments, <!DOCTYPE> and the text of <style> are skipped;
 // "<x/>" closes itself; HTML void elements need no end tag.
 inline std::string html_balance_problem(const std::string& html) {
-  static const std::vector<std::string> void_elements{"area", "base", "br", "col", "embed", "hr", "img", "input",
-                                                      "link", "meta", "source", "track", "wbr"};
+  static const std::vector<std::string> void_elements{"area",  "base", "br",   "col",    "embed", "hr", "img",
+                                                      "input", "link", "meta", "source", "track", "wbr"};
   std::vector<std::string> open;
   std::size_t pos = 0;
   while ((pos = html.find('<', pos)) != std::string::npos) {
@@ -34,13 +34,15 @@ inline std::string html_balance_problem(const std::string& html) {
     const bool closing = !tag.empty() && tag[0] == '/';
     const bool self_closing = !tag.empty() && tag.back() == '/';
     std::string name;
-    for (std::size_t k = closing ? 1 : 0; k < tag.size() && (std::isalnum(static_cast<unsigned char>(tag[k])) || tag[k] == '-'); ++k)
+    for (std::size_t k = closing ? 1 : 0;
+         k < tag.size() && (std::isalnum(static_cast<unsigned char>(tag[k])) || tag[k] == '-'); ++k)
       name += static_cast<char>(std::tolower(static_cast<unsigned char>(tag[k])));
     if (name.empty()) return "not a tag at " + std::to_string(pos) + ": <" + tag.substr(0, 20);
     pos = end + 1;
     if (closing) {
       if (open.empty() || open.back() != name)
-        return "</" + name + "> closes <" + (open.empty() ? std::string("nothing") : open.back()) + "> at " + std::to_string(pos);
+        return "</" + name + "> closes <" + (open.empty() ? std::string("nothing") : open.back()) + "> at " +
+               std::to_string(pos);
       open.pop_back();
       continue;
     }

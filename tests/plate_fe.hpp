@@ -57,7 +57,10 @@ inline PlateFeResult plate_fe(int N, double dt, const std::vector<double>& times
       for (int b = 0; b < 3; ++b) kt.emplace_back(t[a], t[b], k * area * (g[a][0] * g[b][0] + g[a][1] * g[b][1]));
     }
   }
-  auto held = [&](int a) { const auto p = xy(a); return p[0] > L - 1e-12 || p[1] > L - 1e-12; };
+  auto held = [&](int a) {
+    const auto p = xy(a);
+    return p[0] > L - 1e-12 || p[1] > L - 1e-12;
+  };
   std::vector<Eigen::Triplet<double>> at;
   for (const auto& e : kt)
     if (!held(e.row())) at.emplace_back(e.row(), e.col(), dt * e.value());
@@ -87,7 +90,10 @@ inline PlateFeResult plate_fe(int N, double dt, const std::vector<double>& times
         ku.emplace_back(2 * t[a] + 1, 2 * t[b], area * yx);
       }
   }
-  auto fixed_dof = [&](int d) { const auto p = xy(d / 2); return (d % 2 == 0 && p[0] < 1e-12) || (d % 2 == 1 && p[1] < 1e-12); };
+  auto fixed_dof = [&](int d) {
+    const auto p = xy(d / 2);
+    return (d % 2 == 0 && p[0] < 1e-12) || (d % 2 == 1 && p[1] < 1e-12);
+  };
   std::vector<Eigen::Triplet<double>> kc;
   for (const auto& e : ku)
     if (!fixed_dof(e.row()) && !fixed_dof(e.col())) kc.push_back(e);

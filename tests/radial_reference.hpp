@@ -62,12 +62,12 @@ struct RadialProblem {
 };
 
 struct RadialOptions {
-  double growth = 0.0;  // dt = growth * t; 0 = dr / (1 m)
-  double dt_min = 0.0;  // s; 0 = 0.5 dr^2 / alpha_max (first steps)
+  double growth = 0.0;                                      // dt = growth * t; 0 = dr / (1 m)
+  double dt_min = 0.0;                                      // s; 0 = 0.5 dr^2 / alpha_max (first steps)
   double dt_max = std::numeric_limits<double>::infinity();  // s
-  double tolerance_T = 1e-9;   // K, iteration: |T(H) - T on the linearised branch|
-  double tolerance_f = 1e-6;   // iteration: change of liquid fraction (the k lag then leaves ~1e-9)
-  int max_iterations = 60;     // per attempt; then the step is halved
+  double tolerance_T = 1e-9;                                // K, iteration: |T(H) - T on the linearised branch|
+  double tolerance_f = 1e-6;  // iteration: change of liquid fraction (the k lag then leaves ~1e-9)
+  int max_iterations = 60;    // per attempt; then the step is halved
 };
 
 class RadialReference {
@@ -94,7 +94,7 @@ class RadialReference {
     // The branches of the law, read off the law itself (each is linear).
     isothermal_ = p_.soil.freezing_range <= 0.0;
     const double Tf = law_.freezing_point(), Ts = Tf - p_.soil.freezing_range;
-    H_l_ = law_.enthalpy(Tf);  // unfrozen end of freezing
+    H_l_ = law_.enthalpy(Tf);            // unfrozen end of freezing
     rho_cs_ = -law_.enthalpy(Ts - 1.0);  // H = 0 at Ts
     rho_cl_ = law_.enthalpy(Tf + 1.0) - H_l_;
     rho_cm_ = isothermal_ ? 0.0 : H_l_ / p_.soil.freezing_range;  // inside the range
@@ -211,7 +211,8 @@ class RadialReference {
     };
     double worst = 0.0, scale = 0.0;
     for (std::size_t i = 0; i < n; ++i) {
-      const double out = i + 1 == n ? G_[n] * k[n - 1] * (T_[n - 1] - (p_.adiabatic_far ? 0.0 : p_.T_far)) : face(i + 1);
+      const double out = i + 1 == n ? G_[n] * k[n - 1] * (T_[n - 1] - (p_.adiabatic_far ? 0.0 : p_.T_far))
+                                    : face(i + 1);
       const double net = face(i) - out;
       worst = std::max(worst, std::abs(V_[i] * (H_[i] - H_prev_[i]) / dt - net));
       scale = std::max(scale, std::abs(net));

@@ -27,7 +27,8 @@ inline std::pair<std::string, std::string> split_section(std::string_view t, con
   const std::size_t a = t.find(open), b = t.find(close);
   REQUIRE(a != std::string_view::npos);
   REQUIRE(b != std::string_view::npos);
-  return {std::string(t.substr(a, b + close.size() - a)), std::string(t.substr(0, a)) + std::string(t.substr(b + close.size()))};
+  return {std::string(t.substr(a, b + close.size() - a)),
+          std::string(t.substr(0, a)) + std::string(t.substr(b + close.size()))};
 }
 
 }  // namespace frostwall::test

@@ -52,11 +52,13 @@ std::size_t march(freezing::Model& m, const std::vector<double>& times, At&& at)
 // as exp(-2 pi^2 t); numerics: the project's "numerics" (JSON).
 inline double insulated_sine_mode_error(const std::string& numerics) {
   const double t_end = 0.05;
-  const std::string insulated = R"({ "left": "adiabatic", "right": "adiabatic", "top": "adiabatic", "bottom": "adiabatic" })";
+  const std::string insulated =
+      R"({ "left": "adiabatic", "right": "adiabatic", "top": "adiabatic", "bottom": "adiabatic" })";
   auto m = freezing::build_model(rectangle_project(1.0, 1.0, insulated, unit_soil(-100.0, 0.0), 5.0, t_end, numerics));
   const auto& x = m.particles().position;
   auto mode = [&](std::size_t i) { return std::cos(M_PI * x[i][0]) * std::cos(M_PI * x[i][1]); };
-  for (std::size_t i = 0; i < m.model->free_count(); ++i) m.model->set_enthalpy(i, m.model->law().enthalpy(5.0 + mode(i)));
+  for (std::size_t i = 0; i < m.model->free_count(); ++i)
+    m.model->set_enthalpy(i, m.model->law().enthalpy(5.0 + mode(i)));
   double error = 0.0;
   march(m, {t_end}, [&](std::size_t) {
     const double decay = std::exp(-2.0 * M_PI * M_PI * t_end);
@@ -72,7 +74,8 @@ inline double insulated_sine_mode_error(const std::string& numerics) {
 inline double cooled_half_space_error(double dx, const std::string& numerics) {
   const double t_end = 0.02;
   auto m = freezing::build_model(rectangle_project(
-      1.0, 2 * dx, R"({ "left": { "temperature": 0.0 }, "right": "adiabatic", "top": "adiabatic", "bottom": "adiabatic" })",
+      1.0, 2 * dx,
+      R"({ "left": { "temperature": 0.0 }, "right": "adiabatic", "top": "adiabatic", "bottom": "adiabatic" })",
       unit_soil(-100.0, 0.0), 1.0, t_end, numerics));
   double error = 0.0;
   march(m, {t_end}, [&](std::size_t) {

@@ -47,13 +47,20 @@ TEST_CASE("Annulus film: laminar Nu 4.9, Gnielinski turbulent, the band between 
   }
 }
 
-TEST_CASE("A brine pipe may take its film from the annulus flow: the run uses that h and reports the flow", "[freezing][brine][cli]") {
+TEST_CASE("A brine pipe may take its film from the annulus flow: the run uses that h and reports the flow",
+          "[freezing][brine][cli]") {
   nlohmann::json p = {
       {"name", "brine film from the flow"},
       {"layout", {{"pattern", "single"}, {"outer_ring", {{"radius", 0.8}, {"count", 6}, {"start_angle_deg", 0.0}}}}},
-      {"pipe", {{"diameter", 0.127}, {"boundary", "brine"}, {"brine_temperature", -25.0},
-                {"annulus", {{"inner_diameter", 0.0603}, {"outer_diameter", 0.1143}, {"flow_m3_per_h", 1.5},
-                             {"brine", {{"density", 1290}, {"viscosity", 0.0098}, {"conductivity", 0.52}, {"heat_capacity", 2700}}}}}}},
+      {"pipe",
+       {{"diameter", 0.127},
+        {"boundary", "brine"},
+        {"brine_temperature", -25.0},
+        {"annulus",
+         {{"inner_diameter", 0.0603},
+          {"outer_diameter", 0.1143},
+          {"flow_m3_per_h", 1.5},
+          {"brine", {{"density", 1290}, {"viscosity", 0.0098}, {"conductivity", 0.52}, {"heat_capacity", 2700}}}}}}},
       {"soil", "sand"},
       {"domain", {{"outer_radius", 2.5}, {"initial_temperature", 10.0}, {"far_field", {{"temperature", 10.0}}}}},
       {"time", {{"end", 4}, {"unit", "d"}, {"snapshots", {4}}}},

@@ -63,28 +63,33 @@ bool contains(const std::vector<std::string>& lines, const std::string& line) {
 TEST_CASE("bad project files stop the run with status 2 and write nothing", "[shared][cli]") {
   int cases = 0;
   for (const fs::path& bad_dir : {bad_dir, layout_dir, run_dir})
-  for (const auto& entry : fs::directory_iterator(bad_dir)) {
-    if (entry.path().extension() != ".json") continue;
-    ++cases;
-    const std::string name = entry.path().stem().string();
-    const std::string file = entry.path().filename().string();
-    INFO("bad case " << name);
-    ScratchDir dir;
-    fs::copy_file(entry.path(), dir.path / file);
+    for (const auto& entry : fs::directory_iterator(bad_dir)) {
+      if (entry.path().extension() != ".json") continue;
+      ++cases;
+      const std::string name = entry.path().stem().string();
+      const std::string file = entry.path().filename().string();
+      INFO("bad case " << name);
+      ScratchDir dir;
+      fs::copy_file(entry.path(), dir.path / file);
 
-    // `frostwall check` refuses it with the same lines and status.
-    for (const char* command : {"run", "check"}) {
-      INFO(command);
-      const auto cli = frostwall::test::frostwall_cli(dir.path, std::string(command) + " '" + file + "'", {"", 10});
-      CHECK(cli.exit_status == 2);
-      for (const auto& expected : lines_of(bad_dir / (name + ".expected"))) {
-        INFO("stderr:\n" << [&] { std::string s; for (const auto& l : cli.stderr_lines) s += l + "\n"; return s; }());
-        CHECK(contains(cli.stderr_lines, expected));
+      // `frostwall check` refuses it with the same lines and status.
+      for (const char* command : {"run", "check"}) {
+        INFO(command);
+        const auto cli = frostwall::test::frostwall_cli(dir.path, std::string(command) + " '" + file + "'", {"", 10});
+        CHECK(cli.exit_status == 2);
+        for (const auto& expected : lines_of(bad_dir / (name + ".expected"))) {
+          INFO("stderr:\n"
+               << [&] {
+                    std::string s;
+                    for (const auto& l : cli.stderr_lines) s += l + "\n";
+                    return s;
+                  }());
+          CHECK(contains(cli.stderr_lines, expected));
+        }
+        CHECK_FALSE(fs::exists(dir.path / "out" / ("bad_" + name)));
+        CHECK_FALSE(fs::exists(dir.path / "out"));
       }
-      CHECK_FALSE(fs::exists(dir.path / "out" / ("bad_" + name)));
-      CHECK_FALSE(fs::exists(dir.path / "out"));
     }
-  }
   CHECK(cases >= 55);
 }
 

@@ -40,7 +40,8 @@ TEST_CASE("bed resistance: Wen-Yu's dilute limit is the grains' own Schiller-Nau
   }
 }
 
-TEST_CASE("bed resistance: the blend is Ergun when dense, Wen-Yu when dilute, continuous at porosity 0.8", "[cfd_dem][pore_water]") {
+TEST_CASE("bed resistance: the blend is Ergun when dense, Wen-Yu when dilute, continuous at porosity 0.8",
+          "[cfd_dem][pore_water]") {
   const Fluid water{1000.0, 1e-3};
   const double d = 4e-3, U = 0.01;
   CHECK(bed_gradient(water, 0.4, d, U) == Approx(ergun_gradient(water, 0.4, d, U)).epsilon(0.01));

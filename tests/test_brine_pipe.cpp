@@ -15,14 +15,15 @@ using nlohmann::json;
 namespace {
 
 json scaled_ring(const json& pipe) {
-  return {{"name", "scaled ring, brine pipes"},
-          {"layout", {{"pattern", "single"}, {"outer_ring", {{"radius", 0.8}, {"count", 6}, {"start_angle_deg", 0.0}}}}},
-          {"pipe", pipe},
-          {"soil", "sand"},
-          {"domain", {{"outer_radius", 2.5}, {"initial_temperature", 10.0}, {"far_field", {{"temperature", 10.0}}}}},
-          {"time", {{"end", 12}, {"unit", "d"}, {"snapshots", {6, 12}}}},
-          {"numerics", {{"placement", "lattice"}, {"spacing", 0.05}}},
-          {"output", {{"directory", "out"}, {"vtk", false}, {"report", false}}}};
+  return {
+      {"name", "scaled ring, brine pipes"},
+      {"layout", {{"pattern", "single"}, {"outer_ring", {{"radius", 0.8}, {"count", 6}, {"start_angle_deg", 0.0}}}}},
+      {"pipe", pipe},
+      {"soil", "sand"},
+      {"domain", {{"outer_radius", 2.5}, {"initial_temperature", 10.0}, {"far_field", {{"temperature", 10.0}}}}},
+      {"time", {{"end", 12}, {"unit", "d"}, {"snapshots", {6, 12}}}},
+      {"numerics", {{"placement", "lattice"}, {"spacing", 0.05}}},
+      {"output", {{"directory", "out"}, {"vtk", false}, {"report", false}}}};
 }
 
 json brine(double h) {
@@ -78,8 +79,9 @@ TEST_CASE("Brine pipe at steady state round one pipe: wall temperature and heat 
   CHECK(heat_error.back() < 0.5 * heat_error.front());
 }
 
-TEST_CASE("Brine pipes on a scaled ring: h to infinity is the fixed wall, a finite film closes later, the heat balances",
-          "[freezing][brine][cli]") {
+TEST_CASE(
+    "Brine pipes on a scaled ring: h to infinity is the fixed wall, a finite film closes later, the heat balances",
+    "[freezing][brine][cli]") {
   json fixed_pipe = {{"diameter", 0.127}, {"temperature", -20.0}};
   const json fixed = frostwall::test::run_project(scaled_ring(fixed_pipe));
   const json stiff = frostwall::test::run_project(scaled_ring(brine(1e6)));
@@ -97,14 +99,16 @@ TEST_CASE("Brine pipes on a scaled ring: h to infinity is the fixed wall, a fini
     CHECK(row[2].get<double>() > 0.0);  // heat extracted: into the brine
   }
   for (const auto& row : stiff["brine"]["series"]) CHECK(std::abs(row[1].get<double>() + 20.0) < 0.01);
-  WARN(fmt::format("closure: fixed wall {:.3f} d, h = 1e6 {:.3f} d, h = 100 {:.3f} d; h = 100 wall {:.2f} degC on day {}",
-                   c_fixed, c_stiff, c_laminar, laminar["brine"]["series"].back()[1].get<double>(),
-                   laminar["brine"]["series"].back()[0].get<double>()));
+  WARN(fmt::format(
+      "closure: fixed wall {:.3f} d, h = 1e6 {:.3f} d, h = 100 {:.3f} d; h = 100 wall {:.2f} degC on day {}", c_fixed,
+      c_stiff, c_laminar, laminar["brine"]["series"].back()[1].get<double>(),
+      laminar["brine"]["series"].back()[0].get<double>()));
   for (const json* s : {&stiff, &laminar}) {
     // Energy: the ground's stored heat changes by what crosses the walls;
     // what crosses the pipe walls is what the film law passes to the brine.
     const auto& hb = (*s)["heat_balance"];
-    const double stored = hb["stored_change"].get<double>(), through_pipes = hb["from_boundaries"]["pipes"].get<double>();
+    const double stored = hb["stored_change"].get<double>(),
+                 through_pipes = hb["from_boundaries"]["pipes"].get<double>();
     CHECK(std::abs(stored - heat_from_boundaries(*s)) < 1e-6 * std::abs(stored));
     CHECK((*s)["brine"]["extracted_by_film"].get<double>() == Approx(-through_pipes).epsilon(0.01));
   }

@@ -52,13 +52,14 @@ std::string chromium(const std::string& arguments, const fs::path& page, const s
 
 struct Screenshot {
   int width = 0, height = 0;
-  double luminance_sd = 0.0;     // spread of the pixels' brightness
-  double non_white = 0.0;        // fraction of pixels that are not page white
+  double luminance_sd = 0.0;  // spread of the pixels' brightness
+  double non_white = 0.0;     // fraction of pixels that are not page white
 };
 
 Screenshot screenshot(const fs::path& page, const fs::path& png, int width, int height) {
   fs::remove(png);
-  chromium(fmt::format("--screenshot='{}' --window-size={},{}", png.string(), width, height), page, png.stem().string());
+  chromium(fmt::format("--screenshot='{}' --window-size={},{}", png.string(), width, height), page,
+           png.stem().string());
   Screenshot s;
   if (!fs::exists(png)) return s;
   vtkNew<vtkPNGReader> reader;
@@ -103,7 +104,8 @@ std::vector<std::string> image_sources(const std::string& dom) {
 
 }  // namespace
 
-TEST_CASE("Headless Chromium renders report.html and study.html: right size, not blank, images inline", "[shared][browser]") {
+TEST_CASE("Headless Chromium renders report.html and study.html: right size, not blank, images inline",
+          "[shared][browser]") {
   INFO("chromium is required: CI installs it from .ci/setup (apt-get install chromium)");
   REQUIRE(have_chromium());
   fs::remove_all(artifacts);
@@ -127,7 +129,12 @@ TEST_CASE("Headless Chromium renders report.html and study.html: right size, not
     REQUIRE(v.ok);
   }
 
-  const struct { fs::path page; const char* png; int width, height; std::size_t images; } pages[] = {
+  const struct {
+    fs::path page;
+    const char* png;
+    int width, height;
+    std::size_t images;
+  } pages[] = {
       {artifacts / "study" / "single" / "report.html", "report.png", 1200, 4200, 3},
       {artifacts / "study" / "study.html", "study.png", 1200, 1400, 0},
   };
@@ -170,7 +177,8 @@ void check_plain_page(const fs::path& page, const std::string& png, const std::s
   for (std::size_t pos = 0; (pos = dom.find("alt=\"temperature map", pos)) != std::string::npos; ++pos) ++maps;
   CHECK(maps == temperature_maps);
   for (const auto& src : image_sources(dom)) CHECK(src.rfind("data:image/png;base64,", 0) == 0);
-  for (const char* absent : {"Pipe temperature", "Design targets", "Design check", "Closure of the frozen wall", "Wendland"}) {
+  for (const char* absent :
+       {"Pipe temperature", "Design targets", "Design check", "Closure of the frozen wall", "Wendland"}) {
     INFO(absent);
     CHECK(dom.find(absent) == std::string::npos);
   }
@@ -178,25 +186,32 @@ void check_plain_page(const fs::path& page, const std::string& png, const std::s
 
 }  // namespace
 
-TEST_CASE("Headless Chromium shows a PD plate's report: the method, its cards, temperature maps, no shaft parts", "[shared][browser][pd]") {
+TEST_CASE("Headless Chromium shows a PD plate's report: the method, its cards, temperature maps, no shaft parts",
+          "[shared][browser][pd]") {
   REQUIRE(have_chromium());
   fs::create_directories(artifacts);
   const fs::path out = artifacts / "plate";
   fs::remove_all(out);
   // plate_cooling at 0.5 mm (400 particles), 100 s, two snapshots.
-  test::run_shipped("plate_cooling.json",
-              {{"numerics", {{"spacing", 0.0005}}}, {"time", {{"end", 100}, {"unit", "s"}, {"snapshots", {50, 100}}}}}, out);
+  test::run_shipped(
+      "plate_cooling.json",
+      {{"numerics", {{"spacing", 0.0005}}}, {"time", {{"end", 100}, {"unit", "s"}, {"snapshots", {50, 100}}}}}, out);
   check_plain_page(out / "report.html", "plate.png", "bond-based peridynamic (PD) mechanics",
                    {"Largest displacement", "Sensor A, 100 s", "Broken bonds"}, 2);
 }
 
-TEST_CASE("Headless Chromium shows a frost run's report: the method, the pores' cards, temperature maps, no shaft parts", "[shared][browser][frost]") {
+TEST_CASE(
+    "Headless Chromium shows a frost run's report: the method, the pores' cards, temperature maps, no shaft parts",
+    "[shared][browser][frost]") {
   REQUIRE(have_chromium());
   fs::create_directories(artifacts);
   const fs::path out = artifacts / "frost";
   fs::remove_all(out);
   // mortar_frost at 8 µm (1 369 particles), the first 12 ms (five pores start to freeze, bonds break), two snapshots.
-  test::run_shipped("mortar_frost.json", {{"numerics", {{"spacing", 8e-6}}}, {"time", {{"end", 0.012}, {"snapshots", {0.006, 0.012}}}}}, out);
-  check_plain_page(out / "report.html", "frost.png", "Frost damage of a porous solid",
-                   {"Pores frozen", "Pores cracked", "Saturation", "Largest displacement", "Broken bonds", "First crack"}, 2);
+  test::run_shipped("mortar_frost.json",
+                    {{"numerics", {{"spacing", 8e-6}}}, {"time", {{"end", 0.012}, {"snapshots", {0.006, 0.012}}}}},
+                    out);
+  check_plain_page(
+      out / "report.html", "frost.png", "Frost damage of a porous solid",
+      {"Pores frozen", "Pores cracked", "Saturation", "Largest displacement", "Broken bonds", "First crack"}, 2);
 }

@@ -26,10 +26,12 @@ TEST_CASE("capacity: the estimated particle count is within 10 % of the placed o
       {"single ring, graded 4 cm", test::shipped_project("single_ring_sand.json", {{"numerics", {{"spacing", 0.04}}}})},
       {"four-hole, graded default", test::shipped_project("four_hole_sand.json", json::object())},
       {"single ring, lattice 5 cm", test::shipped_project("single_ring_sand.json", lattice)},
-      {"single ring, full ring at 10 cm", test::shipped_project("single_ring_sand.json",
-                                                                {{"numerics", {{"spacing", 0.1}, {"symmetry", "off"}}}})},
-      {"rectangle, graded", test::rectangle_project(1.0, 0.5, R"({"left": {"temperature": 0}, "right": "adiabatic", "top": "adiabatic", "bottom": "adiabatic"})", test::unit_soil(0.5, 1.0),
-                                                    1.0, 0.1, R"({"spacing": 0.01, "placement": "graded"})")},
+      {"single ring, full ring at 10 cm",
+       test::shipped_project("single_ring_sand.json", {{"numerics", {{"spacing", 0.1}, {"symmetry", "off"}}}})},
+      {"rectangle, graded",
+       test::rectangle_project(
+           1.0, 0.5, R"({"left": {"temperature": 0}, "right": "adiabatic", "top": "adiabatic", "bottom": "adiabatic"})",
+           test::unit_soil(0.5, 1.0), 1.0, 0.1, R"({"spacing": 0.01, "placement": "graded"})")},
   };
   for (const auto& c : cases) {
     const auto estimate = freezing::estimate_capacity(c.project, freezing::resolved_spacing(c.project));

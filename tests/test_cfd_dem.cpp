@@ -58,13 +58,15 @@ double ergun(double mu, double rho, double e, double d, double U) {
 
 }  // namespace
 
-TEST_CASE("CFD-DEM check 1: verify_settling, a quartz grain reaches the Dallavalle terminal velocity", "[cfd_dem][verification]") {
+TEST_CASE("CFD-DEM check 1: verify_settling, a quartz grain reaches the Dallavalle terminal velocity",
+          "[cfd_dem][verification]") {
   frostwall::test::TempDir dir;
   const json s = run_project(dir, "verify_settling", {});
   const double d = 0.004, rho_p = 2650.0, rho = 1000.0, mu = 1e-3;
   auto excess = [&](double u) {
     const double Re = rho * u * d / mu, Cd = std::pow(0.63 + 4.8 / std::sqrt(Re), 2);
-    return (rho_p - rho) * g * d * d * d * std::numbers::pi / 6.0 - 0.5 * Cd * rho * std::numbers::pi * d * d / 4.0 * u * u;
+    return (rho_p - rho) * g * d * d * d * std::numbers::pi / 6.0 -
+           0.5 * Cd * rho * std::numbers::pi * d * d / 4.0 * u * u;
   };
   double lo = 1e-6, hi = 10.0;
   for (int it = 0; it < 200; ++it) (excess(0.5 * (lo + hi)) > 0.0 ? lo : hi) = 0.5 * (lo + hi);
@@ -82,26 +84,31 @@ TEST_CASE("CFD-DEM check 2: verify_ergun, a fixed bed's pressure drop follows Er
     const auto& e = s["ergun"][k];
     const double U = e["superficial_velocity"], eps = e["porosity"], L = e["bed_length"], dP = e["pressure_drop_Pa"];
     fmt::print("Ergun bed: U {:.4f} m/s, porosity {:.4f}, dP {:.2f} Pa (formula {:.2f}, CFDEMcoupling {:.1f}); "
-               "grains carry {:.3f} of dP A\n", U, eps, dP, ergun(1.5e-3, 10.0, eps, 1e-3, U) * L, reference[k],
+               "grains carry {:.3f} of dP A\n",
+               U, eps, dP, ergun(1.5e-3, 10.0, eps, 1e-3, U) * L, reference[k],
                e["fluid_force_on_grains_N"].get<double>() / e["pressure_drop_times_area_N"].get<double>());
     CHECK(eps == Approx(0.4513).margin(0.001));
     CHECK(dP == Approx(ergun(1.5e-3, 10.0, eps, 1e-3, U) * L).epsilon(0.05));
     CHECK(dP == Approx(reference[k]).epsilon(0.05));
     // Di Felice's drag plus -V grad p against the pressure drop: within 15 %.
-    CHECK(e["fluid_force_on_grains_N"].get<double>() == Approx(e["pressure_drop_times_area_N"].get<double>()).epsilon(0.15));
+    CHECK(e["fluid_force_on_grains_N"].get<double>() ==
+          Approx(e["pressure_drop_times_area_N"].get<double>()).epsilon(0.15));
   }
 }
 
-TEST_CASE("CFD-DEM: Gidaspow's drag returns to the grains exactly the momentum the fixed bed's water loses", "[cfd_dem]") {
+TEST_CASE("CFD-DEM: Gidaspow's drag returns to the grains exactly the momentum the fixed bed's water loses",
+          "[cfd_dem]") {
   frostwall::test::TempDir dir;
   const json s = run_project(dir, "verify_ergun", [](json& p) {
     p["forces"] = {"gidaspow_drag", "pressure_gradient", "buoyancy"};
   });
   for (const auto& e : s["ergun"])
-    CHECK(e["fluid_force_on_grains_N"].get<double>() == Approx(e["pressure_drop_times_area_N"].get<double>()).epsilon(1e-9));
+    CHECK(e["fluid_force_on_grains_N"].get<double>() ==
+          Approx(e["pressure_drop_times_area_N"].get<double>()).epsilon(1e-9));
 }
 
-TEST_CASE("CFD-DEM check 3: verify_fluidisation, a free bed lifts at Ergun's minimum fluidisation velocity", "[cfd_dem][verification]") {
+TEST_CASE("CFD-DEM check 3: verify_fluidisation, a free bed lifts at Ergun's minimum fluidisation velocity",
+          "[cfd_dem][verification]") {
   frostwall::test::TempDir dir;
   const json s = run_project(dir, "verify_fluidisation", {});
   const auto& f = s["minimum_fluidisation"];
@@ -112,10 +119,12 @@ TEST_CASE("CFD-DEM check 3: verify_fluidisation, a free bed lifts at Ergun's min
   const double weight = grains * volume * (2000.0 - 10.0) * g / area;
   // Ergun's U_mf for this bed: dP(U) L = weight, by bisection.
   double lo = 0.0, hi = 1.0;
-  for (int it = 0; it < 200; ++it) (ergun(1.5e-3, 10.0, eps, 1e-3, 0.5 * (lo + hi)) * L < weight ? lo : hi) = 0.5 * (lo + hi);
-  fmt::print("fluidisation: porosity {:.4f}, U_mf {:.5f} m/s (Ergun {:.5f}, CFDEMcoupling 0.0145 at 0.4513), lift-off at "
-             "{:.5f} m/s; plateau {:.1f} Pa, buoyant weight {:.1f} Pa\n",
-             eps, U_mf, lo, f["lift_velocity_m_s"].get<double>(), f["plateau_pressure_drop_Pa"].get<double>(), weight);
+  for (int it = 0; it < 200; ++it)
+    (ergun(1.5e-3, 10.0, eps, 1e-3, 0.5 * (lo + hi)) * L < weight ? lo : hi) = 0.5 * (lo + hi);
+  fmt::print(
+      "fluidisation: porosity {:.4f}, U_mf {:.5f} m/s (Ergun {:.5f}, CFDEMcoupling 0.0145 at 0.4513), lift-off at "
+      "{:.5f} m/s; plateau {:.1f} Pa, buoyant weight {:.1f} Pa\n",
+      eps, U_mf, lo, f["lift_velocity_m_s"].get<double>(), f["plateau_pressure_drop_Pa"].get<double>(), weight);
   CHECK(f["buoyant_weight_Pa"].get<double>() == Approx(weight).epsilon(1e-6));
   CHECK(U_mf == Approx(lo).epsilon(0.10));
   CHECK(U_mf == Approx(0.0145).epsilon(0.10));
@@ -137,14 +146,15 @@ TEST_CASE("CFD-DEM check 3: verify_fluidisation, a free bed lifts at Ergun's min
   CHECK(m["largest_inflow_minus_outflow_m3_s"].get<double>() < 1e-8 * m["largest_inflow_m3_s"].get<double>());
 }
 
-TEST_CASE("CFD-DEM check 4: upward seepage heaves a quartz column at the critical gradient", "[cfd_dem][verification]") {
+TEST_CASE("CFD-DEM check 4: upward seepage heaves a quartz column at the critical gradient",
+          "[cfd_dem][verification]") {
   frostwall::test::TempDir dir;
   // 2 mm quartz grains in water, periodic sides, the Darcy velocity
   // ramping upward through the settled column.
   const json s = run_project(dir, "verify_fluidisation", [](json& p) {
     p["box"]["high"] = {0.012, 0.012, 0.04};
-    p["grains"] = {{"diameter", 0.002}, {"density", 2650}, {"count", 320}, {"youngs_modulus", 1e7},
-                   {"restitution", 0.5}, {"friction", 0.5}, {"seed", 3}, {"settle_time", 0.2}};
+    p["grains"] = {{"diameter", 0.002},  {"density", 2650}, {"count", 320}, {"youngs_modulus", 1e7},
+                   {"restitution", 0.5}, {"friction", 0.5}, {"seed", 3},    {"settle_time", 0.2}};
     p["fluid"] = {{"density", 1000}, {"viscosity", 1e-3}, {"cells", {1, 1, 20}}};
     p["flow"]["darcy_velocity"] = {{0, 0.01}, {0.6, 0.05}};
     p["time"] = {{"end", 0.6}, {"unit", "s"}, {"snapshots", {0.6}}};
@@ -172,7 +182,8 @@ TEST_CASE("CFD-DEM check 5: two MPI ranks give one rank's result", "[cfd_dem][mp
     CHECK(one["ranks"] == 1);
     CHECK(pair["ranks"] == 2);
     for (std::size_t k = 0; k < one["ergun"].size(); ++k) {
-      CHECK(pair["ergun"][k]["pressure_drop_Pa"].get<double>() == Approx(one["ergun"][k]["pressure_drop_Pa"].get<double>()).epsilon(1e-12));
+      CHECK(pair["ergun"][k]["pressure_drop_Pa"].get<double>() ==
+            Approx(one["ergun"][k]["pressure_drop_Pa"].get<double>()).epsilon(1e-12));
       CHECK(pair["ergun"][k]["fluid_force_on_grains_N"].get<double>() ==
             Approx(one["ergun"][k]["fluid_force_on_grains_N"].get<double>()).epsilon(1e-10));
     }
@@ -183,7 +194,8 @@ TEST_CASE("CFD-DEM check 5: two MPI ranks give one rank's result", "[cfd_dem][mp
       p["grains"]["settle_time"] = 0.0;
     };
     frostwall::test::TempDir a, b;
-    const json one = run_project(a, "verify_fluidisation", falling), pair = run_project(b, "verify_fluidisation", falling, two);
+    const json one = run_project(a, "verify_fluidisation", falling),
+               pair = run_project(b, "verify_fluidisation", falling, two);
     CHECK(pair["ranks"] == 2);
     for (std::size_t k = 0; k < one["snapshots"].size(); ++k) {
       const auto &x = one["snapshots"][k], &y = pair["snapshots"][k];
@@ -196,7 +208,8 @@ TEST_CASE("CFD-DEM check 5: two MPI ranks give one rank's result", "[cfd_dem][mp
     // Hundreds of collisions amplify round-off (the sum order of the
     // Allreduce differs): the grains' paths part, the bed does not.
     frostwall::test::TempDir a, b;
-    const json one = run_project(a, "verify_fluidisation", shorter), pair = run_project(b, "verify_fluidisation", shorter, two);
+    const json one = run_project(a, "verify_fluidisation", shorter),
+               pair = run_project(b, "verify_fluidisation", shorter, two);
     CHECK(pair["ranks"] == 2);
     const auto &x = one["snapshots"].back(), &y = pair["snapshots"].back();
     fmt::print("1 vs 2 ranks: bed {:.7f} / {:.7f} m, porosity {:.6f} / {:.6f}, dP {:.3f} / {:.3f} Pa\n",
@@ -227,7 +240,8 @@ TEST_CASE("CFD-DEM: a settled packing is cached, and the next run starts from it
   // file), so 0.02 s later the bed differs by its relaxation, 1e-4 of it.
   CHECK(second["series_start"]["bed_length_m"].get<double>() ==
         Approx(first["series_start"]["bed_length_m"].get<double>()).epsilon(1e-12));
-  CHECK(second["series_start"]["porosity"].get<double>() == Approx(first["series_start"]["porosity"].get<double>()).epsilon(1e-12));
+  CHECK(second["series_start"]["porosity"].get<double>() ==
+        Approx(first["series_start"]["porosity"].get<double>()).epsilon(1e-12));
   CHECK(second["snapshots"][0]["bed_length_m"].get<double>() ==
         Approx(first["snapshots"][0]["bed_length_m"].get<double>()).epsilon(1e-3));
   // The neighbour lists' settings change the speed, not the answer: every
@@ -249,7 +263,8 @@ TEST_CASE("CFD-DEM: a settled packing is cached, and the next run starts from it
   CHECK(wide["dem_steps"] == plain["dem_steps"]);
   CHECK(wide["snapshots"][0]["bed_length_m"].get<double>() ==
         Approx(plain["snapshots"][0]["bed_length_m"].get<double>()).epsilon(1e-10));
-  CHECK(wide["snapshots"][0]["porosity"].get<double>() == Approx(plain["snapshots"][0]["porosity"].get<double>()).epsilon(1e-10));
+  CHECK(wide["snapshots"][0]["porosity"].get<double>() ==
+        Approx(plain["snapshots"][0]["porosity"].get<double>()).epsilon(1e-10));
   // Another seed is another packing: not the cached one.
   const json other = run_project(dir, "verify_fluidisation", [&](json& p) {
     brief(p);
@@ -257,7 +272,8 @@ TEST_CASE("CFD-DEM: a settled packing is cached, and the next run starts from it
   });
   CHECK_FALSE(other["packing"]["read_from_cache"].get<bool>());
   // dem_commands.txt replays in LAMMPS's own program: the same 480 grains.
-  const std::string replay = "cd '" + dir.path.string() + "' && lmp -log none -in out/dem_commands.txt > replay.txt 2>&1";
+  const std::string replay = "cd '" + dir.path.string() +
+                             "' && lmp -log none -in out/dem_commands.txt > replay.txt 2>&1";
   REQUIRE(std::system(replay.c_str()) == 0);
   std::ifstream in(dir.path / "replay.txt");
   const std::string text((std::istreambuf_iterator<char>(in)), {});
@@ -274,12 +290,14 @@ TEST_CASE("CFD-DEM: the report fills its section and the shared ones, and loads 
   CHECK(html.find("Temperature maps") == std::string::npos);  // no thermal section
   // One row per snapshot, the pressure drops as in summary.json.
   const json s = read_json(dir.path / "out" / "summary.json");
-  for (const auto& sn : s["snapshots"]) CHECK(html.find(fmt::format(">{:.2f}<", sn["pressure_drop_Pa"].get<double>())) != std::string::npos);
+  for (const auto& sn : s["snapshots"])
+    CHECK(html.find(fmt::format(">{:.2f}<", sn["pressure_drop_Pa"].get<double>())) != std::string::npos);
   CHECK(html.find("<svg") != std::string::npos);
   CHECK(html.find("http") == std::string::npos);
 }
 
-TEST_CASE("CFD-DEM: grains that fall into the cavity leave the soil (taken away), and every grain is counted", "[cfd_dem]") {
+TEST_CASE("CFD-DEM: grains that fall into the cavity leave the soil (taken away), and every grain is counted",
+          "[cfd_dem]") {
   // Grains placed above an unlined spherical cavity in still water fall:
   // those over it fall in.
   frostwall::test::TempDir dir;
@@ -313,7 +331,8 @@ TEST_CASE("CFD-DEM: grains that fall into the cavity leave the soil (taken away)
   reader->SetFileName((dir.path / "out" / "grains_0002.vtu").c_str());
   reader->Update();
   auto* grid = reader->GetOutput();
-  vtkDataArray *radius = grid->GetPointData()->GetArray("radius"), *diameter = grid->GetPointData()->GetArray("diameter");
+  vtkDataArray *radius = grid->GetPointData()->GetArray("radius"),
+               *diameter = grid->GetPointData()->GetArray("diameter");
   REQUIRE(radius != nullptr);
   REQUIRE(grid->GetNumberOfPoints() > 0);
   for (vtkIdType i = 0; i < grid->GetNumberOfPoints(); ++i) CHECK(radius->GetTuple1(i) == 0.5 * diameter->GetTuple1(i));

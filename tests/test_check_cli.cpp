@@ -46,7 +46,8 @@ void check_shipped(const std::function<bool(const std::string&)>& take, double s
   int projects = 0;
   for (const auto& entry : fs::directory_iterator(projects_dir)) {
     const std::string name = entry.path().filename().string();
-    if (entry.path().extension() != ".json" || name.starts_with("study_") || !take(name)) continue;  // study files run with `study`
+    if (entry.path().extension() != ".json" || name.starts_with("study_") || !take(name))
+      continue;  // study files run with `study`
     ++projects;
     INFO(name);
     frostwall::test::TempDir dir;

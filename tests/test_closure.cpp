@@ -420,10 +420,10 @@ TEST_CASE("closure: ClosureWatch interpolates contact (b = 0.5) and closure (b =
     watch.observe(0.0, field(1.0), 0.0);
     CHECK_FALSE(watch.time_to_fall(0.05));  // wide open: no limit
     watch.observe(1.0, field(0.9), 0.0);
-    watch.observe(1.5, field(0.8), 0.0);    // falling 0.2 per unit time
+    watch.observe(1.5, field(0.8), 0.0);  // falling 0.2 per unit time
     REQUIRE(watch.time_to_fall(0.05));
     CHECK(*watch.time_to_fall(0.05) == Approx(0.25).epsilon(1e-9));
-    watch.observe(2.0, field(-0.1), 0.0);   // closed: no limit any more
+    watch.observe(2.0, field(-0.1), 0.0);  // closed: no limit any more
     CHECK_FALSE(watch.time_to_fall(0.05));
   }
 

@@ -33,7 +33,8 @@ TEST_CASE("Insulated sine mode decays as exp(-2 pi^2 t), second order", "[freezi
   fmt::print("  spacing   renormalised  order   plain        order\n");
   for (std::size_t k = 0; k < spacings.size(); ++k) {
     if (k == 0)
-      fmt::print("  1/{:<6}  {:.3e}      -      {:.3e}    -\n", std::lround(1 / spacings[k]), renormalised[k], plain[k]);
+      fmt::print("  1/{:<6}  {:.3e}      -      {:.3e}    -\n", std::lround(1 / spacings[k]), renormalised[k],
+                 plain[k]);
     else
       fmt::print("  1/{:<6}  {:.3e}   {:5.2f}    {:.3e}  {:5.2f}\n", std::lround(1 / spacings[k]), renormalised[k],
                  test::observed_order(renormalised[k - 1], renormalised[k]), plain[k],

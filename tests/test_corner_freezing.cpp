@@ -25,7 +25,8 @@ namespace {
 
 double neumann_lambda(double latent_heat) {  // T0 = 0, Tf = 1, Ti = 1.3, unit properties
   auto g = [&](double l) {
-    return std::erf(l) * std::exp(l * l) * (l * latent_heat * std::sqrt(M_PI) + 0.3 * std::exp(-l * l) / std::erfc(l)) - 1.0;
+    return std::erf(l) * std::exp(l * l) * (l * latent_heat * std::sqrt(M_PI) + 0.3 * std::exp(-l * l) / std::erfc(l)) -
+           1.0;
   };
   double a = 1e-6, b = 5.0;
   for (int k = 0; k < 200; ++k) {
@@ -41,8 +42,9 @@ struct Fronts {
 
 Fronts run_corner(const std::string& project, const json& numerics) {
   test::TempDir dir("frostwall-corner");
-  auto p = test::shipped_project(project, {{"numerics", numerics},
-                                           {"output", {{"directory", (dir.path / "out").string()}, {"vtk", false}, {"report", false}}}});
+  auto p = test::shipped_project(
+      project, {{"numerics", numerics},
+                {"output", {{"directory", (dir.path / "out").string()}, {"vtk", false}, {"report", false}}}});
   run::run_project(p, {});
   std::ifstream in(dir.path / "out" / "summary.json");
   const json s = json::parse(in);
@@ -62,11 +64,13 @@ Fronts run_corner(const std::string& project, const json& numerics) {
 }  // namespace
 
 TEST_CASE("Corner freezing (PD): the front far from the corner is Neumann's", "[mechanics][pd][verification][corner]") {
-  for (const auto& [project, L] : {std::pair{"corner_freezing_L025.json", 0.25}, std::pair{"corner_freezing_L1.json", 1.0}}) {
+  for (const auto& [project, L] :
+       {std::pair{"corner_freezing_L025.json", 0.25}, std::pair{"corner_freezing_L1.json", 1.0}}) {
     const double exact = 2.0 * neumann_lambda(L) * std::sqrt(0.1);
     std::vector<double> spacings{0.03, 0.015};
     std::vector<double> errors;
-    for (double dx : spacings) errors.push_back(run_corner(project, {{"method", "pd"}, {"spacing", dx}}).edge / exact - 1.0);
+    for (double dx : spacings)
+      errors.push_back(run_corner(project, {{"method", "pd"}, {"spacing", dx}}).edge / exact - 1.0);
     const Fronts shipped = run_corner(project, json::object());  // the project as shipped (default spacing 7.5 mm)
     fmt::print("\nCorner freezing L = {}: lambda {:.5f}, exact front at t = 0.1 {:.5f}; PD front on y = 1.2: "
                "3 cm {:+.3f} %, 1.5 cm {:+.3f} %, default (7.5 mm) {:+.3f} % (x = 1.2: {:+.3f} %); diagonal {:.4f} "

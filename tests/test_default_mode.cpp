@@ -22,7 +22,8 @@ TEST_CASE("Default mode closes when paper mode does", "[freezing][shaft][accurac
       "single_ring_sand.json",
       {{"numerics", {{"spacing", 0.025}, {"integrator", "explicit"}, {"beta", 0.1}, {"placement", "lattice"}}},
        {"time", time}}));
-  auto fast = freezing::build_model(test::shipped_project("single_ring_sand.json", {{"numerics", nullptr}, {"time", time}}));
+  auto fast =
+      freezing::build_model(test::shipped_project("single_ring_sand.json", {{"numerics", nullptr}, {"time", time}}));
   const auto day_paper = test::closure_day(paper, 20 * 86400.0);
   const auto day_default = test::closure_day(fast, 20 * 86400.0);
   REQUIRE(day_paper);

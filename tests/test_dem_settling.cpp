@@ -58,7 +58,8 @@ std::vector<double> settle(const pore_water::DragLaw& law, const pore_water::Flu
 
 }  // namespace
 
-TEST_CASE("DEM: a 4 mm quartz grain settles in water at the Dallavalle terminal velocity", "[cfd_dem][dem][verification]") {
+TEST_CASE("DEM: a 4 mm quartz grain settles in water at the Dallavalle terminal velocity",
+          "[cfd_dem][dem][verification]") {
   const double d = 0.004, rho_p = 2650.0;
   const pore_water::Fluid water{1000.0, 1e-3};
   // The balance (rho_p - rho_f) g V = 1/2 Cd rho_f A u^2 with Cd =
@@ -80,7 +81,8 @@ TEST_CASE("DEM: a 4 mm quartz grain settles in water at the Dallavalle terminal 
   for (std::size_t k = 1; k < u.size(); ++k) CHECK(u[k] >= u[k - 1]);
 }
 
-TEST_CASE("DEM: CFDEMcoupling's settling grain reaches 0.1373 m/s at 0.2 s under Schiller-Naumann", "[cfd_dem][dem][verification]") {
+TEST_CASE("DEM: CFDEMcoupling's settling grain reaches 0.1373 m/s at 0.2 s under Schiller-Naumann",
+          "[cfd_dem][dem][verification]") {
   const pore_water::Fluid fluid{10.0, 10.0 * 1e-5};
   const auto u = settle(pore_water::SchillerNaumannDrag(), fluid, 1e-4, 3000.0, 0.2, 4, 1e-5);
   fmt::print("DEM settling, CFDEMcoupling case: u(0.2 s) = {:.5f} m/s (reference 0.1373)\n", u.back());

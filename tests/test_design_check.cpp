@@ -21,26 +21,29 @@ using nlohmann::json;
 namespace {
 
 json ring_with_design(double strength_slope) {
-  return {{"name", "scaled ring with a wall check"},
-          {"layout", {{"pattern", "single"}, {"outer_ring", {{"radius", 0.8}, {"count", 6}, {"start_angle_deg", 0.0}}}}},
-          {"shaft", {{"excavation_radius", 0.5}}},
-          {"pipe", {{"diameter", 0.127}, {"temperature", -20.0}}},
-          {"soil", "sand"},
-          {"domain", {{"outer_radius", 2.5}, {"initial_temperature", 10.0}, {"far_field", {{"temperature", 10.0}}}}},
-          {"time", {{"end", 12}, {"unit", "d"}, {"snapshots", {4, 6, 8, 10, 12}}}},
-          {"numerics", {{"placement", "lattice"}, {"spacing", 0.05}}},
-          {"design", {{"strength", {{"a", 1.0}, {"b", strength_slope}}},  // illustrative: sigma_c = 1 + b |T| MPa
-                      {"depth", 80.0},
-                      {"pressure", {{"gradient_MPa_per_m", 0.013}}},
-                      {"friction_angle", 10.0}}},
-          {"output", {{"directory", "out"}, {"vtk", false}, {"report", false}}}};
+  return {
+      {"name", "scaled ring with a wall check"},
+      {"layout", {{"pattern", "single"}, {"outer_ring", {{"radius", 0.8}, {"count", 6}, {"start_angle_deg", 0.0}}}}},
+      {"shaft", {{"excavation_radius", 0.5}}},
+      {"pipe", {{"diameter", 0.127}, {"temperature", -20.0}}},
+      {"soil", "sand"},
+      {"domain", {{"outer_radius", 2.5}, {"initial_temperature", 10.0}, {"far_field", {{"temperature", 10.0}}}}},
+      {"time", {{"end", 12}, {"unit", "d"}, {"snapshots", {4, 6, 8, 10, 12}}}},
+      {"numerics", {{"placement", "lattice"}, {"spacing", 0.05}}},
+      {"design",
+       {{"strength", {{"a", 1.0}, {"b", strength_slope}}},  // illustrative: sigma_c = 1 + b |T| MPa
+        {"depth", 80.0},
+        {"pressure", {{"gradient_MPa_per_m", 0.013}}},
+        {"friction_angle", 10.0}}},
+      {"output", {{"directory", "out"}, {"vtk", false}, {"report", false}}}};
 }
 
 json run(const json& project) { return frostwall::test::run_project(project); }
 
 }  // namespace
 
-TEST_CASE("The wall check: required thickness from pressure and strength, utilisation, the day it is met", "[freezing][design][cli]") {
+TEST_CASE("The wall check: required thickness from pressure and strength, utilisation, the day it is met",
+          "[freezing][design][cli]") {
   const json weak = run(ring_with_design(0.3)), strong = run(ring_with_design(0.6));
   const double a = 0.5, P = 0.013 * 80.0;
   CHECK(weak["design"]["pressure_MPa"].get<double>() == Approx(P).epsilon(1e-12));
@@ -92,8 +95,9 @@ TEST_CASE("The wall check: required thickness from pressure and strength, utilis
   CHECK(strong["design"]["met_day"].get<double>() <= weak["design"]["met_day"].get<double>());
 }
 
-TEST_CASE("The wall on a design isotherm: thinner than the frozen wall, the same at the front's temperature, and the check uses it",
-          "[freezing][design][cli]") {
+TEST_CASE(
+    "The wall on a design isotherm: thinner than the frozen wall, the same at the front's temperature, and the check uses it",
+    "[freezing][design][cli]") {
   // The sand, freezing over 2 K below 0 degC: the liquid fraction is then
   // linear in temperature through the band of freezing particles, 0.5 at
   // -1 degC (with no range, T = 0 across the whole band and the 0 degC wall
@@ -143,9 +147,11 @@ TEST_CASE("The wall on a design isotherm: thinner than the frozen wall, the same
     }
   }
   CHECK(compared >= 3);
-  WARN(fmt::format("last day: frozen wall {:.3f} m, -8 degC wall {:.3f} m, -12 degC wall {:.3f} m, -1 degC wall {:.3f} m",
-                   cold["wall"].back()["min_thickness"].get<double>(), cold["wall"].back()["isotherm_thickness"].get<double>(),
-                   colder["wall"].back()["isotherm_thickness"].get<double>(), front["wall"].back()["isotherm_thickness"].get<double>()));
+  WARN(fmt::format(
+      "last day: frozen wall {:.3f} m, -8 degC wall {:.3f} m, -12 degC wall {:.3f} m, -1 degC wall {:.3f} m",
+      cold["wall"].back()["min_thickness"].get<double>(), cold["wall"].back()["isotherm_thickness"].get<double>(),
+      colder["wall"].back()["isotherm_thickness"].get<double>(),
+      front["wall"].back()["isotherm_thickness"].get<double>()));
   // Measured on a colder wall the design is met no earlier.
   REQUIRE(cold["design"]["met_day"].is_number());
   const json plain = with_isotherm(std::nullopt);

@@ -20,7 +20,8 @@ struct EnergyRun {
   double stored_before, stored_after, boundary_heat, scale;
 };
 
-EnergyRun run_box(const std::string& boundaries, double initial_hot, double initial_cold, const std::string& integrator) {
+EnergyRun run_box(const std::string& boundaries, double initial_hot, double initial_cold,
+                  const std::string& integrator) {
   const double dx = 1.0 / 40;
   auto p = test::rectangle_project(1.0, 1.0, boundaries, R"("sand")", initial_hot, 1.0,
                                    test::numerics(dx, "renormalised", integrator));
@@ -50,10 +51,12 @@ TEST_CASE("Insulated box with a hot and a cold half conserves energy", "[freezin
 
 TEST_CASE("Cooled face: energy lost equals the boundary flux integrated in time", "[freezing][verification][energy]") {
   const std::string integrator = GENERATE("explicit", "rkl2", "implicit");
-  const auto r = run_box(R"({ "left": { "temperature": -20 }, "right": "adiabatic", "top": "adiabatic", "bottom": "adiabatic" })",
-                         10.0, 10.0, integrator);
+  const auto r =
+      run_box(R"({ "left": { "temperature": -20 }, "right": "adiabatic", "top": "adiabatic", "bottom": "adiabatic" })",
+              10.0, 10.0, integrator);
   const double change = r.stored_after - r.stored_before;
-  fmt::print("\nCooled face, {}: stored change {:.9e} J/m, boundary heat {:.9e} J/m\n", integrator, change, r.boundary_heat);
+  fmt::print("\nCooled face, {}: stored change {:.9e} J/m, boundary heat {:.9e} J/m\n", integrator, change,
+             r.boundary_heat);
   CHECK(change < 0.0);
   CHECK(std::abs(change - r.boundary_heat) < 1e-6 * std::abs(change));
 }

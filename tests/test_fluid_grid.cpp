@@ -42,11 +42,14 @@ void fill_layer(FluidGrid& grid, int k0, int k1, double d) {
 }
 
 // The grain diameter that leaves the given porosity in a cubic cell of side h.
-double diameter_for(double porosity, double h) { return std::cbrt(6.0 * (1.0 - porosity) * h * h * h / std::numbers::pi); }
+double diameter_for(double porosity, double h) {
+  return std::cbrt(6.0 * (1.0 - porosity) * h * h * h / std::numbers::pi);
+}
 
 }  // namespace
 
-TEST_CASE("fluid grid: mixture mass is conserved cell by cell with moving grains", "[cfd_dem][fluid_grid][pore_water]") {
+TEST_CASE("fluid grid: mixture mass is conserved cell by cell with moving grains",
+          "[cfd_dem][fluid_grid][pore_water]") {
   GridShape shape{Vec3::Zero(), Vec3(0.10, 0.08, 0.06), {10, 8, 6}};
   const Fluid water{1000.0, 1e-3};
   const double U = 0.002;
@@ -69,7 +72,8 @@ TEST_CASE("fluid grid: mixture mass is conserved cell by cell with moving grains
   CHECK(net < 1e-8);
 }
 
-TEST_CASE("fluid grid: a uniform fixed bed gives Ergun's pressure drop", "[cfd_dem][fluid_grid][pore_water][verification]") {
+TEST_CASE("fluid grid: a uniform fixed bed gives Ergun's pressure drop",
+          "[cfd_dem][fluid_grid][pore_water][verification]") {
   // CFDEMcoupling's Ergun case: d 1 mm, porosity 0.4513, bed 0.0156 m,
   // rho_f 10, nu 1.5e-4. Grains on a lattice of 2 per cell per axis; the
   // cell's width is chosen so the porosity is exactly 0.4513.
@@ -94,8 +98,8 @@ TEST_CASE("fluid grid: a uniform fixed bed gives Ergun's pressure drop", "[cfd_d
     const auto report = grid.solve(1e-12);
     const double dP = grid.face_pressure(4) - grid.face_pressure(5);
     const double ergun = bed_gradient(fluid, porosity, d, U[n]) * length;
-    fmt::print("fluid grid Ergun bed: U {} m/s: dP {:.4f} Pa, bed law {:.4f} Pa, published {} Pa ({} Picard)\n", U[n], dP,
-               ergun, published[n], report.picard_iterations);
+    fmt::print("fluid grid Ergun bed: U {} m/s: dP {:.4f} Pa, bed law {:.4f} Pa, published {} Pa ({} Picard)\n", U[n],
+               dP, ergun, published[n], report.picard_iterations);
     INFO("U = " << U[n] << " m/s");
     CHECK(report.converged);
     CHECK(dP == Approx(ergun).epsilon(1e-6));
@@ -141,7 +145,9 @@ TEST_CASE("fluid grid: deposition keeps every grain's volume in the box", "[cfd_
     for (int a = 0; a < 3; ++a) {
       const double r = unit(random);
       // A third of the coordinates exactly on a wall.
-      x[a] = r < 1.0 / 6 ? shape.low[a] : r < 1.0 / 3 ? shape.high[a] : shape.low[a] + unit(random) * (shape.high[a] - shape.low[a]);
+      x[a] = r < 1.0 / 6   ? shape.low[a]
+             : r < 1.0 / 3 ? shape.high[a]
+                           : shape.low[a] + unit(random) * (shape.high[a] - shape.low[a]);
     }
     const double dn = 2e-3 + 6e-3 * unit(random);
     total += grain_volume(dn);
@@ -153,7 +159,8 @@ TEST_CASE("fluid grid: deposition keeps every grain's volume in the box", "[cfd_
   for (std::size_t n = 0; n < rank0.deposits().size(); ++n) rank0.deposits()[n] += rank1.deposits()[n];
   rank0.finish_grains();
   CHECK(solid_in_grid(rank0) == Approx(total).epsilon(1e-12));
-  for (int n = 0; n < shape.count(); ++n) CHECK(rank0.raw_porosity()[n] == Approx(grid.raw_porosity()[n]).epsilon(1e-12));
+  for (int n = 0; n < shape.count(); ++n)
+    CHECK(rank0.raw_porosity()[n] == Approx(grid.raw_porosity()[n]).epsilon(1e-12));
   // Clamping applies to the porosity used by the flow, not the raw one.
   const auto [lo, hi] = std::minmax_element(grid.porosity().begin(), grid.porosity().end());
   CHECK(*lo >= 0.3);

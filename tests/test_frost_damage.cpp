@@ -50,15 +50,18 @@ FrostRun run_frost(const project::Project& p) {
 
 }  // namespace
 
-TEST_CASE("of two pores under a cold face the nearer freezes first, and damage starts between them", "[mechanics][frost]") {
+TEST_CASE("of two pores under a cold face the nearer freezes first, and damage starts between them",
+          "[mechanics][frost]") {
   // A 120 x 80 um crop of the mortar plate cooled from the top: pore A
   // (radius 15 um) 10 um under the face, pore B beside it, 4 um deeper,
   // 8 um from A's rim (the shipped case's top pair, one pore lowered).
   const double A[3] = {40e-6, 55e-6, 15e-6}, B[3] = {78e-6, 51e-6, 15e-6};
   const nlohmann::json patch = {
-      {"geometry", {{"width", 120e-6}, {"height", 80e-6},
-                    {"boundaries", {{"top", {{"temperature", -30.0}}}, {"right", "adiabatic"}}},
-                    {"pores", {{{"x", A[0]}, {"y", A[1]}, {"radius", A[2]}}, {{"x", B[0]}, {"y", B[1]}, {"radius", B[2]}}}}}},
+      {"geometry",
+       {{"width", 120e-6},
+        {"height", 80e-6},
+        {"boundaries", {{"top", {{"temperature", -30.0}}}, {"right", "adiabatic"}}},
+        {"pores", {{{"x", A[0]}, {"y", A[1]}, {"radius", A[2]}}, {{"x", B[0]}, {"y", B[1]}, {"radius", B[2]}}}}}},
       {"numerics", {{"spacing", 2e-6}}},
       {"time", {{"end", 0.0065}, {"snapshots", {0.0065}}}},
       {"monitoring", nlohmann::json::array()}};
@@ -95,11 +98,12 @@ double depth(const project::Pore& p, double width, double height) {
 }
 }  // namespace
 
-TEST_CASE("the shipped mortar plate's pores start to freeze in the order of their depth under the cold faces", "[mechanics][frost]") {
+TEST_CASE("the shipped mortar plate's pores start to freeze in the order of their depth under the cold faces",
+          "[mechanics][frost]") {
   // Heat alone (the mechanics does not move the heat), coarse: 6 um.
-  const auto p = test::shipped_project("mortar_frost.json", {{"numerics", {{"spacing", 6e-6}}},
-                                                             {"mechanics", nullptr},
-                                                             {"time", {{"end", 0.08}, {"snapshots", {0.08}}}}});
+  const auto p = test::shipped_project(
+      "mortar_frost.json",
+      {{"numerics", {{"spacing", 6e-6}}}, {"mechanics", nullptr}, {"time", {{"end", 0.08}, {"snapshots", {0.08}}}}});
   freezing::Model m = freezing::build_model(p);
   mechanics::FrostResults frost(p, m, nullptr);
   thermal::TimeLoopObservers observers;
@@ -120,7 +124,8 @@ TEST_CASE("the shipped mortar plate's pores start to freeze in the order of thei
   }
 }
 
-TEST_CASE("the shipped mortar plate, coarse: below the critical saturation nothing breaks, and fuller pores break more", "[mechanics][frost]") {
+TEST_CASE("the shipped mortar plate, coarse: below the critical saturation nothing breaks, and fuller pores break more",
+          "[mechanics][frost]") {
   // 6 um, the first 15 ms (the four shallowest pores freeze through). Every
   // pore at S = 0.9 (below 1 / 1.09): the ice fits into the air and the
   // cooling alone breaks nothing; at S = 1 bonds break, and at S = 0.95
@@ -148,8 +153,8 @@ TEST_CASE("the shipped mortar plate, coarse: every pore freezes in depth order",
   // spacing), as the hoop stress of a pushed rim, above the tensile
   // strength out to sqrt(E u r0 / f_t), about 19 r0, says they must
   // (docs/mechanics.md).
-  const auto p = test::shipped_project("mortar_frost.json", {{"numerics", {{"spacing", 5e-6}}},
-                                                             {"time", {{"end", 0.07}, {"snapshots", {0.07}}}}});
+  const auto p = test::shipped_project(
+      "mortar_frost.json", {{"numerics", {{"spacing", 5e-6}}}, {"time", {{"end", 0.07}, {"snapshots", {0.07}}}}});
   const auto r = run_frost(p);
   const auto& rect = std::get<project::Rectangle>(p.geometry);
   for (std::size_t a = 0; a < rect.pores.size(); ++a) {
@@ -175,14 +180,15 @@ Reach single_pore(double spacing) {
   const double W = 360e-6;
   const nlohmann::json cold = {{"temperature", -30.0}};
   const auto p = test::shipped_project(
-      "mortar_frost.json",
-      {{"geometry", {{"width", W}, {"height", W},
-                     {"boundaries", {{"top", cold}, {"right", cold}, {"left", cold}, {"bottom", cold}}},
-                     {"pores", {{{"x", W / 2}, {"y", W / 2}, {"radius", 15e-6}, {"saturation", 0.95}}}}}},
-       {"mechanics", {{"material", {{"thermal_expansion", 0.0}}}}},
-       {"numerics", {{"spacing", spacing}}},
-       {"time", {{"end", 0.03}, {"snapshots", {0.03}}}},
-       {"monitoring", nlohmann::json::array()}});
+      "mortar_frost.json", {{"geometry",
+                             {{"width", W},
+                              {"height", W},
+                              {"boundaries", {{"top", cold}, {"right", cold}, {"left", cold}, {"bottom", cold}}},
+                              {"pores", {{{"x", W / 2}, {"y", W / 2}, {"radius", 15e-6}, {"saturation", 0.95}}}}}},
+                            {"mechanics", {{"material", {{"thermal_expansion", 0.0}}}}},
+                            {"numerics", {{"spacing", spacing}}},
+                            {"time", {{"end", 0.03}, {"snapshots", {0.03}}}},
+                            {"monitoring", nlohmann::json::array()}});
   const auto r = run_frost(p);
   REQUIRE(r.frost->freezing_end()[0]);
   const auto d = r.frost->damage_now();
@@ -203,8 +209,9 @@ TEST_CASE("one partly saturated pore's crack reach converges with the spacing", 
   std::vector<Reach> r;
   for (const double dx : {4e-6, 3e-6, 2e-6}) {
     r.push_back(single_pore(dx));
-    fmt::print("\nsingle pore at {:g} um: crack reach {:.1f} um, crack line length {:.1f} um, broken-bond energy {:.3g} J/m",
-               dx * 1e6, r.back().reach * 1e6, r.back().length * 1e6, r.back().energy);
+    fmt::print(
+        "\nsingle pore at {:g} um: crack reach {:.1f} um, crack line length {:.1f} um, broken-bond energy {:.3g} J/m",
+        dx * 1e6, r.back().reach * 1e6, r.back().length * 1e6, r.back().energy);
   }
   fmt::print("\n");
   CHECK(std::abs(r[2].reach / r[1].reach - 1.0) < 0.10);

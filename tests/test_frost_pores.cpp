@@ -58,7 +58,7 @@ double hoop(const std::array<double, 3>& s, const Vec2& d) {
 // against Lame's for that push (plane strain, nu = 1/4: lambda = G;
 // u = A r + B / r with sigma_rr(b) = 0 and u(a) = u_a).
 struct PushedPore {
-  double push = 0.0, mean_shift = 0.0;  // u_a; the plate's mean displacement
+  double push = 0.0, mean_shift = 0.0;       // u_a; the plate's mean displacement
   std::vector<std::array<double, 3>> bands;  // r0, PD hoop, Lame hoop (Pa)
 };
 
@@ -151,7 +151,7 @@ TEST_CASE("an unconfined ice disc grows freely by the volume change in area and 
   pd::PdSolid solid(g, m, pd::make_bond_law(m, 3.015 * dx));
   REQUIRE(solid.law().critical_stretch == Approx(1e-4));
   const std::vector<int> pore_of(g.position.size(), 0);  // all ice, no matrix
-  project::FreezingExpansion fe;                          // ice_eigenstrain, 9 %
+  project::FreezingExpansion fe;                         // ice_eigenstrain, 9 %
   pd::PoreExpansion pores(fe, E, {{c[0], c[1], R}}, pore_of);
   pores.prepare(solid);
   std::vector<double> u(2 * g.position.size(), 0.0), dT(g.position.size(), 0.0);
@@ -182,7 +182,8 @@ TEST_CASE("an unconfined ice disc grows freely by the volume change in area and 
   CHECK(solid.intact_bonds() == solid.bonds());
 }
 
-TEST_CASE("a frozen pore rides on the plate: a cooled plate on rollers contracts as if the pore were matrix", "[mechanics][frost]") {
+TEST_CASE("a frozen pore rides on the plate: a cooled plate on rollers contracts as if the pore were matrix",
+          "[mechanics][frost]") {
   // No push (volume_change 0): the exact field is the free contraction
   // u = -(1 + nu) alpha dT x of the plane-strain plate on rollers, the pore's
   // particles (one rigid group with the matrix's thermal strain) included.

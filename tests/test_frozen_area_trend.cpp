@@ -9,7 +9,8 @@
 
 using frostwall::post::FrozenAreaTrend;
 
-TEST_CASE("Frozen area trend: a saturating area is steady from the band's day, a growing one is not", "[freezing][groundwater][post]") {
+TEST_CASE("Frozen area trend: a saturating area is steady from the band's day, a growing one is not",
+          "[freezing][groundwater][post]") {
   const double tau = 5.0, T = 60.0;
   FrozenAreaTrend saturating, growing;
   for (int k = 0; k <= 6000; ++k) {

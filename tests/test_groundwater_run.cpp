@@ -29,15 +29,16 @@ using nlohmann::json;
 namespace {
 
 json scaled_ring(const json& flux) {
-  json p = {{"name", "scaled ring under seepage"},
-            {"layout", {{"pattern", "single"}, {"outer_ring", {{"radius", 0.8}, {"count", 6}, {"start_angle_deg", 0.0}}}}},
-            {"shaft", {{"excavation_radius", 0.5}}},
-            {"pipe", {{"diameter", 0.127}, {"temperature", -20.0}}},
-            {"soil", "sand"},
-            {"domain", {{"outer_radius", 2.5}, {"initial_temperature", 10.0}, {"far_field", {{"temperature", 10.0}}}}},
-            {"time", {{"end", 8}, {"unit", "d"}, {"snapshots", {8}}}},
-            {"numerics", {{"placement", "lattice"}, {"spacing", 0.05}}},
-            {"output", {{"directory", "out"}, {"vtk", false}, {"report", false}}}};
+  json p = {
+      {"name", "scaled ring under seepage"},
+      {"layout", {{"pattern", "single"}, {"outer_ring", {{"radius", 0.8}, {"count", 6}, {"start_angle_deg", 0.0}}}}},
+      {"shaft", {{"excavation_radius", 0.5}}},
+      {"pipe", {{"diameter", 0.127}, {"temperature", -20.0}}},
+      {"soil", "sand"},
+      {"domain", {{"outer_radius", 2.5}, {"initial_temperature", 10.0}, {"far_field", {{"temperature", 10.0}}}}},
+      {"time", {{"end", 8}, {"unit", "d"}, {"snapshots", {8}}}},
+      {"numerics", {{"placement", "lattice"}, {"spacing", 0.05}}},
+      {"output", {{"directory", "out"}, {"vtk", false}, {"report", false}}}};
   if (!flux.is_null())
     p["groundwater"] = {{"hydraulic_conductivity", 1e-4}, {"porosity", 0.35}, {"darcy_flux", flux}, {"unit", "m/d"}};
   return p;
@@ -89,7 +90,8 @@ TEST_CASE("Groundwater without flow is still water, and flowing water delays clo
   CHECK(last["position"] == "upstream");
   const std::string verdict = fast["groundwater"]["verdict"];
   CHECK(verdict.rfind(fmt::format("closed on day {:.1f}; the last gap, {} (upstream)", closure(fast),
-                                  last["between"].get<std::string>()), 0) == 0);
+                                  last["between"].get<std::string>()),
+                      0) == 0);
   CHECK(last["closure_day"].get<double>() >= closure(fast));
   // The wall facing the flow is the thinner, and the
   // thinnest ray overall is no thicker than either side's.
@@ -113,8 +115,9 @@ TEST_CASE("Groundwater without flow is still water, and flowing water delays clo
   std::map<std::string, json> flow;
   for (const auto& gap : fast["groundwater"]["gaps"]) flow[gap["position"]] = gap["flow"]["m3_per_day_per_m"];
   const double hand = 0.8 * std::sin(M_PI / 3.0);
-  WARN(fmt::format("water through the upstream gap: {:.4f} m3/d per m at the start (hand {:.4f}), {:.2g} at the end; {} solves",
-                   flow["upstream"][0].get<double>(), hand, flow["upstream"].back().get<double>(), flow["upstream"].size()));
+  WARN(fmt::format(
+      "water through the upstream gap: {:.4f} m3/d per m at the start (hand {:.4f}), {:.2g} at the end; {} solves",
+      flow["upstream"][0].get<double>(), hand, flow["upstream"].back().get<double>(), flow["upstream"].size()));
   CHECK(flow["upstream"][0].get<double>() == Approx(hand).epsilon(0.05));
   // One record per step that brought a new flow (a step may solve twice:
   // at its start and for its own ice; the record is the flow it used).
@@ -146,9 +149,10 @@ TEST_CASE("Groundwater: the coupled step closes within 1 % of the explicit schem
   coupled["groundwater"]["advection"] = "coupled";
   const json a = run(explicit_run), b = run(coupled);
   const double err = closure(b) / closure(a) - 1.0;
-  WARN(fmt::format("closure {:.4f} d explicit limited ({} steps); coupled {:.4f} d ({} steps, {} Newton iterations, {:+.2f} %)",
-                   closure(a), a["run"]["steps"].get<int>(), closure(b), b["run"]["steps"].get<int>(),
-                   b["run"]["newton_iterations"].get<int>(), 100.0 * err));
+  WARN(fmt::format(
+      "closure {:.4f} d explicit limited ({} steps); coupled {:.4f} d ({} steps, {} Newton iterations, {:+.2f} %)",
+      closure(a), a["run"]["steps"].get<int>(), closure(b), b["run"]["steps"].get<int>(),
+      b["run"]["newton_iterations"].get<int>(), 100.0 * err));
   CHECK(b["run"]["integrator"] == "implicit");
   CHECK(std::abs(err) < 0.01);
   CHECK(b["run"]["steps"].get<int>() < a["run"]["steps"].get<int>() / 2);
@@ -164,7 +168,8 @@ TEST_CASE("Groundwater: the coupled step closes within 1 % of the explicit schem
 // the heat balance holds to the Newton tolerance and no temperature leaves
 // the range of the pipes (-20 C) and the entering water (10 C), at the
 // sharp front or anywhere.
-TEST_CASE("Groundwater: at the longest coupled steps the heat balances and no temperature leaves [pipe, far field]", "[freezing][groundwater][cli]") {
+TEST_CASE("Groundwater: at the longest coupled steps the heat balances and no temperature leaves [pipe, far field]",
+          "[freezing][groundwater][cli]") {
   json p = scaled_ring({2.0, 0.0});
   p["time"] = {{"end", 30}, {"unit", "d"}, {"snapshots", {10, 20, 30}}};
   p["output"]["vtk"] = true;
@@ -180,7 +185,8 @@ TEST_CASE("Groundwater: at the longest coupled steps the heat balances and no te
       vtkDataArray* boundary = grid->GetPointData()->GetArray("boundary");
       REQUIRE(T != nullptr);
       for (vtkIdType i = 0; i < grid->GetNumberOfPoints(); ++i)
-        if (boundary->GetTuple1(i) < 0) lowest = std::min(lowest, T->GetTuple1(i)), highest = std::max(highest, T->GetTuple1(i));
+        if (boundary->GetTuple1(i) < 0)
+          lowest = std::min(lowest, T->GetTuple1(i)), highest = std::max(highest, T->GetTuple1(i));
     }
   });
   const double steps = s["run"]["steps"].get<double>();
@@ -203,17 +209,20 @@ TEST_CASE("Groundwater: at the longest coupled steps the heat balances and no te
 // water is twice what crosses their halves in the section: q |dy| of the
 // pipe centres (0.8 m3/d per m) less what the pipes block (about 4 % on
 // the ring facing the flow, above).
-TEST_CASE("Groundwater: a gap cut by the mirror line carries the water of both halves", "[freezing][groundwater][cli]") {
+TEST_CASE("Groundwater: a gap cut by the mirror line carries the water of both halves",
+          "[freezing][groundwater][cli]") {
   json p = scaled_ring({1.0, 0.0});
   p["layout"]["outer_ring"]["start_angle_deg"] = 30.0;
   p["time"] = {{"end", 0.01}, {"unit", "d"}, {"snapshots", {0.01}}};
   const json s = run(p);
   REQUIRE(s["wedge"]["mirror_lines"] == 1);
   std::map<std::string, double> first;
-  for (const auto& gap : s["groundwater"]["gaps"]) first[gap["position"]] = gap["flow"]["m3_per_day_per_m"][0].get<double>();
+  for (const auto& gap : s["groundwater"]["gaps"])
+    first[gap["position"]] = gap["flow"]["m3_per_day_per_m"][0].get<double>();
   const double hand = 2.0 * 0.8 * std::sin(M_PI / 6.0);
-  WARN(fmt::format("water through the gaps cut by the mirror line: upstream {:.4f}, downstream {:.4f} m3/d per m (hand {:.4f})",
-                   first["upstream"], first["downstream"], hand));
+  WARN(fmt::format(
+      "water through the gaps cut by the mirror line: upstream {:.4f}, downstream {:.4f} m3/d per m (hand {:.4f})",
+      first["upstream"], first["downstream"], hand));
   CHECK(first["upstream"] == Approx(hand).epsilon(0.06));
   CHECK(first["downstream"] == Approx(first["upstream"]).epsilon(1e-6));  // potential flow: fore and aft alike
 }
@@ -234,14 +243,16 @@ TEST_CASE("Groundwater: a hydraulic gradient is the flux K i", "[freezing][groun
   CHECK(b["groundwater"]["hydraulic_gradient"][0].get<double>() == Approx(0.115741).epsilon(1e-5));
   CHECK(a["groundwater"]["hydraulic_gradient"].is_null());
   CHECK(b["wall"].back()["min_thickness"] == a["wall"].back()["min_thickness"]);
-  CHECK(b["heat_balance"]["stored_change"].get<double>() == Approx(a["heat_balance"]["stored_change"].get<double>()).epsilon(1e-12));
+  CHECK(b["heat_balance"]["stored_change"].get<double>() ==
+        Approx(a["heat_balance"]["stored_change"].get<double>()).epsilon(1e-12));
 }
 
 // The Darcy flux written to the VTU, before the ground has frozen much
 // (0.01 d): beyond 1.5 m the six small pipes (6 cm radius, 0.8 m out)
 // disturb a uniform flow by under 1 % (a dipole, (a / d)^2), so the mean
 // flux there is the regional 1 m/d; the fixed particles carry none.
-TEST_CASE("Groundwater: the Darcy flux in the VTU is the regional flow away from the ring", "[freezing][groundwater][cli]") {
+TEST_CASE("Groundwater: the Darcy flux in the VTU is the regional flow away from the ring",
+          "[freezing][groundwater][cli]") {
   json p = scaled_ring({1.0, 0.0});
   p["time"] = {{"end", 0.01}, {"unit", "d"}, {"snapshots", {0.01}}};
   p["output"]["vtk"] = true;
@@ -257,14 +268,15 @@ TEST_CASE("Groundwater: the Darcy flux in the VTU is the regional flow away from
     CHECK(html.find("Water through each gap") != std::string::npos);
     CHECK(html.find("white arrows: the groundwater") != std::string::npos);
     const json view = frostwall::report::report_view(out);
-    for (const auto& name :
-         frostwall::report::template_names(frostwall::test::split_section(frostwall::report::templates::report_html, "has_groundwater").first)) {
+    for (const auto& name : frostwall::report::template_names(
+             frostwall::test::split_section(frostwall::report::templates::report_html, "has_groundwater").first)) {
       INFO(name);
       CHECK(frostwall::test::has_key(view, name));
     }
     fs::path file;
     for (const auto& entry : fs::directory_iterator(out))
-      if (entry.path().filename().string().rfind("field_", 0) == 0 && entry.path().extension() == ".vtu") file = entry.path();
+      if (entry.path().filename().string().rfind("field_", 0) == 0 && entry.path().extension() == ".vtu")
+        file = entry.path();
     REQUIRE(!file.empty());
     vtkNew<vtkXMLUnstructuredGridReader> reader;
     reader->SetFileName(file.c_str());
@@ -288,8 +300,8 @@ TEST_CASE("Groundwater: the Darcy flux in the VTU is the regional flow away from
     }
     REQUIRE(far > 100);
     const double regional = 1.0 / 86400.0;
-    WARN(fmt::format("mean flux beyond 1.5 m over {} particles: ({:.4f}, {:.4f}) of the regional", far, sum_x / far / regional,
-                     sum_y / far / regional));
+    WARN(fmt::format("mean flux beyond 1.5 m over {} particles: ({:.4f}, {:.4f}) of the regional", far,
+                     sum_x / far / regional, sum_y / far / regional));
     CHECK(sum_x / far == Approx(regional).epsilon(0.02));
     CHECK(std::abs(sum_y / far) < 0.02 * regional);
   });
@@ -298,7 +310,8 @@ TEST_CASE("Groundwater: the Darcy flux in the VTU is the regional flow away from
 // The seepage sweep's last clause on the scaled ring (long: about 80 s): at
 // some rate the wall stops closing. At 4 m/d no gap closes in 24 days and the frozen
 // area levels off, which the verdict says; closure stays null.
-TEST_CASE("Groundwater: at 4 m/d the scaled ring does not close and the verdict says the frozen area stopped growing", "[freezing][groundwater][cli][long]") {
+TEST_CASE("Groundwater: at 4 m/d the scaled ring does not close and the verdict says the frozen area stopped growing",
+          "[freezing][groundwater][cli][long]") {
   json p = scaled_ring({4.0, 0.0});
   p["time"] = {{"end", 24}, {"unit", "d"}, {"snapshots", {24}}};
   const json s = run(p);
@@ -314,7 +327,8 @@ TEST_CASE("Groundwater: at 4 m/d the scaled ring does not close and the verdict 
 // kept, on the scaled ring for 8 days: closure comes later as the flow
 // grows, 2 and 4 m/d do not close by then, and study.html shows closure against the
 // seepage with a row per variant.
-TEST_CASE("The shipped seepage study, on the scaled ring, delays closure with the flow", "[freezing][groundwater][study][cli]") {
+TEST_CASE("The shipped seepage study, on the scaled ring, delays closure with the flow",
+          "[freezing][groundwater][study][cli]") {
   frostwall::test::TempDir dir;
   json patch = scaled_ring(nullptr);
   for (const char* key : {"name", "output", "soil", "pipe"}) patch.erase(key);
@@ -323,18 +337,19 @@ TEST_CASE("The shipped seepage study, on the scaled ring, delays closure with th
   std::vector<double> closures;
   for (const char* name : {"still", "seepage-0.5", "seepage-1", "seepage-2", "seepage-4"})
     closures.push_back(closure(json::parse(std::ifstream(dir.path / "out" / name / "summary.json"))));
-  WARN(fmt::format("closure {:.3f} / {:.3f} / {:.3f} / {:.3g} / {:.3g} d (still, 0.5, 1, 2, 4 m/d; 1e9: open)", closures[0],
-                   closures[1], closures[2], closures[3], closures[4]));
+  WARN(fmt::format("closure {:.3f} / {:.3f} / {:.3f} / {:.3g} / {:.3g} d (still, 0.5, 1, 2, 4 m/d; 1e9: open)",
+                   closures[0], closures[1], closures[2], closures[3], closures[4]));
   for (std::size_t k = 1; k < closures.size(); ++k)
     if (closures[k - 1] < 1e9) CHECK(closures[k] > closures[k - 1]);  // later, or not at all
-  CHECK(closures[2] < 1e9);                                              // 1 m/d closes within 8 days
-  CHECK(closures.back() == 1e9);  // open after 8 days
+  CHECK(closures[2] < 1e9);                                           // 1 m/d closes within 8 days
+  CHECK(closures.back() == 1e9);                                      // open after 8 days
   std::ifstream in(dir.path / "out" / "study.html");
   const std::string html((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   CHECK(html.find("<h2>Closure against seepage</h2>") != std::string::npos);
   CHECK(html.find("closure against the regional seepage") != std::string::npos);
   for (const char* name : {"still", "seepage-0.5", "seepage-4"})
-    CHECK(html.find(fmt::format("<td class=\"nowrap\"><a href=\"{0}/report.html\">{0}</a></td>", name)) != std::string::npos);
+    CHECK(html.find(fmt::format("<td class=\"nowrap\"><a href=\"{0}/report.html\">{0}</a></td>", name)) !=
+          std::string::npos);
 }
 
 // The seepage sweep at full size, coarsened: the shipped seepage study on the single
@@ -343,9 +358,11 @@ TEST_CASE("The shipped seepage study, on the scaled ring, delays closure with th
 // minutes on one core of a shared machine (README: the table), so a long test. Closure must come later as the
 // seepage grows, the wall facing the flow must be the thinner, and at some
 // rate the wall must stop closing.
-TEST_CASE("Seepage sweep on the single ring in sand: later closure, thinner upstream wall, no closure at some rate", "[freezing][groundwater][study][cli][long]") {
+TEST_CASE("Seepage sweep on the single ring in sand: later closure, thinner upstream wall, no closure at some rate",
+          "[freezing][groundwater][study][cli][long]") {
   frostwall::test::TempDir dir;
-  run_shipped_seepage_study({{"numerics", {{"spacing", 0.04}}}, {"output", {{"vtk", false}, {"report", false}}}}, dir.path);
+  run_shipped_seepage_study({{"numerics", {{"spacing", 0.04}}}, {"output", {{"vtk", false}, {"report", false}}}},
+                            dir.path);
   std::vector<double> closures;
   for (const char* name : {"still", "seepage-0.5", "seepage-1", "seepage-2", "seepage-4"}) {
     const json s = json::parse(std::ifstream(dir.path / "out" / name / "summary.json"));
@@ -354,12 +371,13 @@ TEST_CASE("Seepage sweep on the single ring in sand: later closure, thinner upst
     const auto& wall = s["wall"].back();
     INFO(name << ": " << s["groundwater"]["verdict"].get<std::string>());
     // A wall that never closed has no thickness on either side.
-    if (closures.back() < 1e9) CHECK(wall["min_thickness_upstream"].get<double>() < wall["min_thickness_downstream"].get<double>());
+    if (closures.back() < 1e9)
+      CHECK(wall["min_thickness_upstream"].get<double>() < wall["min_thickness_downstream"].get<double>());
     else CHECK(wall["min_thickness_upstream"].get<double>() <= wall["min_thickness_downstream"].get<double>());
     CHECK(s["groundwater"]["last_gap"]["position"] == "upstream");
   }
-  WARN(fmt::format("closure {:.2f} / {:.2f} / {:.3g} / {:.3g} / {:.3g} d (still, 0.5, 1, 2, 4 m/d; 1e9: open)", closures[0],
-                   closures[1], closures[2], closures[3], closures[4]));
+  WARN(fmt::format("closure {:.2f} / {:.2f} / {:.3g} / {:.3g} / {:.3g} d (still, 0.5, 1, 2, 4 m/d; 1e9: open)",
+                   closures[0], closures[1], closures[2], closures[3], closures[4]));
   for (std::size_t k = 1; k < closures.size(); ++k)
     if (closures[k - 1] < 1e9) CHECK(closures[k] > closures[k - 1]);  // later, or not at all
   CHECK(closures[0] < 1e9);

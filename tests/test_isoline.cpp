@@ -129,8 +129,8 @@ TEST_CASE("isoline of a circle: one closed counterclockwise curve, O(d^2) error"
     INFO("d = " << d << "  max |r - R| = " << e << " = " << e / d << " d, bound " << circle_bound(d, R));
     CHECK(e > 0.0);
   }
-  INFO("max |r - R|: " << errors[0] << ", " << errors[1] << ", " << errors[2] << "; ratios "
-                        << errors[0] / errors[1] << ", " << errors[1] / errors[2]);
+  INFO("max |r - R|: " << errors[0] << ", " << errors[1] << ", " << errors[2] << "; ratios " << errors[0] / errors[1]
+                       << ", " << errors[1] / errors[2]);
   CHECK(errors[0] / errors[1] == Approx(4.0).margin(0.8));
   CHECK(errors[1] / errors[2] == Approx(4.0).margin(0.8));
 }
@@ -158,8 +158,7 @@ TEST_CASE("isoline through lattice values equal to the level", "[shared][isoline
   // one point per particle, with no repeated points.
   CHECK(lines[0].points.size() == 9);
   for (const auto& x : lines[0].points) CHECK(x[0] == 0.5);
-  for (std::size_t k = 1; k < lines[0].points.size(); ++k)
-    CHECK(lines[0].points[k][1] > lines[0].points[k - 1][1]);
+  for (std::size_t k = 1; k < lines[0].points.size(); ++k) CHECK(lines[0].points[k][1] > lines[0].points[k - 1][1]);
 
   // A single particle exactly at level in a field below it: a region above
   // of zero area, no curve.
@@ -175,8 +174,8 @@ TEST_CASE("isolines of two circles are two closed curves", "[shared][isoline]") 
   const Vec2 c1(-1.2, 0.03), c2(1.3, -0.02);
   const double R = 0.8, d = 0.05;
   const auto p = lattice(-2.5, 2.5, -1.5, 1.5, d);
-  const auto lines = isolines(
-      p, sample(p, [&](const Vec2& x) { return std::min((x - c1).norm(), (x - c2).norm()) / R; }), 1.0);
+  const auto lines =
+      isolines(p, sample(p, [&](const Vec2& x) { return std::min((x - c1).norm(), (x - c2).norm()) / R; }), 1.0);
   REQUIRE(lines.size() == 2);
   for (const auto& line : lines) {
     CHECK(line.closed);
@@ -204,8 +203,7 @@ TEST_CASE("isoline: max_edge keeps the front out of a hole without particles", "
   REQUIRE(split.size() == 2);
   for (const auto& line : split) {
     CHECK_FALSE(line.closed);
-    for (std::size_t k = 1; k < line.points.size(); ++k)
-      CHECK((line.points[k] - line.points[k - 1]).norm() <= 3.0 * d);
+    for (std::size_t k = 1; k < line.points.size(); ++k) CHECK((line.points[k] - line.points[k - 1]).norm() <= 3.0 * d);
   }
   CHECK_THROWS_AS(isolines(p, v, 1.03, 0.0), std::invalid_argument);
   CHECK_THROWS_AS(isolines(p, std::vector<double>(3, 0.0), 1.03), std::invalid_argument);
@@ -215,8 +213,8 @@ TEST_CASE("write_vtp: polylines read back, closed ones repeat their first id", "
   frostwall::test::TempDir dir("frostwall-isoline");
   const Vec2 c1(-1.2, 0.03), c2(1.3, -0.02);
   const auto p = lattice(-2.5, 2.5, -1.5, 1.5, 0.1);
-  auto lines = isolines(
-      p, sample(p, [&](const Vec2& x) { return std::min((x - c1).norm(), (x - c2).norm()) / 0.8; }), 1.0);
+  auto lines =
+      isolines(p, sample(p, [&](const Vec2& x) { return std::min((x - c1).norm(), (x - c2).norm()) / 0.8; }), 1.0);
   REQUIRE(lines.size() == 2);
   lines.push_back({{Vec2(0.0, 0.0), Vec2(0.5, 0.25), Vec2(1.0, -0.125)}, false});
 

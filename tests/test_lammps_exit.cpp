@@ -32,7 +32,8 @@ TEST_CASE("a LAMMPS error ends the process with status 1 and LAMMPS' own ERROR l
   const fs::path self = fs::read_symlink("/proc/self/exe");
   const fs::path log = dir.path / "lammps.log";
   const std::string command = "FROSTWALL_TEST_LAMMPS_LOG='" + log.string() + "' timeout 30 '" + self.string() +
-                              "' '[lammps_exit]' >'" + (dir.path / "out.txt").string() + "' 2>'" + (dir.path / "err.txt").string() + "'";
+                              "' '[lammps_exit]' >'" + (dir.path / "out.txt").string() + "' 2>'" +
+                              (dir.path / "err.txt").string() + "'";
   const int status = std::system(command.c_str());
   REQUIRE(WIFEXITED(status));
   CHECK(WEXITSTATUS(status) == 1);

@@ -23,16 +23,18 @@ using nlohmann::json;
 namespace {
 
 json scaled_shaft() {
-  return {{"name", "scaled shaft"},
-          {"layout", {{"pattern", "single"}, {"outer_ring", {{"radius", 0.8}, {"count", 6}, {"start_angle_deg", 0.0}}}}},
-          {"shaft", {{"excavation_radius", 0.5}}},
-          {"pipe", {{"diameter", 0.127}, {"boundary", "brine"}, {"brine_temperature", -25.0}, {"heat_transfer_coefficient", 300}}},
-          {"soil", "sand"},
-          {"domain", {{"outer_radius", 2.5}, {"initial_temperature", 10.0}, {"far_field", {{"temperature", 10.0}}}}},
-          {"time", {{"end", 12}, {"unit", "d"}, {"snapshots", {4, 8, 12}}}},
-          {"numerics", {{"placement", "lattice"}, {"spacing", 0.05}}},
-          {"design", {{"strength", {{"a", 1.0}, {"b", 0.3}}}, {"pressure", {{"gradient_MPa_per_m", 0.013}}}}},
-          {"output", {{"directory", "out"}, {"vtk", false}, {"report", true}}}};
+  return {
+      {"name", "scaled shaft"},
+      {"layout", {{"pattern", "single"}, {"outer_ring", {{"radius", 0.8}, {"count", 6}, {"start_angle_deg", 0.0}}}}},
+      {"shaft", {{"excavation_radius", 0.5}}},
+      {"pipe",
+       {{"diameter", 0.127}, {"boundary", "brine"}, {"brine_temperature", -25.0}, {"heat_transfer_coefficient", 300}}},
+      {"soil", "sand"},
+      {"domain", {{"outer_radius", 2.5}, {"initial_temperature", 10.0}, {"far_field", {{"temperature", 10.0}}}}},
+      {"time", {{"end", 12}, {"unit", "d"}, {"snapshots", {4, 8, 12}}}},
+      {"numerics", {{"placement", "lattice"}, {"spacing", 0.05}}},
+      {"design", {{"strength", {{"a", 1.0}, {"b", 0.3}}}, {"pressure", {{"gradient_MPa_per_m", 0.013}}}}},
+      {"output", {{"directory", "out"}, {"vtk", false}, {"report", true}}}};
 }
 
 std::string read(const fs::path& file) {
@@ -66,8 +68,9 @@ void same_numbers(const json& a, const json& b, const std::string& where) {
 TEST_CASE("Layers: a two-layer shaft gives each layer the results of its own run, and the deeper clay governs",
           "[freezing][design][layers][cli]") {
   json layered = scaled_shaft();
-  layered["layers"] = {{{"name", "sand 60 m"}, {"depth", 60}},
-                       {{"name", "clay 120 m"}, {"depth", 120}, {"soil", "clay"}, {"strength", {{"a", 0.8}, {"b", 0.25}}}}};
+  layered["layers"] = {
+      {{"name", "sand 60 m"}, {"depth", 60}},
+      {{"name", "clay 120 m"}, {"depth", 120}, {"soil", "clay"}, {"strength", {{"a", 0.8}, {"b", 0.25}}}}};
   std::string report;
   std::vector<bool> layer_reports;
   const json top = frostwall::test::run_project(layered, [&](const fs::path& out) {
@@ -83,7 +86,8 @@ TEST_CASE("Layers: a two-layer shaft gives each layer the results of its own run
         INFO(name);
         CHECK(frostwall::test::has_key(view, name));
       }
-    for (const char* folder : {"sand_60_m", "clay_120_m"}) layer_reports.push_back(fs::exists(out / folder / "report.html"));
+    for (const char* folder : {"sand_60_m", "clay_120_m"})
+      layer_reports.push_back(fs::exists(out / folder / "report.html"));
   });
   CHECK(layer_reports == std::vector<bool>{true, true});
 

@@ -92,7 +92,8 @@ TEST_CASE("The layers hold: lib/ includes only downward, as lib/CMakeLists.txt d
   CHECK(reach["cfd_dem"].count("freezing") == 0);
   CHECK(reach["cfd_dem"].count("mechanics") == 0);
   // The report is built from a run's files: it reaches no engine and no run.
-  for (const char* above : {"freezing", "mechanics", "cfd_dem", "run", "study"}) CHECK(reach["report"].count(above) == 0);
+  for (const char* above : {"freezing", "mechanics", "cfd_dem", "run", "study"})
+    CHECK(reach["report"].count(above) == 0);
   // The project's plain structs reach nothing.
   CHECK(reach["project"].empty());
 }

@@ -134,23 +134,20 @@ TEST_CASE("layout problems: overlapping pipes", "[freezing][geometry]") {
   SECTION("26 pipes on a 0.3 m ring: one line for the ring") {
     const auto problems = geometry::layout_problems(section(ring_pattern(Pattern::single, 0.3, 26, 0.0), 2.0));
     REQUIRE(problems.size() == 1);
-    CHECK(problems[0] ==
-          "layout.outer_ring: 26 pipes on radius 0.300 m overlap their neighbours "
-          "(centres 0.072 m apart, pipe diameter 0.127 m)");
+    CHECK(problems[0] == "layout.outer_ring: 26 pipes on radius 0.300 m overlap their neighbours "
+                         "(centres 0.072 m apart, pipe diameter 0.127 m)");
   }
   SECTION("four-hole inner ring 5 cm inside the outer one") {
     const auto problems = geometry::layout_problems(section(ring_pattern(Pattern::four_hole, 5.0, 26, 0.0, 4.95)));
     REQUIRE(problems.size() == 1);
-    CHECK(problems[0] ==
-          "layout.inner_ring.radius: inner-ring pipes overlap the outer ring's "
-          "(closest centres 0.050 m apart, pipe diameter 0.127 m)");
+    CHECK(problems[0] == "layout.inner_ring.radius: inner-ring pipes overlap the outer ring's "
+                         "(closest centres 0.050 m apart, pipe diameter 0.127 m)");
   }
   SECTION("free rings") {
     const auto problems = geometry::layout_problems(section(free_rings({{5.0, 26, 0.0}, {5.05, 26, 0.0}})));
     REQUIRE(problems.size() == 1);
-    CHECK(problems[0] ==
-          "layout.rings[1]: pipes overlap those of layout.rings[0] "
-          "(closest centres 0.050 m apart, pipe diameter 0.127 m)");
+    CHECK(problems[0] == "layout.rings[1]: pipes overlap those of layout.rings[0] "
+                         "(closest centres 0.050 m apart, pipe diameter 0.127 m)");
   }
   SECTION("measured pipes: one line per pair") {
     std::vector<project::PipePosition> p;
@@ -375,7 +372,9 @@ TEST_CASE("Under seepage only the mirror line along the flow survives", "[freezi
   CHECK(geometry::find_flow_symmetry_wedge(pipes, 180.0 / 26 * deg, tol, note).mirror_count == 1);
   CHECK(geometry::find_flow_symmetry_wedge(pipes, pi, tol, note).mirror_count == 1);
   // Three pipes (a triangle pointing along x): along x half, along y full.
-  std::vector<Pipe2> three = {{1, 0, 0, 0}, {std::cos(2 * pi / 3), std::sin(2 * pi / 3), 0, 1}, {std::cos(4 * pi / 3), std::sin(4 * pi / 3), 0, 2}};
+  std::vector<Pipe2> three = {{1, 0, 0, 0},
+                              {std::cos(2 * pi / 3), std::sin(2 * pi / 3), 0, 1},
+                              {std::cos(4 * pi / 3), std::sin(4 * pi / 3), 0, 2}};
   const double tol3 = geometry::default_symmetry_tolerance(three);
   CHECK(geometry::find_flow_symmetry_wedge(three, 0.0, tol3, note).mirror_count == 1);
   CHECK(geometry::find_flow_symmetry_wedge(three, pi / 2, tol3, note).mirror_count == 0);

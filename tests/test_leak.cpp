@@ -29,19 +29,27 @@ using nlohmann::json;
 namespace {
 
 json scaled_case(double rolling, double velocity) {
-  json p = {
-      {"name", "leak over a cavity, scaled"},
-      {"physics", "cfd-dem"},
-      {"box", {{"low", {0, 0, 0}}, {"high", {0.1, 0.1, 0.1}}}},
-      {"grains",
-       {{"diameter", 0.006}, {"density", 2650}, {"count", 5000}, {"youngs_modulus", 1e7}, {"poisson_ratio", 0.3},
-        {"restitution", 0.5}, {"friction", 0.8}, {"rolling_friction", rolling}, {"settle_friction", 0.1},
-        {"seed", 1}, {"settle_time", 0.4}, {"fill", {{"low", {0, 0, 0}}, {"high", {0.1, 0.1, 0.18}}}}}},
-      {"cavity", {{"centre", {0.05, 0.05, 0.06}}, {"radius", 0.025}, {"drain", true}}},
-      {"point_a", {0.05, 0.05, 0.09}},
-      {"fluid", {{"density", 1000}, {"viscosity", 0.001}, {"cell_size", 0.01}}},
-      {"time", {{"end", 0.3}, {"unit", "s"}, {"snapshots", {0.15, 0.3}}}},
-      {"output", {{"directory", "out"}, {"report", false}, {"vtk", false}}}};
+  json p = {{"name", "leak over a cavity, scaled"},
+            {"physics", "cfd-dem"},
+            {"box", {{"low", {0, 0, 0}}, {"high", {0.1, 0.1, 0.1}}}},
+            {"grains",
+             {{"diameter", 0.006},
+              {"density", 2650},
+              {"count", 5000},
+              {"youngs_modulus", 1e7},
+              {"poisson_ratio", 0.3},
+              {"restitution", 0.5},
+              {"friction", 0.8},
+              {"rolling_friction", rolling},
+              {"settle_friction", 0.1},
+              {"seed", 1},
+              {"settle_time", 0.4},
+              {"fill", {{"low", {0, 0, 0}}, {"high", {0.1, 0.1, 0.18}}}}}},
+            {"cavity", {{"centre", {0.05, 0.05, 0.06}}, {"radius", 0.025}, {"drain", true}}},
+            {"point_a", {0.05, 0.05, 0.09}},
+            {"fluid", {{"density", 1000}, {"viscosity", 0.001}, {"cell_size", 0.01}}},
+            {"time", {{"end", 0.3}, {"unit", "s"}, {"snapshots", {0.15, 0.3}}}},
+            {"output", {{"directory", "out"}, {"report", false}, {"vtk", false}}}};
   if (velocity > 0) p["flow"] = {{"inflow", "y_min"}, {"darcy_velocity", velocity}, {"outflow", "y_max"}};
   return p;
 }
@@ -81,7 +89,8 @@ void check_conserved(const json& soil) {
 
 }  // namespace
 
-TEST_CASE("leak, scaled: a strong packing stands without flow, and flow carries grains into the cavity", "[cfd_dem][leak]") {
+TEST_CASE("leak, scaled: a strong packing stands without flow, and flow carries grains into the cavity",
+          "[cfd_dem][leak]") {
   const json still = run(scaled_case(0.5, 0.0));
   const double start = still["grains_at_start"];
   const auto& end = still["series"].back();
@@ -109,7 +118,8 @@ TEST_CASE("leak, scaled: a strong packing stands without flow, and flow carries 
   CHECK(previous > 5.0 * first);  // far above fluidisation the flow, not gravity, empties the crown
 }
 
-TEST_CASE("leak, scaled: a weak packing caves in over the cavity and the surface settles most above it", "[cfd_dem][leak]") {
+TEST_CASE("leak, scaled: a weak packing caves in over the cavity and the surface settles most above it",
+          "[cfd_dem][leak]") {
   const json soil = run(scaled_case(0.1, 0.0));
   check_conserved(soil);
   const auto& end = soil["series"].back();
@@ -129,15 +139,17 @@ TEST_CASE("leak, scaled: a weak packing caves in over the cavity and the surface
   CHECK(deepest > 0.006);  // more than a grain
 }
 
-TEST_CASE("leak, scaled: a study of inflow velocities runs the variants in turn and compares their losses", "[cfd_dem][leak][study]") {
+TEST_CASE("leak, scaled: a study of inflow velocities runs the variants in turn and compares their losses",
+          "[cfd_dem][leak][study]") {
   frostwall::test::TempDir dir;
   json base = scaled_case(0.5, 0.01);
   base["time"] = {{"end", 0.1}, {"unit", "s"}, {"snapshots", {0.1}}};
   std::ofstream(dir.path / "base.json") << base.dump(2);
-  const json study = {{"name", "leak velocities, scaled"},
-                      {"base", "base.json"},
-                      {"output", {{"directory", "study"}}},
-                      {"product", {{{"path", "flow.darcy_velocity"}, {"values", {0.01, 0.3}}, {"labels", {"slow", "fast"}}}}}};
+  const json study = {
+      {"name", "leak velocities, scaled"},
+      {"base", "base.json"},
+      {"output", {{"directory", "study"}}},
+      {"product", {{{"path", "flow.darcy_velocity"}, {"values", {0.01, 0.3}}, {"labels", {"slow", "fast"}}}}}};
   std::ofstream(dir.path / "study.json") << study.dump(2);
   frostwall_in(dir.path, "study", "study.json");
   std::ifstream html_in(dir.path / "study" / "study.html");
@@ -159,7 +171,8 @@ TEST_CASE("leak, scaled: a study of inflow velocities runs the variants in turn 
   CHECK(lost(fast) > lost(slow));
 }
 
-TEST_CASE("leak, scaled: the report shows the erosion section with a displacement map per snapshot", "[cfd_dem][leak][report]") {
+TEST_CASE("leak, scaled: the report shows the erosion section with a displacement map per snapshot",
+          "[cfd_dem][leak][report]") {
   frostwall::test::TempDir dir;
   json p = scaled_case(0.5, 0.3);
   p["time"] = {{"end", 0.1}, {"unit", "s"}, {"snapshots", {0.05, 0.1}}};
@@ -187,7 +200,8 @@ TEST_CASE("leak, scaled: the report shows the erosion section with a displacemen
   CHECK(html.find("<circle") != std::string::npos);
   // The 3-D views of the last snapshot: the whole block and the cut-away.
   std::size_t views = 0;
-  for (std::size_t at = 0; (at = html.find("<figure><img src=\"data:image/png;base64,", at)) != std::string::npos; ++at) ++views;
+  for (std::size_t at = 0; (at = html.find("<figure><img src=\"data:image/png;base64,", at)) != std::string::npos; ++at)
+    ++views;
   CHECK(views == 2);
 }
 
@@ -218,8 +232,16 @@ json scaled_heap(int seed) {
             {"physics", "cfd-dem"},
             {"box", {{"low", {0, 0, 0}}, {"high", {0.24, 0.24, 0.15}}}},
             {"grains",
-             {{"diameter", 0.006}, {"density", 2650}, {"count", 1200}, {"youngs_modulus", 1e7}, {"poisson_ratio", 0.3},
-              {"restitution", 0.5}, {"friction", 0.5}, {"rolling_friction", 0.1}, {"seed", seed}, {"settle_time", 0.3},
+             {{"diameter", 0.006},
+              {"density", 2650},
+              {"count", 1200},
+              {"youngs_modulus", 1e7},
+              {"poisson_ratio", 0.3},
+              {"restitution", 0.5},
+              {"friction", 0.5},
+              {"rolling_friction", 0.1},
+              {"seed", seed},
+              {"settle_time", 0.3},
               {"fill", {{"low", {0.08, 0.08, 0}}, {"high", {0.16, 0.16, 0.15}}}}}},
             {"heap", json::object()},
             {"fluid", {{"density", 1000}, {"viscosity", 0.001}, {"cell_size", 0.02}}},
@@ -257,7 +279,8 @@ constexpr double repose_low = 20.0, repose_high = 35.0;
 
 }  // namespace
 
-TEST_CASE("leak, scaled: a kept cavity holds what falls in, and the crater's flanks stand near the angle of repose", "[cfd_dem][leak]") {
+TEST_CASE("leak, scaled: a kept cavity holds what falls in, and the crater's flanks stand near the angle of repose",
+          "[cfd_dem][leak]") {
   const auto [summary, heap] = run_both(kept_collapse(), scaled_heap(1));
   const json& soil = summary["soil"];
   CHECK(soil["cavity"]["mode"] == "keep");
@@ -272,11 +295,12 @@ TEST_CASE("leak, scaled: a kept cavity holds what falls in, and the crater's fla
   const auto& end = soil["series"].back();
   const json& crater = soil["crater"];
   const double repose = heap["angle_of_repose_deg"];
-  fmt::print("kept cavity: {} of {} grains fell in (the void holds {:.0f}), {} in it now; crater {:.1f} mm deep, {:.0f} mm wide, "
-             "flanks {:.1f} deg, {:.3g} m3; repose {:.1f} deg\n",
-             end["lost_to_cavity"].get<double>(), start, capacity, end["grains_in_cavity"].get<double>(),
-             1e3 * crater["depth_m"].get<double>(), 1e3 * crater["width_m"].get<double>(), crater["slope_deg"].get<double>(),
-             crater["volume_m3"].get<double>(), repose);
+  fmt::print(
+      "kept cavity: {} of {} grains fell in (the void holds {:.0f}), {} in it now; crater {:.1f} mm deep, {:.0f} mm wide, "
+      "flanks {:.1f} deg, {:.3g} m3; repose {:.1f} deg\n",
+      end["lost_to_cavity"].get<double>(), start, capacity, end["grains_in_cavity"].get<double>(),
+      1e3 * crater["depth_m"].get<double>(), 1e3 * crater["width_m"].get<double>(), crater["slope_deg"].get<double>(),
+      crater["volume_m3"].get<double>(), repose);
   // The void ends partly filled: grains in it, yet fewer than it holds.
   CHECK(end["grains_in_cavity"].get<double>() > 0.1 * capacity);
   CHECK(end["grains_in_cavity"].get<double>() < capacity);
@@ -288,7 +312,8 @@ TEST_CASE("leak, scaled: a kept cavity holds what falls in, and the crater's fla
   CHECK(std::abs(crater["slope_deg"].get<double>() - repose) < 10.0);
 }
 
-TEST_CASE("leak, scaled: the grains' heap stands at a published angle of repose, the same for a second seed", "[cfd_dem][leak][repose]") {
+TEST_CASE("leak, scaled: the grains' heap stands at a published angle of repose, the same for a second seed",
+          "[cfd_dem][leak][repose]") {
   const auto [first, second] = run_both(scaled_heap(1), scaled_heap(2));
   const double a = first["angle_of_repose_deg"], b = second["angle_of_repose_deg"];
   fmt::print("heap: angle of repose {:.1f} deg (seed 1), {:.1f} deg (seed 2), {:.1f} mm high\n", a, b,

@@ -32,7 +32,8 @@ constexpr double a = lambda / rho_c, v = q * rho_c_w / rho_c;
 // The exact rise, the integral taken in u = ln psi (smooth there) by the
 // trapezium rule on 4 000 intervals from psi = 1e-12.
 double exact_rise(const Vec<2>& x, double t) {
-  const double beta = v * v * x.squaredNorm() / (16.0 * a * a), top = std::log(v * v * t / (4.0 * a)), bottom = std::log(1e-12);
+  const double beta = v * v * x.squaredNorm() / (16.0 * a * a), top = std::log(v * v * t / (4.0 * a)),
+               bottom = std::log(1e-12);
   const int n = 4000;
   double sum = 0.0;
   for (int k = 0; k <= n; ++k) {
@@ -41,7 +42,6 @@ double exact_rise(const Vec<2>& x, double t) {
   }
   return q_L / (4.0 * std::numbers::pi * lambda) * std::exp(v * x[0] / (2.0 * a)) * sum * (top - bottom) / n;
 }
-
 
 // Runs the case on a lattice of spacing s (rows half a spacing off the
 // axes, so two particles straddle the line); returns the relative error at
@@ -59,14 +59,16 @@ std::vector<double> line_source_errors(double s, std::string& log) {
   cloud.mirrors = {{Vec<2>(0.0, 0.0), Vec<2>(0.0, 1.0)}};
   cloud.order_free_first();
   const sph::WendlandC2<2> kernel;
-  const auto pairs = sph::build_laplacian_pairs<2>(cloud, kernel, {h, project::LaplacianForm::renormalised, false, false, true});
+  const auto pairs =
+      sph::build_laplacian_pairs<2>(cloud, kernel, {h, project::LaplacianForm::renormalised, false, false, true});
   std::vector<double> far;
   for (std::size_t j = cloud.n_free; j < cloud.size(); ++j) far.push_back(-q * cloud.position[j][0]);
   groundwater::DarcyCloud darcy(pairs, cloud.volume, far);
   darcy.solve(std::vector<double>(cloud.size(), 1.0));
   const thermal::PhaseChangeLaw ground(test::no_phase_change_soil("OGS moving line source", lambda, rho_c));
   thermal::ThermalModel model(cloud.volume, cloud.boundary, pairs, ground,
-                              {{"far_field", project::TemperatureSchedule::fixed(0.0)}}, thermal::ConductionOptions{}, 0.0);
+                              {{"far_field", project::TemperatureSchedule::fixed(0.0)}}, thermal::ConductionOptions{},
+                              0.0);
   thermal::HeatAdvection water(rho_c_w, darcy.pair_flux());
   thermal::ExplicitEuler conduction(0.1, h);
   // The source: the particles within a spacing of the line (this half of
@@ -88,8 +90,9 @@ std::vector<double> line_source_errors(double s, std::string& log) {
   }
   // The nearest particle to each point, compared at its own position.
   std::vector<double> errors;
-  for (const auto& [name, point] : {std::pair{"upstream", Vec<2>(-5.0, 0.0)}, std::pair{"downstream", Vec<2>(5.0, 0.0)},
-                                    std::pair{"across", Vec<2>(0.0, 5.0)}, std::pair{"far downstream", Vec<2>(10.0, 0.0)}}) {
+  for (const auto& [name, point] :
+       {std::pair{"upstream", Vec<2>(-5.0, 0.0)}, std::pair{"downstream", Vec<2>(5.0, 0.0)},
+        std::pair{"across", Vec<2>(0.0, 5.0)}, std::pair{"far downstream", Vec<2>(10.0, 0.0)}}) {
     std::size_t nearest = 0;
     for (std::size_t i = 1; i < cloud.n_free; ++i)
       if ((cloud.position[i] - point).norm() < (cloud.position[nearest] - point).norm()) nearest = i;
@@ -103,7 +106,8 @@ std::vector<double> line_source_errors(double s, std::string& log) {
 
 }  // namespace
 
-TEST_CASE("A line source in a Darcy flow against the moving line source solution", "[freezing][groundwater][advection][verification]") {
+TEST_CASE("A line source in a Darcy flow against the moving line source solution",
+          "[freezing][groundwater][advection][verification]") {
   std::string log;
   const auto coarse = line_source_errors(1.0, log), fine = line_source_errors(0.5, log);
   INFO(log);

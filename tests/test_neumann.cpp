@@ -40,9 +40,9 @@ double exact_temperature(double x, double t, double lambda) {
 }
 
 struct NeumannResult {
-  double isoline_error;  // relative, the 0.5 isoline's mean x against 2 lambda sqrt(t) at t = 0.15
-  double front_error[2];  // relative, at t = 0.10 and 0.15
-  double rms_front_error;  // relative, over 40 instants in [0.025, 0.15]
+  double isoline_error;          // relative, the 0.5 isoline's mean x against 2 lambda sqrt(t) at t = 0.15
+  double front_error[2];         // relative, at t = 0.10 and 0.15
+  double rms_front_error;        // relative, over 40 instants in [0.025, 0.15]
   double max_temperature_error;  // at t = 0.15, over the particles
   std::vector<double> front;     // X at the 40 instants
 };
@@ -61,7 +61,8 @@ NeumannResult solve_neumann(double dx, double lambda, const std::string& numeric
   double sum_squares = 0.0;
   test::march(m, times, [&](std::size_t k) {
     const double t = times[k];
-    const auto X = post::frozen_front(m.particles().position, m.model->liquid_fraction(), m.model->free_count(), *m.face);
+    const auto X =
+        post::frozen_front(m.particles().position, m.model->liquid_fraction(), m.model->free_count(), *m.face);
     REQUIRE(X);
     const double exact = 2.0 * lambda * std::sqrt(t);
     const double error = std::abs(*X - exact) / exact;
@@ -81,8 +82,8 @@ NeumannResult solve_neumann(double dx, double lambda, const std::string& numeric
       for (std::size_t i = 0; i < m.model->free_count(); ++i) {
         const double x = m.particles().position[i][0];
         if (x > 1.0) continue;  // far field: the semi-infinite solution does not see the far end
-        r.max_temperature_error = std::max(r.max_temperature_error,
-                                           std::abs(m.model->temperature()[i] - exact_temperature(x, t, lambda)));
+        r.max_temperature_error =
+            std::max(r.max_temperature_error, std::abs(m.model->temperature()[i] - exact_temperature(x, t, lambda)));
       }
     }
   });
@@ -131,7 +132,8 @@ TEST_CASE("Neumann problem: front within 1 % of sqrt(t) and converging", "[freez
 // (Measured: rkl2 0.052 / 0.026 / 0.006 %, implicit 0.36 / 0.084 / 0.005 %;
 // step_change above 1 changes nothing here, the 40 output instants then
 // set the step; below 1/16 both reach the explicit run's own ~0.005 %.)
-TEST_CASE("Neumann problem with the adaptive-step integrators: time error falls with the step", "[freezing][verification][neumann]") {
+TEST_CASE("Neumann problem with the adaptive-step integrators: time error falls with the step",
+          "[freezing][verification][neumann]") {
   const double lambda = lambda_exact();
   const double dx = 0.005;
   const NeumannResult reference = solve_neumann(dx, lambda);
@@ -145,8 +147,7 @@ TEST_CASE("Neumann problem with the adaptive-step integrators: time error falls 
       const NeumannResult r = solve_neumann(dx, lambda, test::numerics(dx, "renormalised", integrator, change));
       REQUIRE(r.front.size() == reference.front.size());
       double sum = 0.0;
-      for (std::size_t k = 0; k < r.front.size(); ++k)
-        sum += std::pow((r.front[k] - reference.front[k]) / exact[k], 2);
+      for (std::size_t k = 0; k < r.front.size(); ++k) sum += std::pow((r.front[k] - reference.front[k]) / exact[k], 2);
       time_error.push_back(std::sqrt(sum / r.front.size()));
       fmt::print("  {:<11}  {:10.4f} %    {:8.4f} %\n", change, 100 * time_error.back(), 100 * r.front_error[1]);
       if (change == 0.25) {
@@ -167,7 +168,8 @@ TEST_CASE("Neumann problem on a graded cloud: front within 1 %", "[freezing][ver
   const double lambda = lambda_exact();
   std::vector<double> times;
   for (int k = 1; k <= 40; ++k) times.push_back(0.025 + k * 0.125 / 40);
-  fmt::print("\nNeumann problem on a graded cloud (rkl2)\n  finest spacing  particles  err X(0.10)  err X(0.15)  rms err\n");
+  fmt::print(
+      "\nNeumann problem on a graded cloud (rkl2)\n  finest spacing  particles  err X(0.10)  err X(0.15)  rms err\n");
   std::vector<double> rms;
   for (double dx : {0.01, 0.005}) {
     const auto p = test::rectangle_project(
@@ -178,7 +180,8 @@ TEST_CASE("Neumann problem on a graded cloud: front within 1 %", "[freezing][ver
     auto m = freezing::build_model(p);
     double sum = 0.0, err10 = 1.0, err15 = 1.0;
     test::march(m, times, [&](std::size_t k) {
-      const auto X = post::frozen_front(m.particles().position, m.model->liquid_fraction(), m.model->free_count(), *m.face);
+      const auto X =
+          post::frozen_front(m.particles().position, m.model->liquid_fraction(), m.model->free_count(), *m.face);
       REQUIRE(X);
       const double exact = 2.0 * lambda * std::sqrt(times[k]);
       const double error = std::abs(*X - exact) / exact;

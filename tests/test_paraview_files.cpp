@@ -115,10 +115,11 @@ std::vector<Loop> isotherm(vtkUnstructuredGrid& grid, double level) {
 
 }  // namespace
 
-TEST_CASE("ParaView's Contour filter draws the design isotherm on the main job's ring files", "[freezing][shaft][io][paraview]") {
+TEST_CASE("ParaView's Contour filter draws the design isotherm on the main job's ring files",
+          "[freezing][shaft][io][paraview]") {
   test::TempDir dir("frostwall-paraview");
-  auto p = test::shipped_project("single_ring_sand.json", {{"time", {{"end", 60}, {"snapshots", {10, 60}}}},
-                                                           {"output", {{"report", false}}}});
+  auto p = test::shipped_project("single_ring_sand.json",
+                                 {{"time", {{"end", 60}, {"snapshots", {10, 60}}}}, {"output", {{"report", false}}}});
   p.output.directory = (dir.path / "out").string();
   run::run_project(p, {});
   const fs::path out = dir.path / "out";
@@ -153,7 +154,8 @@ TEST_CASE("ParaView's Contour filter draws the design isotherm on the main job's
       const double angle = std::atan2(centre[1], centre[0]);
       const double pitch = 2.0 * std::numbers::pi / 26;
       const double nearest = std::round(angle / pitch) * pitch;  // pipes at 0, pitch, 2 pitch, ...
-      const double d = std::hypot(centre[0] - ring_radius * std::cos(nearest), centre[1] - ring_radius * std::sin(nearest));
+      const double d =
+          std::hypot(centre[0] - ring_radius * std::cos(nearest), centre[1] - ring_radius * std::sin(nearest));
       inside_pipe += d < pipe_radius && r > 0.0;
     }
     CHECK(triangles > grid->GetNumberOfPoints());  // about two per point
@@ -179,9 +181,9 @@ TEST_CASE("ParaView's Contour filter draws the design isotherm on the main job's
   CHECK(script.find("WARMEST = 15 ") != std::string::npos);
   if (std::system("python3 -c '' 2>/dev/null") == 0)
     CHECK(std::system(("python3 -c \"import ast,sys; ast.parse(open(sys.argv[1]).read())\" '" +
-                       (out / "open_in_paraview.py").string() + "'").c_str()) == 0);
-  else
-    WARN("python3 is not installed: open_in_paraview.py not parsed");
+                       (out / "open_in_paraview.py").string() + "'")
+                          .c_str()) == 0);
+  else WARN("python3 is not installed: open_in_paraview.py not parsed");
 
   // Before closure (day 10): a closed isotherm around every pipe, none
   // around the shaft.
@@ -203,12 +205,14 @@ TEST_CASE("ParaView's Contour filter draws the design isotherm on the main job's
   CHECK(outer.r_min > ring_radius + pipe_radius);
 }
 
-TEST_CASE("A PD plate's files hold the plate alone, as triangles ParaView contours, within the boundary and start temperatures", "[pd][mechanics][io][paraview]") {
+TEST_CASE(
+    "A PD plate's files hold the plate alone, as triangles ParaView contours, within the boundary and start temperatures",
+    "[pd][mechanics][io][paraview]") {
   test::TempDir dir("frostwall-paraview-plate");
-  auto p = test::shipped_project("plate_cooling.json",
-                                 {{"numerics", {{"method", "pd"}, {"spacing", 0.0005}}},
-                                  {"time", {{"end", 100}, {"unit", "s"}, {"snapshots", {25, 100}}}},
-                                  {"output", {{"report", false}}}});
+  auto p =
+      test::shipped_project("plate_cooling.json", {{"numerics", {{"method", "pd"}, {"spacing", 0.0005}}},
+                                                   {"time", {{"end", 100}, {"unit", "s"}, {"snapshots", {25, 100}}}},
+                                                   {"output", {{"report", false}}}});
   p.output.directory = (dir.path / "out").string();
   run::run_project(p, {});
   const fs::path out = dir.path / "out";

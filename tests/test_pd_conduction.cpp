@@ -22,17 +22,21 @@ using namespace frostwall;
 
 namespace {
 
-const std::string insulated = R"({ "left": "adiabatic", "right": "adiabatic", "top": "adiabatic", "bottom": "adiabatic" })";
+const std::string insulated =
+    R"({ "left": "adiabatic", "right": "adiabatic", "top": "adiabatic", "bottom": "adiabatic" })";
 
-std::string pd_numerics(double dx, const std::string& laplacian = "renormalised", const std::string& integrator = "explicit") {
-  return fmt::format(R"({{ "spacing": {}, "method": "pd", "laplacian": "{}", "integrator": "{}", "step_change": 0.25 }})",
-                     dx, laplacian, integrator);
+std::string pd_numerics(double dx, const std::string& laplacian = "renormalised",
+                        const std::string& integrator = "explicit") {
+  return fmt::format(
+      R"({{ "spacing": {}, "method": "pd", "laplacian": "{}", "integrator": "{}", "step_change": 0.25 }})", dx,
+      laplacian, integrator);
 }
 
 // Largest relative error of the rate for T = (x^2 + y^2)/2 (exact: 2 k,
 // k = rho = c = 1) over particles more than a horizon from every side.
 double quadratic_rate_error(double dx, const std::string& laplacian) {
-  auto p = test::rectangle_project(1.0, 1.0, insulated, test::unit_soil(-100.0, 0.0), 5.0, 1.0, pd_numerics(dx, laplacian));
+  auto p =
+      test::rectangle_project(1.0, 1.0, insulated, test::unit_soil(-100.0, 0.0), 5.0, 1.0, pd_numerics(dx, laplacian));
   auto m = freezing::build_model(p);
   const auto& x = m.particles().position;
   for (std::size_t i = 0; i < m.model->free_count(); ++i)
@@ -64,7 +68,8 @@ TEST_CASE("PD conduction: micro-conductivity and a quadratic field", "[mechanics
   const double renormalised = quadratic_rate_error(0.02, "renormalised");
   const double plain = quadratic_rate_error(0.02, "plain");
   fmt::print("\nPD conduction, T = (x^2 + y^2)/2 away from the sides (delta = 3.015 dx): rate error renormalised "
-             "{:.2e}, plain (partial volumes) {:.2e}\n", renormalised, plain);
+             "{:.2e}, plain (partial volumes) {:.2e}\n",
+             renormalised, plain);
   CHECK(renormalised < 1e-10);
   CHECK(plain > 1e-4);  // the quadrature error the renormalisation removes
   CHECK(plain < 0.06);
@@ -83,7 +88,8 @@ TEST_CASE("PD conduction: insulated sine mode, second order with renormalised bo
     fmt::print("  1/{:<6}  {:.3e}   {}    {:.3e}  {}\n", std::lround(1 / spacings[k]), renormalised[k],
                k ? fmt::format("{:5.2f}", test::observed_order(renormalised[k - 1], renormalised[k])) : "    -",
                plain[k], k ? fmt::format("{:5.2f}", test::observed_order(plain[k - 1], plain[k])) : "    -");
-  for (std::size_t k = 1; k < spacings.size(); ++k) CHECK(test::observed_order(renormalised[k - 1], renormalised[k]) >= 1.8);
+  for (std::size_t k = 1; k < spacings.size(); ++k)
+    CHECK(test::observed_order(renormalised[k - 1], renormalised[k]) >= 1.8);
   // The plain micro-conductivity's quadrature error does not shrink at
   // fixed m: its error stalls and is several times the renormalised one.
   CHECK(test::observed_order(plain[1], plain[2]) < 0.5);
@@ -105,8 +111,10 @@ TEST_CASE("PD conduction: suddenly cooled half-space follows erf", "[mechanics][
 TEST_CASE("PD conduction: energy to round-off, insulated and through a cooled face", "[mechanics][pd][energy]") {
   // Latent heat on: the phase change runs through the same bookkeeping.
   for (const bool cooled : {false, true}) {
-    const std::string sides = cooled ? R"({ "left": { "temperature": -1.0 }, "right": "adiabatic", "top": "adiabatic", "bottom": "adiabatic" })"
-                                     : insulated;
+    const std::string sides =
+        cooled
+            ? R"({ "left": { "temperature": -1.0 }, "right": "adiabatic", "top": "adiabatic", "bottom": "adiabatic" })"
+            : insulated;
     auto p = test::rectangle_project(0.5, 0.3, sides, test::unit_soil(0.0, 1.0), 0.5, 0.05, pd_numerics(0.02));
     auto m = freezing::build_model(p);
     const auto& x = m.particles().position;
@@ -118,8 +126,8 @@ TEST_CASE("PD conduction: energy to round-off, insulated and through a cooled fa
     double boundary = 0.0;
     for (double q : result.boundary_heat) boundary += q;
     const double change = m.model->stored_heat() - before;
-    fmt::print("PD energy, {}: stored change {:.6e}, boundary heat {:.6e} ({} steps)\n", cooled ? "cooled face" : "insulated",
-               change, boundary, result.steps);
+    fmt::print("PD energy, {}: stored change {:.6e}, boundary heat {:.6e} ({} steps)\n",
+               cooled ? "cooled face" : "insulated", change, boundary, result.steps);
     CHECK(std::abs(change - boundary) < 1e-9 * std::max(1.0, std::abs(before)));
     if (cooled) CHECK(change < 0.0);
   }
@@ -129,8 +137,10 @@ TEST_CASE("PD conduction: energy to round-off, insulated and through a cooled fa
 // pair across x = 0.25 stops all heat between the halves, and the cut keeps
 // the flux antisymmetric, so the stored heat is still exact.
 TEST_CASE("PD conduction: a cut through the bonds stops the heat and keeps energy", "[mechanics][pd][energy]") {
-  const std::string sides = R"({ "left": "adiabatic", "right": "adiabatic", "top": "adiabatic", "bottom": "adiabatic" })";
-  auto m = freezing::build_model(test::rectangle_project(0.5, 0.3, sides, test::unit_soil(-100.0, 0.0), 0.0, 0.05, pd_numerics(0.02)));
+  const std::string sides =
+      R"({ "left": "adiabatic", "right": "adiabatic", "top": "adiabatic", "bottom": "adiabatic" })";
+  auto m = freezing::build_model(
+      test::rectangle_project(0.5, 0.3, sides, test::unit_soil(-100.0, 0.0), 0.0, 0.05, pd_numerics(0.02)));
   const auto& x = m.particles().position;
   const std::size_t n = m.model->free_count();
   for (std::size_t i = 0; i < n; ++i) m.model->set_enthalpy(i, m.model->law().enthalpy(x[i][0] < 0.25 ? 2.0 : 1.0));
@@ -146,9 +156,12 @@ TEST_CASE("PD conduction: a cut through the bonds stops the heat and keeps energ
   thermal::TimeLoopObservers none;
   thermal::run_time_loop(*m.model, *m.integrator, 0.05, {0.05}, none);
   double hot = 0.0, cold = 0.0;
-  for (std::size_t i = 0; i < n; ++i) (x[i][0] < 0.25 ? hot : cold) = std::max(x[i][0] < 0.25 ? hot : cold, std::abs(m.model->temperature()[i] - (x[i][0] < 0.25 ? 2.0 : 1.0)));
-  fmt::print("PD cut: {} pair entries cut; largest change, hot half {:.2e}, cold half {:.2e}; stored heat change {:.2e}\n", cut,
-             hot, cold, m.model->stored_heat() - before);
+  for (std::size_t i = 0; i < n; ++i)
+    (x[i][0] < 0.25 ? hot : cold) =
+        std::max(x[i][0] < 0.25 ? hot : cold, std::abs(m.model->temperature()[i] - (x[i][0] < 0.25 ? 2.0 : 1.0)));
+  fmt::print(
+      "PD cut: {} pair entries cut; largest change, hot half {:.2e}, cold half {:.2e}; stored heat change {:.2e}\n",
+      cut, hot, cold, m.model->stored_heat() - before);
   CHECK(hot < 1e-12);
   CHECK(cold < 1e-12);
   CHECK(std::abs(m.model->stored_heat() - before) < 1e-12 * std::abs(before));

@@ -47,7 +47,8 @@ std::unique_ptr<pd::PdSolid> pulled(double L, double dx, double d, double G0) {
 }
 
 // The force density of the linear kinematics the solve uses.
-std::vector<double> linear_forces(const pd::PdSolid& solid, const std::vector<double>& u, const std::vector<double>& dT) {
+std::vector<double> linear_forces(const pd::PdSolid& solid, const std::vector<double>& u,
+                                  const std::vector<double>& dT) {
   std::vector<double> u_all, dT_all, thermal, F;
   solid.extend(u, u_all);
   solid.extend_temperature(dT, dT_all);
@@ -82,7 +83,8 @@ double largest_difference(const std::vector<double>& a, const std::vector<double
 
 }  // namespace
 
-TEST_CASE("PD direct equilibrium: the cooled plate's exact displacement in one solve", "[pd][mechanics][verification]") {
+TEST_CASE("PD direct equilibrium: the cooled plate's exact displacement in one solve",
+          "[pd][mechanics][verification]") {
   const double L = 0.01, dx = L / 30;
   const auto m = rollers();
   const pd::PdSolid solid(test::square_lattice(L, dx), m, pd::make_bond_law(m, 3.015 * dx));
@@ -94,14 +96,16 @@ TEST_CASE("PD direct equilibrium: the cooled plate's exact displacement in one s
   double error = 0.0;
   for (std::size_t i = 0; i < solid.size(); ++i)
     error = std::max(error, (Vec2(u[2 * i], u[2 * i + 1]) - k * solid.position()[i]).norm() / (std::abs(k) * L));
-  fmt::print("PD direct equilibrium, cooled plate 30 x 30: {} CG iterations, {} factorization, max |u - exact| / |u(A)| {:.2e}\n",
-             r.iterations, direct.factorizations(), error);
+  fmt::print(
+      "PD direct equilibrium, cooled plate 30 x 30: {} CG iterations, {} factorization, max |u - exact| / |u(A)| {:.2e}\n",
+      r.iterations, direct.factorizations(), error);
   REQUIRE(r.converged);
   CHECK(r.iterations <= 3);  // the factor is of this very K
   CHECK(error < 1e-6);
 }
 
-TEST_CASE("PD direct equilibrium: a pulled pre-crack and a rigid group, as the relaxation finds them", "[pd][mechanics]") {
+TEST_CASE("PD direct equilibrium: a pulled pre-crack and a rigid group, as the relaxation finds them",
+          "[pd][mechanics]") {
   const double L = 0.01, dx = L / 30, d = 1e-7;
   auto solid = pulled(L, dx, d, 50.0);
   // A disc of particles held as one rigid group, pushed out radially by
@@ -140,7 +144,8 @@ TEST_CASE("PD direct equilibrium: a pulled pre-crack and a rigid group, as the r
   CHECK(difference < 1e-5);
 }
 
-TEST_CASE("PD direct equilibrium: a crack runs at a fixed load and stops where no bond is beyond critical", "[pd][mechanics][fracture]") {
+TEST_CASE("PD direct equilibrium: a crack runs at a fixed load and stops where no bond is beyond critical",
+          "[pd][mechanics][fracture]") {
   const double L = 0.01, dx = L / 40, G0 = 50.0;
   const std::vector<double> dT(40 * 40, 0.0);
   // The critical load by linearity, as in test_pd_solid.cpp.
@@ -172,7 +177,9 @@ TEST_CASE("PD direct equilibrium: a crack runs at a fixed load and stops where n
   }
 }
 
-TEST_CASE("PD direct equilibrium: a crack cascade solved by preconditioned CG breaks what K's own factor every round breaks", "[pd][mechanics][fracture]") {
+TEST_CASE(
+    "PD direct equilibrium: a crack cascade solved by preconditioned CG breaks what K's own factor every round breaks",
+    "[pd][mechanics][fracture]") {
   // A disc of held particles pushed out radially in small steps (a pore
   // as it freezes) in a plate on rollers; radial cracks run from it, in
   // rounds at each step. The reference factors K after every round, so
@@ -205,8 +212,9 @@ TEST_CASE("PD direct equilibrium: a crack cascade solved by preconditioned CG br
         }
       REQUIRE(direct.solve_adjusting(solid, u, dT, adjust).converged);
     }
-    fmt::print("PD disc pushed to 4 x critical hoop strain in 20 steps: {} bonds broken, {} equilibria, {} factorizations\n",
-               count, direct.solves(), direct.factorizations());
+    fmt::print(
+        "PD disc pushed to 4 x critical hoop strain in 20 steps: {} bonds broken, {} equilibria, {} factorizations\n",
+        count, direct.solves(), direct.factorizations());
     return count;
   };
   const std::size_t reference = run(pd::DirectEquilibrium(1e-8, 0)), preconditioned = run(pd::DirectEquilibrium());

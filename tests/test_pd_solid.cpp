@@ -69,9 +69,10 @@ TEST_CASE("PD solid: uniform stretch stores the continuum's energy", "[pd][mecha
       if (std::max(x[0], x[1]) < L - 7 * dx) interior = std::max(interior, e);
       else edge = std::max(edge, e);
     }
-    fmt::print("\nPD uniform stretch, plane {}: energy density vs continuum, worst interior {:.2e}, worst at the free edges "
-               "{:.2e} (surface-corrected; isotropic stretch after uniaxial calibration)\n",
-               plane == project::Plane::strain ? "strain" : "stress", interior, edge);
+    fmt::print(
+        "\nPD uniform stretch, plane {}: energy density vs continuum, worst interior {:.2e}, worst at the free edges "
+        "{:.2e} (surface-corrected; isotropic stretch after uniaxial calibration)\n",
+        plane == project::Plane::strain ? "strain" : "stress", interior, edge);
     CHECK(interior < 0.02);
     CHECK(edge < 0.35);  // the corner of two free edges is the worst
     // Forces vanish in the interior under a uniform strain.
@@ -87,7 +88,8 @@ TEST_CASE("PD solid: uniform stretch stores the continuum's energy", "[pd][mecha
   }
 }
 
-TEST_CASE("PD solid: a plate cooled by 9 K on rollers takes the exact plane-strain displacement", "[pd][mechanics][verification]") {
+TEST_CASE("PD solid: a plate cooled by 9 K on rollers takes the exact plane-strain displacement",
+          "[pd][mechanics][verification]") {
   const double L = 0.01, dx = L / 30;
   const auto m = plate_mechanics();
   const pd::PdSolid solid(square_lattice(L, dx), m, pd::make_bond_law(m, 3.015 * dx));
@@ -102,8 +104,9 @@ TEST_CASE("PD solid: a plate cooled by 9 K on rollers takes the exact plane-stra
       const Vec2 exact = k * solid.position()[i];
       error = std::max(error, (Vec2(u[2 * i], u[2 * i + 1]) - exact).norm() / (std::abs(k) * L));
     }
-    fmt::print("PD cooled plate, ADR tolerance {:.0e}: {} iterations, last increment {:.2e}, max |u - exact| / |u(A)| {:.2e}\n",
-               tolerance, r.iterations, r.increment, error);
+    fmt::print(
+        "PD cooled plate, ADR tolerance {:.0e}: {} iterations, last increment {:.2e}, max |u - exact| / |u(A)| {:.2e}\n",
+        tolerance, r.iterations, r.increment, error);
     REQUIRE(r.converged);
     CHECK(r.increment <= tolerance);
     CHECK(error < (tolerance < 1e-6 ? 1e-3 : 0.2));
@@ -126,8 +129,8 @@ TEST_CASE("PD solid: free thermal expansion breaks nothing, overstretched bonds 
   // The same displacement without the heat: mechanical stretch sT everywhere.
   const std::vector<double> cold(solid.size(), 0.0);
   const std::size_t broken = solid.break_bonds(u, cold);
-  fmt::print("PD bonds: {} of {} broken when stretched {:.1e} without heat (critical {:.1e})\n", broken, solid.bonds(), sT,
-             solid.law().critical_stretch);
+  fmt::print("PD bonds: {} of {} broken when stretched {:.1e} without heat (critical {:.1e})\n", broken, solid.bonds(),
+             sT, solid.law().critical_stretch);
   CHECK(broken > 0);
   for (double phi : solid.damage()) CHECK(phi == 1.0);  // every bond stretched the same: all broke
 }
@@ -139,7 +142,8 @@ TEST_CASE("PD solid: free thermal expansion breaks nothing, overstretched bonds 
 // through the middle breaks exactly the bonds that cross it, which cost
 // G0 L in the continuum (the definition s0 is calibrated on), here to the
 // lattice's quadrature.
-TEST_CASE("PD solid: the broken bonds' energy is the work of their critical stretch, G0 per unit of cut", "[pd][mechanics][fracture]") {
+TEST_CASE("PD solid: the broken bonds' energy is the work of their critical stretch, G0 per unit of cut",
+          "[pd][mechanics][fracture]") {
   const double L = 0.01, dx = L / 40, G0 = 5.0;
   auto m = plate_mechanics();
   m.material.fracture_energy = G0;
@@ -208,9 +212,10 @@ TEST_CASE("PD solid: a pre-crack holds at 0.9 of its critical load and breaks at
     }
     (factor < 1.0 ? broken_below : broken_above) = broken;
   }
-  fmt::print("PD pre-crack (2a = 0.3 L, 40 x 40, G0 = {} J/m2): critical top displacement {:.4e} m (first bond at s0 = {:.3e}); "
-             "Griffith (infinite plate) {:.4e} m, ratio {:.2f}; bonds broken at 0.9: {}, at 1.1: {}\n",
-             G0, d_critical, s0, d_griffith, d_critical / d_griffith, broken_below, broken_above);
+  fmt::print(
+      "PD pre-crack (2a = 0.3 L, 40 x 40, G0 = {} J/m2): critical top displacement {:.4e} m (first bond at s0 = {:.3e}); "
+      "Griffith (infinite plate) {:.4e} m, ratio {:.2f}; bonds broken at 0.9: {}, at 1.1: {}\n",
+      G0, d_critical, s0, d_griffith, d_critical / d_griffith, broken_below, broken_above);
   CHECK(broken_below == 0);
   CHECK(broken_above > 10);
 }
@@ -237,9 +242,12 @@ TEST_CASE("PD solid: the stress estimate under uniform stretch and free contract
   const double k = -(1.0 + 0.25) * alpha * 9.0;
   u = uniform_stretch(solid, k);
   double free_stress = 0.0;
-  for (const auto& t : solid.stress(u, cold)) free_stress = std::max({free_stress, std::abs(t[0]), std::abs(t[1]), std::abs(t[2])});
-  fmt::print("PD stress: uniform stretch, worst interior error {:.2e} (shear {:.1e}); free contraction, largest |sigma| {:.2e} Pa "
-             "(against {:.2e} Pa for the same strain held)\n", worst, shear, free_stress, 1.6 * E * std::abs(k));
+  for (const auto& t : solid.stress(u, cold))
+    free_stress = std::max({free_stress, std::abs(t[0]), std::abs(t[1]), std::abs(t[2])});
+  fmt::print(
+      "PD stress: uniform stretch, worst interior error {:.2e} (shear {:.1e}); free contraction, largest |sigma| {:.2e} Pa "
+      "(against {:.2e} Pa for the same strain held)\n",
+      worst, shear, free_stress, 1.6 * E * std::abs(k));
   CHECK(worst < 0.02);
   CHECK(shear < 1e-9);
   CHECK(free_stress < 1e-6 * 1.6 * E * std::abs(k));

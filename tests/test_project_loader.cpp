@@ -316,24 +316,26 @@ TEST_CASE("implausible but computable input loads with warnings", "[shared][proj
   SECTION("the paper's latent heat of clay, decimal point slipped") {
     const Project p = load_edited("single_ring_sand.json", {{"soil", {{"latent_heat", 530718}}}});
     CHECK(p.soil.latent_heat == 530718);
-    CHECK(p.warnings == std::vector<std::string>{
-                            "soil.latent_heat: 530718 J/kg is more than pure water's 334 kJ/kg; probably a "
-                            "slipped decimal point (53071.8?)"});
+    CHECK(p.warnings ==
+          std::vector<std::string>{"soil.latent_heat: 530718 J/kg is more than pure water's 334 kJ/kg; probably a "
+                                   "slipped decimal point (53071.8?)"});
   }
   SECTION("a pipe 1 degC above the freezing point") {
     const Project sand = load_edited("single_ring_sand.json", {{"pipe", {{"temperature", 1.0}}}});
-    CHECK(sand.warnings == std::vector<std::string>{
-                               "pipe.temperature: 1 degC is above the soil's freezing point (0 degC); a pipe this "
-                               "warm cannot freeze the ground"});
+    CHECK(sand.warnings ==
+          std::vector<std::string>{"pipe.temperature: 1 degC is above the soil's freezing point (0 degC); a pipe this "
+                                   "warm cannot freeze the ground"});
     const Project silty = load_edited("two_rings.json", {{"soil", "silty_clay"}, {"pipe", {{"temperature", 0.75}}}});
-    CHECK(silty.warnings == std::vector<std::string>{
-                                "pipe.temperature: 0.75 degC is above the soil's freezing point (-0.25 degC); a "
-                                "pipe this warm cannot freeze the ground"});
+    CHECK(silty.warnings ==
+          std::vector<std::string>{"pipe.temperature: 0.75 degC is above the soil's freezing point (-0.25 degC); a "
+                                   "pipe this warm cannot freeze the ground"});
   }
   SECTION("brine warmer than the freezing point") {
-    const Project p = load_edited("single_ring_sand.json",
-                                  {{"pipe", {{"temperature", nullptr}, {"boundary", "brine"}, {"brine_temperature", 2.0},
-                                             {"heat_transfer_coefficient", 300}}}});
+    const Project p = load_edited("single_ring_sand.json", {{"pipe",
+                                                             {{"temperature", nullptr},
+                                                              {"boundary", "brine"},
+                                                              {"brine_temperature", 2.0},
+                                                              {"heat_transfer_coefficient", 300}}}});
     CHECK(std::get<ShaftSection>(p.geometry).pipe.boundary == PipeBoundary::brine);
     CHECK(std::get<ShaftSection>(p.geometry).pipe.heat_transfer_coefficient == 300);
     CHECK(p.warnings == std::vector<std::string>{
@@ -341,8 +343,8 @@ TEST_CASE("implausible but computable input loads with warnings", "[shared][proj
                             "warm cannot freeze the ground"});
   }
   SECTION("one schedule point above the freezing point") {
-    const Project p = load_edited("three_hole_clay.json",
-                                  {{"pipe", {{"temperature", {{0, 1.0}, {3, -28.0}, {60, -20.0}}}}}});
+    const Project p =
+        load_edited("three_hole_clay.json", {{"pipe", {{"temperature", {{0, 1.0}, {3, -28.0}, {60, -20.0}}}}}});
     CHECK(p.warnings == std::vector<std::string>{
                             "pipe.temperature[0]: 1 degC is above the soil's freezing point (0 degC); a pipe this "
                             "warm cannot freeze the ground"});
@@ -460,8 +462,8 @@ TEST_CASE("porous plate: drawn pores are reproducible and keep their gaps", "[sh
     }
   }
   // The radii are drawn, not all alike.
-  const auto [smallest, largest] = std::minmax_element(pores.begin(), pores.end(),
-                                                        [](const Pore& a, const Pore& b) { return a.radius < b.radius; });
+  const auto [smallest, largest] =
+      std::minmax_element(pores.begin(), pores.end(), [](const Pore& a, const Pore& b) { return a.radius < b.radius; });
   CHECK(largest->radius - smallest->radius > 1e-6);
 
   const auto same = [](const std::vector<Pore>& a, const std::vector<Pore>& b) {
@@ -512,16 +514,17 @@ TEST_CASE("porous plate: pore fluid defaults and overrides", "[shared][project][
   CHECK(p.warnings.empty());
 
   const Project no_pores = load_plate({{"geometry", {{"pores", nullptr}}}, {"pore_fluid", {{"latent_heat", 0}}}});
-  CHECK(no_pores.warnings ==
-        std::vector<std::string>{"pore_fluid: the plate has no pores (geometry.pores); ignored"});
+  CHECK(no_pores.warnings == std::vector<std::string>{"pore_fluid: the plate has no pores (geometry.pores); ignored"});
 }
 
 TEST_CASE("porous plate: every problem of pores, pore fluid and freezing expansion", "[shared][project][pores]") {
-  CHECK(plate_problems({{"pore_fluid", {{"water", {{"conductivity", 0}, {"viscosity", 1e-3}}}, {"latent_heat", -1}}}}) ==
-        std::vector<std::string>{"pore_fluid.water.viscosity: unknown field",
-                                 "pore_fluid.water.conductivity: must be positive, got 0",
-                                 "pore_fluid.latent_heat: must not be negative, got -1"});
-  CHECK(plate_problems({{"geometry", {{"pores", {{"count", 0}, {"radius", {2e-5, 1e-5}}, {"min_gap", -1e-6}, {"seed", -1}}}}}}) ==
+  CHECK(
+      plate_problems({{"pore_fluid", {{"water", {{"conductivity", 0}, {"viscosity", 1e-3}}}, {"latent_heat", -1}}}}) ==
+      std::vector<std::string>{"pore_fluid.water.viscosity: unknown field",
+                               "pore_fluid.water.conductivity: must be positive, got 0",
+                               "pore_fluid.latent_heat: must not be negative, got -1"});
+  CHECK(plate_problems(
+            {{"geometry", {{"pores", {{"count", 0}, {"radius", {2e-5, 1e-5}}, {"min_gap", -1e-6}, {"seed", -1}}}}}}) ==
         std::vector<std::string>{"geometry.pores.count: must be a positive integer, got 0",
                                  "geometry.pores.radius: must be [min, max] with min <= max, got [2e-05,1e-05]",
                                  "geometry.pores.min_gap: must not be negative, got -1e-06",
@@ -530,9 +533,11 @@ TEST_CASE("porous plate: every problem of pores, pore fluid and freezing expansi
         std::vector<std::string>{
             R"(geometry.pores: must list at least one pore (leave "pores" out for a plate without pores))"});
   // A pore may touch a side; the later of two that overlap is named.
-  CHECK(plate_problems({{"geometry", {{"pores", {{{"x", 2e-5}, {"y", 2e-5}, {"radius", 2e-5}},
-                                                 {{"x", 1e-4}, {"y", 2e-5}, {"radius", 2e-5}},
-                                                 {{"x", 1.3e-4}, {"y", 5e-5}, {"radius", 3e-5}}}}}}}) ==
+  CHECK(plate_problems({{"geometry",
+                         {{"pores",
+                           {{{"x", 2e-5}, {"y", 2e-5}, {"radius", 2e-5}},
+                            {{"x", 1e-4}, {"y", 2e-5}, {"radius", 2e-5}},
+                            {{"x", 1.3e-4}, {"y", 5e-5}, {"radius", 3e-5}}}}}}}) ==
         std::vector<std::string>{"geometry.pores[2]: overlaps geometry.pores[1]"});
   CHECK(plate_problems({{"geometry", {{"pores", nullptr}}},
                         {"mechanics", {{"freezing_expansion", {{"model", "rim_displacement"}}}}}}) ==
@@ -549,7 +554,8 @@ TEST_CASE("porous plate: every problem of pores, pore fluid and freezing expansi
         std::vector<std::string>{"mechanics.freezing_expansion.model: required field is missing"});
 }
 
-TEST_CASE("porous plate: degrees of saturation per pore, for the plate, and drawn from a range", "[shared][project][pores]") {
+TEST_CASE("porous plate: degrees of saturation per pore, for the plate, and drawn from a range",
+          "[shared][project][pores]") {
   // Full pores unless told: the PD paper's case.
   const auto full = std::get<Rectangle>(load_plate(nlohmann::json::object()).geometry);
   for (const auto& pore : full.pores) CHECK(pore.saturation == 1.0);

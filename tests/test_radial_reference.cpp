@@ -57,8 +57,8 @@ TEST_CASE("radial reference: steady state without phase change is the log profil
   auto soil = sand();
   soil.latent_heat = 0.0;
   soil.freezing_point = -1000.0;  // never reached: unfrozen throughout
-  const test::RadialProblem p{.soil = soil, .pipe_radius = 0.0635, .outer_radius = 3.0, .T_init = 15.0,
-                              .T_pipe = -20.0, .T_far = 15.0};
+  const test::RadialProblem p{
+      .soil = soil, .pipe_radius = 0.0635, .outer_radius = 3.0, .T_init = 15.0, .T_pipe = -20.0, .T_far = 15.0};
   test::RadialReference ref(p, 0.001, {.growth = 0.05});
   ref.advance_to(1e10);  // some 4000 slowest decay times
   const double range = p.T_far - p.T_pipe, a = p.pipe_radius, R = p.outer_radius;
@@ -150,8 +150,8 @@ TEST_CASE("radial reference: the frozen radius of the sand case converges", "[fr
     if (k >= 2)
       order = fmt::format("{:.2f}", std::log2(std::abs(volume[k - 1][2] - volume[k - 2][2]) /
                                               std::abs(volume[k][2] - volume[k - 1][2])));
-    fmt::print("  {:7.0f}   {:5}   {:5}   {:17.6f}   {:13.6f}   {:>16}   {:>5}   {:8.3f}\n", spacings[k] * 1e3, ref.cells(),
-               ref.steps(), crossing[k][2], volume[k][2], change, order, seconds);
+    fmt::print("  {:7.0f}   {:5}   {:5}   {:17.6f}   {:13.6f}   {:>16}   {:>5}   {:8.3f}\n", spacings[k] * 1e3,
+               ref.cells(), ref.steps(), crossing[k][2], volume[k][2], change, order, seconds);
   }
   for (int d = 0; d < 3; ++d) {
     INFO("t = " << days[d] << " d");
@@ -174,8 +174,9 @@ TEST_CASE("radial reference: the frozen radius of the sand case converges", "[fr
   // The numbers the single-pipe SPH check compares with (finest spacing).
   fmt::print("radial reference, sand case at dr 1 mm: frozen radius from the pipe axis\n");
   for (int d = 0; d < 3; ++d)
-    fmt::print("  t = {:2.0f} d: f = 0.5 crossing {:.5f} m, by volume {:.5f} m (frozen thickness beyond the wall {:.5f} m)\n",
-               days[d], crossing[3][d], volume[3][d], crossing[3][d] - p.pipe_radius);
+    fmt::print(
+        "  t = {:2.0f} d: f = 0.5 crossing {:.5f} m, by volume {:.5f} m (frozen thickness beyond the wall {:.5f} m)\n",
+        days[d], crossing[3][d], volume[3][d], crossing[3][d] - p.pipe_radius);
 }
 
 TEST_CASE("radial reference: the time step is converged", "[freezing][reference]") {
@@ -202,7 +203,11 @@ TEST_CASE("radial reference: plane limit is the two-phase Neumann solution", "[f
   p.pipe_radius = 1000.0;
   p.outer_radius = 1004.0;
   {  // the generalised equation reduces to physics.md's: lambda = 0.5 for its unit problem
-    project::Soil unit{.name = "unit", .density = 1, .unfrozen = {{1, 1}, 1}, .frozen = {{1, 1}, 1}, .latent_heat = 1,
+    project::Soil unit{.name = "unit",
+                       .density = 1,
+                       .unfrozen = {{1, 1}, 1},
+                       .frozen = {{1, 1}, 1},
+                       .latent_heat = 1,
                        .freezing_point = 1.0};
     CHECK(neumann_lambda(unit, 0.1906, 1.2) == Approx(0.5).epsilon(2e-3));
   }

@@ -105,7 +105,7 @@ json write_frost_output(const fs::path& out, bool pores) {
         boundary.push_back(-1);
         u.insert(u.end(), {1e-9 * i, 0.0, 0.0});
       }
-    f.fields = {{"temperature", T},   {"liquid_fraction", lf}, {"damage", damage},    {"pore_id", pore_id},
+    f.fields = {{"temperature", T},     {"liquid_fraction", lf}, {"damage", damage},    {"pore_id", pore_id},
                 {"material", material}, {"volume", volume},      {"boundary", boundary}};
     f.vectors = {{"displacement", u}};
     const std::string file = fmt::format("field_{:04d}.vtu", k + 1);
@@ -113,17 +113,22 @@ json write_frost_output(const fs::path& out, bool pores) {
     pvd.push_back({times[k], file});
   }
   io::write_pvd(out / "field.pvd", pvd);
-  json summary = {{"project", "porous plate by hand"},
-                  {"frostwall_version", "test"},
-                  {"front", json::array()},
-                  {"run", {{"time_unit", "s"}, {"spacing", s}, {"smoothing_length", 1.3 * s}, {"kernel", "wendland_c2"}}}};
+  json summary = {
+      {"project", "porous plate by hand"},
+      {"frostwall_version", "test"},
+      {"front", json::array()},
+      {"run", {{"time_unit", "s"}, {"spacing", s}, {"smoothing_length", 1.3 * s}, {"kernel", "wendland_c2"}}}};
   if (pores) {
     summary["pores"] = pore_list;
     summary["all_pores_frozen"] = nullptr;
     summary["damage"] = summary["cracks"] = json::array();
     for (std::size_t k = 0; k < times.size(); ++k) {
-      summary["damage"].push_back({{"time", times[k]}, {"broken_bond_share", 0.01}, {"largest_damage", 0.5}, {"damaged_area", 1e-11},
-                                   {"crack_length", 2.5e-4 * (k + 1)}, {"crack_length_per_area", 4e3 * (k + 1)},
+      summary["damage"].push_back({{"time", times[k]},
+                                   {"broken_bond_share", 0.01},
+                                   {"largest_damage", 0.5},
+                                   {"damaged_area", 1e-11},
+                                   {"crack_length", 2.5e-4 * (k + 1)},
+                                   {"crack_length_per_area", 4e3 * (k + 1)},
                                    {"broken_bond_energy", 1.5e-3 * (k + 1)}});
       summary["cracks"].push_back({{"t", times[k]}, {"file", fmt::format("cracks_{:04d}.vtp", k + 1)}});
     }
@@ -145,7 +150,8 @@ std::size_t polyline_points(const std::string& svg) {
 
 }  // namespace
 
-TEST_CASE("The report of a shaft run fills every placeholder, loads nothing and balances its tags", "[shared][report]") {
+TEST_CASE("The report of a shaft run fills every placeholder, loads nothing and balances its tags",
+          "[shared][report]") {
   test::TempDir dir("frostwall-report");
   const fs::path out = dir.path / "out";
   coarse_main_job(out);
@@ -159,7 +165,8 @@ TEST_CASE("The report of a shaft run fills every placeholder, loads nothing and 
   // (The wall check and brine sections' names: tests/test_layers.cpp.)
   std::string thermal(report::templates::report_html);
   // (A plain geometry's cards: the PD plate's and porous plate's tests.)
-  for (const char* section : {"has_frost", "has_cfd_dem", "has_groundwater", "has_wall_check", "has_brine", "has_cards"})
+  for (const char* section :
+       {"has_frost", "has_cfd_dem", "has_groundwater", "has_wall_check", "has_brine", "has_cards"})
     thermal = split_section(thermal, section).second;
   for (const auto& name : report::template_names(thermal)) {
     INFO(name);
@@ -190,7 +197,8 @@ TEST_CASE("The report of a shaft run fills every placeholder, loads nothing and 
   CHECK(html.find("Frozen columns touch") != std::string::npos);
   CHECK(html.find(fmt::format("day {:.1f}", summary["front_contact_days"].get<double>())) != std::string::npos);
   CHECK(html.find(summary["design"]["pass"].get<bool>() ? ">PASS<" : ">FAIL<") != std::string::npos);
-  for (const char* link : {"href=\"summary.json\"", "href=\"wall.csv\"", "href=\"field_0004.vtu\"", "href=\"ring.pvd\""})
+  for (const char* link :
+       {"href=\"summary.json\"", "href=\"wall.csv\"", "href=\"field_0004.vtu\"", "href=\"ring.pvd\""})
     CHECK(html.find(link) != std::string::npos);
 
   // Rebuilt from the files alone.
@@ -207,7 +215,8 @@ TEST_CASE("The report of a shaft run fills every placeholder, loads nothing and 
 TEST_CASE("A plain-geometry run without project.json still gets a report", "[shared][report]") {
   test::TempDir dir("frostwall-report-plain");
   auto p = test::rectangle_project(
-      0.2, 0.02, R"({ "left": { "temperature": -10 }, "right": "adiabatic", "top": "adiabatic", "bottom": "adiabatic" })",
+      0.2, 0.02,
+      R"({ "left": { "temperature": -10 }, "right": "adiabatic", "top": "adiabatic", "bottom": "adiabatic" })",
       R"("sand")", 5.0, 86400.0, test::numerics(0.005));
   p.output.directory = (dir.path / "out").string();
   run::run_project(p, {});  // no project text: the report must do without project.json
@@ -250,7 +259,7 @@ TEST_CASE("Axes get round ticks and journal labels", "[shared][report][chart]") 
   CHECK(s.step == Approx(5.0));
   CHECK(s.ticks.size() == 4);
   CHECK(report::nice_scale(0.0, 13.6, 7).step == Approx(2.0));
-  CHECK(report::tight_scale(0.0, 12.0).hi == Approx(12.0));   // a 12-day axis ends at 12
+  CHECK(report::tight_scale(0.0, 12.0).hi == Approx(12.0));  // a 12-day axis ends at 12
   CHECK(report::tight_scale(0.0, 120.0).hi == Approx(120.0));
   CHECK(report::tight_scale(-23.0, 15.0).lo == Approx(-25.0));
   const auto t = report::nice_scale(-23.0, 15.0);
@@ -313,10 +322,10 @@ TEST_CASE("Folding maps every copy of a wedge point back onto it", "[shared][rep
 TEST_CASE("Colours turn from blue to red at the freezing point", "[shared][report][map]") {
   const report::ColourScale c(-25.0, 15.0, 0.0);
   const auto cold = c(-25.0), zero = c(0.0), warm = c(15.0);
-  CHECK(cold[2] > cold[0]);  // blue
-  CHECK(warm[0] > warm[2]);  // red
-  CHECK(zero[0] == zero[2]); // neutral grey
-  CHECK(c(-100.0) == cold);  // clamped
+  CHECK(cold[2] > cold[0]);   // blue
+  CHECK(warm[0] > warm[2]);   // red
+  CHECK(zero[0] == zero[2]);  // neutral grey
+  CHECK(c(-100.0) == cold);   // clamped
   const std::string bar = c.colour_bar_svg(500);
   CHECK(bar.find("temperature (°C)") != std::string::npos);
   CHECK(bar.find(">\u221225<") != std::string::npos);
@@ -366,9 +375,9 @@ TEST_CASE("The report of a porous plate has a frost damage section", "[shared][r
   CHECK(test::html_balance_problem(bars) == "");
   // The crack table: a row per snapshot, in the units of its header.
   REQUIRE(view["crack_rows"].size() == snapshots);
-  CHECK(view["crack_rows"][1]["length"] == "500");         // 5e-4 m in um
-  CHECK(view["crack_rows"][1]["per_area"] == "8");         // 8e3 /m in /mm
-  CHECK(view["crack_rows"][1]["energy"] == "3");           // 3e-3 J/m in mJ/m
+  CHECK(view["crack_rows"][1]["length"] == "500");  // 5e-4 m in um
+  CHECK(view["crack_rows"][1]["per_area"] == "8");  // 8e3 /m in /mm
+  CHECK(view["crack_rows"][1]["energy"] == "3");    // 3e-3 J/m in mJ/m
   CHECK(view["crack_rows"][1]["file"] == "cracks_0002.vtp");
   // Broken bonds and largest damage, every row of damage.csv a point.
   REQUIRE(view["frost_charts"].size() == 2);
@@ -400,7 +409,8 @@ TEST_CASE("The report of a porous plate has a frost damage section", "[shared][r
   const std::string closed = view["pore_bars_svg"];
   CHECK(test::count(closed, "<g class=\"bar\"") == pores.size());
   CHECK(closed.find(">all pores frozen<") != std::string::npos);
-  for (const auto& c : view["frost_charts"]) CHECK(c["svg"].get<std::string>().find(">all pores frozen<") != std::string::npos);
+  for (const auto& c : view["frost_charts"])
+    CHECK(c["svg"].get<std::string>().find(">all pores frozen<") != std::string::npos);
 
   // The same plate without pores: no such section.
   const fs::path plain = dir.path / "plain";

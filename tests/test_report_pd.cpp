@@ -33,16 +33,19 @@ using nlohmann::json;
 // with the temperature beside the displacement per snapshot (inline PNG),
 // no damage maps, the sensors' displacement and damage charts; the title
 // and cards are the solid's, and nothing of a shaft appears.
-TEST_CASE("The report of a PD plate run has temperature and displacement maps, no damage maps", "[shared][report][pd]") {
+TEST_CASE("The report of a PD plate run has temperature and displacement maps, no damage maps",
+          "[shared][report][pd]") {
   test::TempDir dir("frostwall-report-pd");
-  test::run_shipped("plate_cooling.json",
-                    {{"numerics", {{"spacing", 0.0005}}}, {"time", {{"end", 100}, {"unit", "s"}, {"snapshots", {50, 100}}}}},
-                    dir.path / "out");
+  test::run_shipped(
+      "plate_cooling.json",
+      {{"numerics", {{"spacing", 0.0005}}}, {"time", {{"end", 100}, {"unit", "s"}, {"snapshots", {50, 100}}}}},
+      dir.path / "out");
   const json view = report::report_view(dir.path / "out");
   const json summary = json::parse(test::read_text(dir.path / "out" / "summary.json"));
   REQUIRE(summary["run"]["mechanics"]["critical_stretch"].is_null());  // no fracture energy: bonds cannot break
   CHECK(view["has_mechanics"] == true);
-  for (const auto& name : report::template_names(test::split_section(report::templates::report_html, "has_mechanics").first)) {
+  for (const auto& name :
+       report::template_names(test::split_section(report::templates::report_html, "has_mechanics").first)) {
     INFO(name);
     CHECK(test::has_key(view, name));
   }
@@ -69,8 +72,8 @@ TEST_CASE("The report of a PD plate run has temperature and displacement maps, n
   CHECK(html.find(">Largest displacement<") != std::string::npos);
   CHECK(html.find(">Sensor A, 100 s<") != std::string::npos);
   CHECK(html.find("the bonds cannot break") != std::string::npos);
-  for (const char* absent : {"Frozen front", "Pipe temperature", "Design targets", "Wendland", "RKL2 super-time-stepping, step",
-                             "latent heat per particle", "smoothing length"}) {
+  for (const char* absent : {"Frozen front", "Pipe temperature", "Design targets", "Wendland",
+                             "RKL2 super-time-stepping, step", "latent heat per particle", "smoothing length"}) {
     INFO(absent);
     CHECK(html.find(absent) == std::string::npos);
   }
@@ -119,7 +122,8 @@ TEST_CASE("The report of a PD plate that cracks has damage maps and the crack ca
   CHECK(html.find(fmt::format(">{:.3g} %<", share)) != std::string::npos);
   CHECK(html.find(fmt::format(">{:.3g} s<", m["first_damage"]["time"].get<double>())) != std::string::npos);
   const double c = m["crack_length"].get<double>();
-  CHECK(html.find(c < 1e-3 ? fmt::format(">{:.3g} µm<", 1e6 * c) : fmt::format(">{:.3g} mm<", 1e3 * c)) != std::string::npos);
+  CHECK(html.find(c < 1e-3 ? fmt::format(">{:.3g} µm<", 1e6 * c) : fmt::format(">{:.3g} mm<", 1e3 * c)) !=
+        std::string::npos);
   for (const char* label : {">Broken bonds<", ">First crack<", ">Crack length<"}) {
     INFO(label);
     CHECK(html.find(label) != std::string::npos);
@@ -131,7 +135,8 @@ TEST_CASE("The report of a PD plate that cracks has damage maps and the crack ca
 // nothing can crack. Its temperature maps stand in the maps section (the
 // frost section has no solid to draw), the cards say how the pores froze
 // and nothing of cracks or bonds.
-TEST_CASE("The report of a porous plate without a solid has temperature maps and no crack cards", "[shared][report][frost]") {
+TEST_CASE("The report of a porous plate without a solid has temperature maps and no crack cards",
+          "[shared][report][frost]") {
   test::TempDir dir("frostwall-report-frost-heat");
   const fs::path out = dir.path / "out";
   test::run_shipped("mortar_frost.json",

@@ -24,7 +24,8 @@ namespace fs = std::filesystem;
 TEST_CASE("A run writes VTK snapshots that VTK reads back, and summary.json", "[freezing][run][io]") {
   test::TempDir dir("frostwall-run");
   auto p = test::rectangle_project(
-      0.495, 0.05, R"({ "left": { "temperature": -10 }, "right": "adiabatic", "top": "adiabatic", "bottom": "adiabatic" })",
+      0.495, 0.05,
+      R"({ "left": { "temperature": -10 }, "right": "adiabatic", "top": "adiabatic", "bottom": "adiabatic" })",
       R"("sand")", 5.0, 2 * 86400.0, test::numerics(0.01));
   p.time.snapshots = {86400.0, 2 * 86400.0};
   p.output.directory = (dir.path / "out").string();
@@ -78,6 +79,7 @@ TEST_CASE("A run writes VTK snapshots that VTK reads back, and summary.json", "[
   CHECK(text.find("field_172800.vtu") != std::string::npos);
   for (const auto& entry : fs::directory_iterator(out)) CHECK(entry.path().string().find(".tmp-") == std::string::npos);
 
-  const double stored = summary["heat_balance"]["stored_change"], from_face = summary["heat_balance"]["from_boundaries"]["left"];
+  const double stored = summary["heat_balance"]["stored_change"],
+               from_face = summary["heat_balance"]["from_boundaries"]["left"];
   CHECK(std::abs(stored - from_face) < 1e-9 * std::abs(stored));
 }

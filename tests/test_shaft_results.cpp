@@ -171,7 +171,7 @@ TEST_CASE("A shaft run writes the summary of the contract, CSV files and front c
              open20);
   CHECK(closed10 == 26);  // one around each pipe
   CHECK(open10 == 0);
-  CHECK(closed20 == 2);   // the wall's inner and outer face
+  CHECK(closed20 == 2);  // the wall's inner and outer face
   CHECK(open20 == 0);
 }
 

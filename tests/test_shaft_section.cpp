@@ -42,7 +42,9 @@ TEST_CASE("Single ring: the symmetric wedge and the full ring agree", "[freezing
 
   // The full ring's particles by position.
   std::map<std::pair<long, long>, std::size_t> at;
-  auto key = [](const particles::Vec<2>& x) { return std::make_pair(std::lround(x[0] * 1e6), std::lround(x[1] * 1e6)); };
+  auto key = [](const particles::Vec<2>& x) {
+    return std::make_pair(std::lround(x[0] * 1e6), std::lround(x[1] * 1e6));
+  };
   for (std::size_t i = 0; i < full.model->free_count(); ++i) at[key(full.particles().position[i])] = i;
 
   test::march(wedge, {end}, [](std::size_t) {});
@@ -60,8 +62,9 @@ TEST_CASE("Single ring: the symmetric wedge and the full ring agree", "[freezing
       where = wedge.particles().position[i];
     }
   }
-  fmt::print("\nWedge vs full ring at day 10 (spacing 0.1 m): {} of {} wedge particles matched, max |dT| = {:.4f} K at ({:.3f}, {:.3f})\n",
-             matched, wedge.model->free_count(), worst, where[0], where[1]);
+  fmt::print(
+      "\nWedge vs full ring at day 10 (spacing 0.1 m): {} of {} wedge particles matched, max |dT| = {:.4f} K at ({:.3f}, {:.3f})\n",
+      matched, wedge.model->free_count(), worst, where[0], where[1]);
   CHECK(matched > 0.95 * wedge.model->free_count());
   CHECK(worst < 1e-6);
 }
@@ -94,8 +97,9 @@ TEST_CASE("Shaft section: pipes + far field = change of stored heat", "[freezing
   const double change = m.model->stored_heat() - before;
   double boundary = 0.0;
   for (double q : result.boundary_heat) boundary += q;
-  fmt::print("\nShaft energy over 5 days ({}): stored change {:.9e} J/m, pipes {:.9e}, far field {:.3e}\n", graded ? "graded, rkl2" : "lattice, explicit",
-             change, result.boundary_heat[m.shaft->pipe_boundary], result.boundary_heat[m.shaft->far_field_boundary]);
+  fmt::print("\nShaft energy over 5 days ({}): stored change {:.9e} J/m, pipes {:.9e}, far field {:.3e}\n",
+             graded ? "graded, rkl2" : "lattice, explicit", change, result.boundary_heat[m.shaft->pipe_boundary],
+             result.boundary_heat[m.shaft->far_field_boundary]);
   CHECK(change < 0.0);
   CHECK(std::abs(change - boundary) < 1e-6 * std::abs(change));
 }
@@ -120,10 +124,11 @@ TEST_CASE("Shaft layouts close in the expected order and time", "[freezing][shaf
   REQUIRE(single_clay);
   REQUIRE(three_hole);
   REQUIRE(four_hole);
-  fmt::print("\nClosure day at spacing {} m: single sand {:.2f}, single clay {:.2f}, three-hole {:.2f}, four-hole {:.2f};"
-             " single sand with the paper's point pipes {}\n",
-             spacing, *single_sand, *single_clay, *three_hole, *four_hole,
-             point_pipes ? fmt::format("{:.2f}", *point_pipes) : std::string("not closed by day 30"));
+  fmt::print(
+      "\nClosure day at spacing {} m: single sand {:.2f}, single clay {:.2f}, three-hole {:.2f}, four-hole {:.2f};"
+      " single sand with the paper's point pipes {}\n",
+      spacing, *single_sand, *single_clay, *three_hole, *four_hole,
+      point_pipes ? fmt::format("{:.2f}", *point_pipes) : std::string("not closed by day 30"));
   CHECK(*single_sand > 10.0);
   CHECK(*single_sand < 20.0);
   CHECK(*single_sand < *single_clay);
@@ -145,16 +150,18 @@ TEST_CASE("Shipped shaft projects close within 1 % of two independent solvers", 
     const char* project;
     double reference_days, tolerance_days;
   };
-  for (const Case& c : {Case{"single_ring_sand.json", 13.85, 0.01 * 13.85}, Case{"single_ring_clay.json", 17.37, 0.01 * 17.37},
-                        Case{"three_hole_sand.json", 6.61, 0.01 * 6.61}, Case{"four_hole_sand.json", 1.14, 0.02}}) {
+  for (const Case& c :
+       {Case{"single_ring_sand.json", 13.85, 0.01 * 13.85}, Case{"single_ring_clay.json", 17.37, 0.01 * 17.37},
+        Case{"three_hole_sand.json", 6.61, 0.01 * 6.61}, Case{"four_hole_sand.json", 1.14, 0.02}}) {
     const auto p = test::shipped_project(c.project, json::object());
     auto m = freezing::build_model(p);
     const auto days = test::closure_days(m, p.time.end, p.time.snapshots);
     REQUIRE(days.closure);
     REQUIRE(days.contact);
-    fmt::print("\n{}: closure {:.3f} d (reference {:.2f}, {:+.2f} %, tolerance {:.3f} d); columns touch {:.3f} d; {} particles\n",
-               c.project, *days.closure, c.reference_days, 100.0 * (*days.closure / c.reference_days - 1.0),
-               c.tolerance_days, *days.contact, m.model->free_count());
+    fmt::print(
+        "\n{}: closure {:.3f} d (reference {:.2f}, {:+.2f} %, tolerance {:.3f} d); columns touch {:.3f} d; {} particles\n",
+        c.project, *days.closure, c.reference_days, 100.0 * (*days.closure / c.reference_days - 1.0), c.tolerance_days,
+        *days.contact, m.model->free_count());
     CHECK(std::abs(*days.closure - c.reference_days) <= c.tolerance_days);
     CHECK(*days.contact < *days.closure);  // half-frozen touches before fully frozen joins
   }

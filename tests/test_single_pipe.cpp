@@ -68,8 +68,9 @@ void check_single_pipe(const std::string& integrator, const std::string& placeme
 
   const std::vector<double> spacings{0.04, 0.02};
   std::vector<double> errors;
-  fmt::print("\nOne pipe, sand, day {}, {}, {}: radial FV solution {:.4f} m\n  spacing  mean front radius  error     spread\n",
-             days, integrator, placement, exact);
+  fmt::print(
+      "\nOne pipe, sand, day {}, {}, {}: radial FV solution {:.4f} m\n  spacing  mean front radius  error     spread\n",
+      days, integrator, placement, exact);
   for (double dx : spacings) {
     const auto front = single_pipe_front(dx, days, integrator, placement);
     errors.push_back(std::abs(front.mean_radius - exact) / exact);
@@ -119,7 +120,8 @@ TEST_CASE("One pipe alone: the OA extent matches the radius of the front curve",
   vtkPolyData* curve = reader->GetOutput();
   REQUIRE(curve->GetNumberOfLines() == 1);
   double sum = 0.0;
-  for (vtkIdType i = 0; i < curve->GetNumberOfPoints(); ++i) sum += std::hypot(curve->GetPoint(i)[0], curve->GetPoint(i)[1]);
+  for (vtkIdType i = 0; i < curve->GetNumberOfPoints(); ++i)
+    sum += std::hypot(curve->GetPoint(i)[0], curve->GetPoint(i)[1]);
   const double radius = sum / curve->GetNumberOfPoints();
   fmt::print("\nOne pipe, day 10, spacing {}: OA outer extent {:.4f} m, front curve mean radius {:.4f} m\n", spacing,
              OA_outer, radius);

@@ -25,7 +25,8 @@ TEST_CASE("Soil column: steady frozen front at the flux-balance depth", "[freezi
   const double hours = 3600.0, t_end = 72 * hours;
   // A column four particles wide: the sides are mirrors, the problem is 1-D.
   const auto p = test::rectangle_project(
-      4 * dx, Hc, R"({ "left": "adiabatic", "right": "adiabatic", "top": { "temperature": -5 }, "bottom": { "temperature": 1 } })",
+      4 * dx, Hc,
+      R"({ "left": "adiabatic", "right": "adiabatic", "top": { "temperature": -5 }, "bottom": { "temperature": 1 } })",
       R"("silty_clay")", 1.0, t_end, test::numerics(dx));
   auto m = freezing::build_model(p);
   REQUIRE(m.face->side == "top");
@@ -33,7 +34,8 @@ TEST_CASE("Soil column: steady frozen front at the flux-balance depth", "[freezi
   for (int k = 1; k <= 144; ++k) times.push_back(k * 0.5 * hours);
   std::vector<double> depth;
   test::march(m, times, [&](std::size_t) {
-    const auto X = post::frozen_front(m.particles().position, m.model->liquid_fraction(), m.model->free_count(), *m.face);
+    const auto X =
+        post::frozen_front(m.particles().position, m.model->liquid_fraction(), m.model->free_count(), *m.face);
     depth.push_back(X.value_or(Hc));
   });
   const double X_end = depth.back();

@@ -137,7 +137,8 @@ TEST_CASE("Renormalised Laplacian is exact for a quadratic field on a lattice", 
   }
 }
 
-TEST_CASE("Moment-corrected Laplacian is exact for linear and quadratic fields on an irregular cloud", "[freezing][sph]") {
+TEST_CASE("Moment-corrected Laplacian is exact for linear and quadratic fields on an irregular cloud",
+          "[freezing][sph]") {
   // The lattice shaken by up to a tenth of a spacing: the kernel sums' odd
   // moments no longer vanish, so the renormalised weights alone see a
   // gradient where there is none. Exact answers at interior particles, with
@@ -150,7 +151,8 @@ TEST_CASE("Moment-corrected Laplacian is exact for linear and quadratic fields o
   for (std::size_t i = 0; i < P.n_free; ++i) P.position[i] += Vec<2>(shake(random), shake(random));
   const sph::WendlandC2<2> kernel;
   auto worst_errors = [&](bool correct) {
-    const auto pairs = sph::build_laplacian_pairs<2>(P, kernel, {h, project::LaplacianForm::renormalised, false, correct});
+    const auto pairs =
+        sph::build_laplacian_pairs<2>(P, kernel, {h, project::LaplacianForm::renormalised, false, correct});
     double linear = 0.0, quadratic = 0.0;
     for (std::size_t i = 0; i < P.n_free; ++i) {
       const auto& x = P.position[i];
@@ -169,8 +171,10 @@ TEST_CASE("Moment-corrected Laplacian is exact for linear and quadratic fields o
   };
   const auto [plain_linear, plain_quadratic] = worst_errors(false);
   const auto [linear, quadratic] = worst_errors(true);
-  fmt::print("\nIrregular cloud (shaken lattice): Laplacian error of a linear field {:.1e} -> {:.1e} (per gradient/spacing), "
-             "of x^2 + y^2 {:.1e} -> {:.1e} with the moment correction\n", plain_linear, linear, plain_quadratic, quadratic);
+  fmt::print(
+      "\nIrregular cloud (shaken lattice): Laplacian error of a linear field {:.1e} -> {:.1e} (per gradient/spacing), "
+      "of x^2 + y^2 {:.1e} -> {:.1e} with the moment correction\n",
+      plain_linear, linear, plain_quadratic, quadratic);
   CHECK(plain_linear > 1e-2);  // what the correction is for
   CHECK(linear < 1e-6);        // the moment system is solved to 1e-8
   CHECK(quadratic < 1e-6);
@@ -206,7 +210,8 @@ sph::MomentSystem<2> shaken_square_system(int m) {
 }
 }  // namespace
 
-TEST_CASE("Two-level block CG agrees with a direct solve, and its iterations do not grow with the cloud", "[freezing][sph]") {
+TEST_CASE("Two-level block CG agrees with a direct solve, and its iterations do not grow with the cloud",
+          "[freezing][sph]") {
   int iterations[2];
   const int sizes[2] = {30, 90};
   for (int s = 0; s < 2; ++s) {
@@ -228,8 +233,8 @@ TEST_CASE("Two-level block CG agrees with a direct solve, and its iterations do 
     const Eigen::VectorXd error = z - exact;
     const double energy = std::sqrt(error.dot(A * error) / exact.dot(A * exact));
     fmt::print("\nTwo-level CG, shaken {0}x{0} cloud ({1} unknowns, {2} aggregates): {3} iterations, residual {4:.1e}, "
-               "energy-norm error against LDLT {5:.1e}\n", sizes[s], system.rhs.size(), report.aggregates,
-               report.iterations, residual, energy);
+               "energy-norm error against LDLT {5:.1e}\n",
+               sizes[s], system.rhs.size(), report.aggregates, report.iterations, residual, energy);
     CHECK(residual < 1e-8);
     CHECK(energy < 1e-6);
     iterations[s] = report.iterations;

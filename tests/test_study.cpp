@@ -101,7 +101,8 @@ TEST_CASE("Named overrides merge into the base and multiply with the product", "
                                                "no-design+coarse+4.5"});
   json three_hole = base_project;
   three_hole["time"]["end"] = 20;  // the study's own patch, under every variant
-  three_hole["layout"] = {{"pattern", "three-hole"}, {"outer_ring", {{"radius", 5.0}, {"count", 26}}}, {"inner_ring", {{"radius", 4.2}}}};
+  three_hole["layout"] = {
+      {"pattern", "three-hole"}, {"outer_ring", {{"radius", 5.0}, {"count", 26}}}, {"inner_ring", {{"radius", 4.2}}}};
   three_hole["numerics"] = {{"spacing", 0.1}};
   three_hole["monitoring"][0]["r"] = 4.5;
   three_hole["name"] = "Base (three-hole+coarse+4.5)";
@@ -131,23 +132,37 @@ TEST_CASE("A bad study file is refused with one line per problem, naming the JSO
   test::TempDir dir("frostwall-study-bad");
   const std::string head = R"("name": "S", "base": "base.json", "output": { "directory": "o" })";
   CHECK(problems_of(dir, "{ " + head + " }") ==
-        std::vector<std::string>{"study: a study needs \"variants\" (named merge patches), \"product\" (parameter lists), or both"});
-  CHECK(problems_of(dir, R"({ "name": "S", "base": "missing.json", "output": { "directory": "o" }, "variants": [ { "name": "a", "patch": {} } ] })") ==
-        std::vector<std::string>{"base: cannot read " + (dir.path / "missing.json").string() + ": No such file or directory"});
-  CHECK(problems_of(dir, "{ " + head + R"(, "variants": [ { "name": "a", "patch": 3 }, { "name": "b/c", "patch": {} } ] })") ==
-        std::vector<std::string>{"variants[0].patch: must be an object (a JSON merge patch of the project), got number",
-                                 "variants[1].name: 'b/c' cannot name a folder (use letters, digits and . _ - + =, not starting with '.')"});
-  CHECK(problems_of(dir, "{ " + head + R"(, "variants": [ { "name": "a", "patch": {} }, { "name": "a", "patch": {} } ] })") ==
+        std::vector<std::string>{
+            "study: a study needs \"variants\" (named merge patches), \"product\" (parameter lists), or both"});
+  CHECK(
+      problems_of(
+          dir,
+          R"({ "name": "S", "base": "missing.json", "output": { "directory": "o" }, "variants": [ { "name": "a", "patch": {} } ] })") ==
+      std::vector<std::string>{"base: cannot read " + (dir.path / "missing.json").string() +
+                               ": No such file or directory"});
+  CHECK(problems_of(
+            dir, "{ " + head + R"(, "variants": [ { "name": "a", "patch": 3 }, { "name": "b/c", "patch": {} } ] })") ==
+        std::vector<std::string>{
+            "variants[0].patch: must be an object (a JSON merge patch of the project), got number",
+            "variants[1].name: 'b/c' cannot name a folder (use letters, digits and . _ - + =, not starting with '.')"});
+  CHECK(problems_of(
+            dir, "{ " + head + R"(, "variants": [ { "name": "a", "patch": {} }, { "name": "a", "patch": {} } ] })") ==
         std::vector<std::string>{"variants[1]: duplicate variant name 'a' (also variants[0])"});
   CHECK(problems_of(dir, "{ " + head + R"(, "product": [ { "path": "a..b", "values": [] } ] })") ==
-        std::vector<std::string>{"product[0].path: not a valid path: 'a..b' (keys separated by '.', array elements as [0])",
-                                 "product[0].values: must list at least one value"});
-  CHECK(problems_of(dir, "{ " + head + R"(, "product": [ { "path": "layout", "values": [ { "pattern": "rings" } ] } ] })") ==
-        std::vector<std::string>{"product[0].values[0]: an object or array value needs a name: give \"labels\" for this parameter"});
-  CHECK(problems_of(dir, "{ " + head + R"(, "product": [ { "path": "soil", "values": ["sand", "clay"], "labels": ["s"] } ] })") ==
+        std::vector<std::string>{
+            "product[0].path: not a valid path: 'a..b' (keys separated by '.', array elements as [0])",
+            "product[0].values: must list at least one value"});
+  CHECK(problems_of(dir,
+                    "{ " + head + R"(, "product": [ { "path": "layout", "values": [ { "pattern": "rings" } ] } ] })") ==
+        std::vector<std::string>{
+            "product[0].values[0]: an object or array value needs a name: give \"labels\" for this parameter"});
+  CHECK(problems_of(dir, "{ " + head +
+                             R"(, "product": [ { "path": "soil", "values": ["sand", "clay"], "labels": ["s"] } ] })") ==
         std::vector<std::string>{"product[0].labels: must have one label per value (2), got 1"});
-  CHECK(problems_of(dir, "{ " + head + R"(, "product": [ { "path": "pipe.diameter.x", "values": [1] } ] })") ==
-        std::vector<std::string>{"product[0].path: cannot set 'pipe.diameter.x' in the base project: /pipe/diameter is a number, not an object"});
+  CHECK(
+      problems_of(dir, "{ " + head + R"(, "product": [ { "path": "pipe.diameter.x", "values": [1] } ] })") ==
+      std::vector<std::string>{
+          "product[0].path: cannot set 'pipe.diameter.x' in the base project: /pipe/diameter is a number, not an object"});
   const auto typo = problems_of(dir, "{ " + head + R"(, "varients": [], "rank": { "thickness_day": -1 } })");
   REQUIRE(typo.size() == 3);
   CHECK(typo[0].rfind("varients: ", 0) == 0);
@@ -217,7 +232,8 @@ TEST_CASE("The shipped layout study, run coarse, ranks four-hole, three-hole, si
     // The study turns the error estimate on; at 10 cm the coarser twins
     // would exceed the pipe diameter, so each variant says why it has none.
     CHECK(st.variant->summary["error_estimate"]["status"] == "unavailable");
-    CHECK(st.variant->summary["error_estimate"]["reason"].get<std::string>().find("numerics.spacing") != std::string::npos);
+    CHECK(st.variant->summary["error_estimate"]["reason"].get<std::string>().find("numerics.spacing") !=
+          std::string::npos);
   }
   CHECK(order == std::vector<std::string>{"four-hole-sand", "three-hole-sand", "single-sand", "single-clay"});
   CHECK(fs::exists(dir.path / "out" / "study.html"));

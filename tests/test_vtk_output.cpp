@@ -93,7 +93,8 @@ TEST_CASE("write_vtu round-trips points, vertex cells and fields", "[shared][io]
   CHECK(volume->GetTuple1(999) == frame.fields[1].second[999]);
 }
 
-TEST_CASE("write_vtu writes triangles, a vertex for a point in none, the labels, and a subset keeps its fields", "[shared][io]") {
+TEST_CASE("write_vtu writes triangles, a vertex for a point in none, the labels, and a subset keeps its fields",
+          "[shared][io]") {
   TempDir dir("frostwall-vtk");
   // A unit square split along a diagonal, and a fifth point in no triangle.
   PointCloudFrame frame;
@@ -157,8 +158,7 @@ TEST_CASE("write_vtu rejects a field whose size differs from the point count", "
 
 TEST_CASE("write_pvd lists every dataset with its time and file", "[shared][io]") {
   TempDir dir;
-  const std::vector<PvdEntry> entries = {
-      {0.0, "frame_0000.vtu"}, {0.1, "frame_0001.vtu"}, {86400.5, "frame_0002.vtu"}};
+  const std::vector<PvdEntry> entries = {{0.0, "frame_0000.vtu"}, {0.1, "frame_0001.vtu"}, {86400.5, "frame_0002.vtu"}};
   const fs::path file = dir.path / "series.pvd";
   write_pvd(file, entries);
   REQUIRE(fs::exists(file));

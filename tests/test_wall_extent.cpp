@@ -335,10 +335,10 @@ TEST_CASE("Wall extents on a wedge lattice: thinnest section of an analytic froz
     if (voronoi) geometry::assign_voronoi_volumes(P, 2 * h);
     const post::FieldSampler sampler(P, kernel, h);
     const post::WallGauge gauge(sampler, fan, {R});
-    for (const Case& c : {Case{"single ring, smooth front", 0.6, 0.35, false, 0.3},
-                          Case{"single ring, sharp front", 0.6, 0.35, false, d},
-                          Case{"double ring, smooth front", 0.7, 0.3, true, 0.3},
-                          Case{"double ring, sharp front", 0.7, 0.3, true, d}}) {
+    for (const Case& c :
+         {Case{"single ring, smooth front", 0.6, 0.35, false, 0.3},
+          Case{"single ring, sharp front", 0.6, 0.35, false, d}, Case{"double ring, smooth front", 0.7, 0.3, true, 0.3},
+          Case{"double ring, sharp front", 0.7, 0.3, true, d}}) {
       auto w = [&](double theta) {
         const double shape = c.thinnest_inside ? std::cos(2 * std::numbers::pi * theta / alpha)
                                                : std::cos(std::numbers::pi * theta / alpha);
@@ -362,8 +362,8 @@ TEST_CASE("Wall extents on a wedge lattice: thinnest section of an analytic froz
       }
       fmt::print("{}, {} volumes: min thickness {:.4f} (analytic {:.4f}) on ray {} of {}; "
                  "worst edge error {:.3f} spacing ({:.3f} off OA)\n",
-                 c.name, voronoi ? "Voronoi" : "lattice", ex.min_thickness, 2 * c.w_min, ex.thinnest_ray, K,
-                 worst / d, worst_inside / d);
+                 c.name, voronoi ? "Voronoi" : "lattice", ex.min_thickness, 2 * c.w_min, ex.thinnest_ray, K, worst / d,
+                 worst_inside / d);
       CHECK(worst < 0.3 * d);
       CHECK(worst_inside < 0.1 * d);
       CHECK(std::abs(ex.min_thickness - 2 * c.w_min) < 0.3 * d);
@@ -417,7 +417,8 @@ TEST_CASE("frozen_stretch: the longest stretch containing a ring of a double rin
   // The outer ring's single-ring measure would call this ray unfrozen.
   CHECK_FALSE(post::frozen_stretch(r, field([](double x) { return x > 4.005 && x < 4.395; }), 5.0).frozen());
   // Both frozen, apart: the longer one (outer, 4.6-5.4).
-  const auto apart = post::frozen_stretch(r, field([](double x) { return (x > 4.005 && x < 4.395) || (x > 4.605 && x < 5.395); }), rings);
+  const auto apart = post::frozen_stretch(
+      r, field([](double x) { return (x > 4.005 && x < 4.395) || (x > 4.605 && x < 5.395); }), rings);
   CHECK(apart.thickness == Approx(0.79).margin(1e-9));
   CHECK(*apart.inner == Approx(4.605).margin(1e-9));
   // Merged: one stretch 4.0-5.4 over both rings.

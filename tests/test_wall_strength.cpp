@@ -46,7 +46,8 @@ TEST_CASE("A colder wall needs less thickness, on every formula", "[freezing][de
   for (Formula f : all_formulas) {
     INFO(name(f));
     const double s_warm = 0.5 * law.at(-5.0), s_cold = 0.5 * law.at(-15.0);
-    const auto warm = required_thickness(f, 3.5, 1.0, s_warm, &mc_warm), cold = required_thickness(f, 3.5, 1.0, s_cold, &mc_cold);
+    const auto warm = required_thickness(f, 3.5, 1.0, s_warm, &mc_warm),
+               cold = required_thickness(f, 3.5, 1.0, s_cold, &mc_cold);
     REQUIRE(warm.has_value());
     REQUIRE(cold.has_value());
     CHECK(*cold < *warm);
@@ -71,11 +72,12 @@ TEST_CASE("Mohr-Coulomb's plastic limit: Tresca without friction, thinner with i
   CHECK(sigma_c / (N - 1.0) * (std::pow(b / a, N - 1.0) - 1.0) == Approx(P).epsilon(1e-12));
 }
 
-TEST_CASE("Strength laws: table, linear and power, and a table must not weaken as it gets colder", "[freezing][design]") {
+TEST_CASE("Strength laws: table, linear and power, and a table must not weaken as it gets colder",
+          "[freezing][design]") {
   const auto table = StrengthLaw::table({{-20.0, 9.0}, {-2.0, 2.0}, {-10.0, 6.0}});
   CHECK(table.at(-10.0) == Approx(6.0));
-  CHECK(table.at(-6.0) == Approx(4.0));    // halfway between -10 and -2
-  CHECK(table.at(-30.0) == Approx(9.0));   // held at its ends
+  CHECK(table.at(-6.0) == Approx(4.0));   // halfway between -10 and -2
+  CHECK(table.at(-30.0) == Approx(9.0));  // held at its ends
   CHECK(table.at(0.0) == Approx(2.0));
   CHECK(StrengthLaw::linear(1.0, 0.4).at(-10.0) == Approx(5.0));
   CHECK(StrengthLaw::power(1.0, 0.5, 2.0).at(-4.0) == Approx(9.0));

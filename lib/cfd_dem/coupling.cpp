@@ -31,8 +31,9 @@ std::array<pore_water::FaceCondition, 6> fluid_faces(const project::CfdDem& c, d
   std::array<pore_water::FaceCondition, 6> faces{};
   if (c.flow) {
     const auto& f = *c.flow;
-    faces[static_cast<int>(f.inflow)] = f.inflow_pressure ? pore_water::FaceCondition{FaceKind::pressure, *f.inflow_pressure}
-                                                          : pore_water::FaceCondition{FaceKind::inflow_velocity, inflow_velocity};
+    faces[static_cast<int>(f.inflow)] = f.inflow_pressure
+                                            ? pore_water::FaceCondition{FaceKind::pressure, *f.inflow_pressure}
+                                            : pore_water::FaceCondition{FaceKind::inflow_velocity, inflow_velocity};
     faces[static_cast<int>(f.outflow)] = {FaceKind::pressure, f.outflow_pressure};
     return faces;
   }
@@ -65,7 +66,8 @@ pore_water::SolveReport CfdDemCoupling::update(double inflow_velocity) {
   double** v = lammps_.velocity();
   const double* r = lammps_.radius();
   grid_.clear_grains();
-  for (int i = 0; i < n; ++i) grid_.add_grain(Vec3(x[i][0], x[i][1], x[i][2]), 2.0 * r[i], Vec3(v[i][0], v[i][1], v[i][2]));
+  for (int i = 0; i < n; ++i)
+    grid_.add_grain(Vec3(x[i][0], x[i][1], x[i][2]), 2.0 * r[i], Vec3(v[i][0], v[i][1], v[i][2]));
   auto& sums = grid_.deposits();
   if (lammps_.ranks() > 1)
     MPI_Allreduce(MPI_IN_PLACE, sums.data(), static_cast<int>(sums.size()), MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);

@@ -21,7 +21,7 @@ namespace frostwall::cfd_dem {
 // Sums over all grains of all ranks at one moment (after an Allreduce).
 struct GrainTotals {
   double count = 0.0, volume = 0.0, contacts = 0.0;
-  double in_cavity = 0.0;  // grains whose centre lies in the cavity: out of the soil
+  double in_cavity = 0.0;                                // grains whose centre lies in the cavity: out of the soil
   std::array<double, 3> position_sum{}, velocity_sum{};  // volume-weighted sums
   std::array<std::array<double, 3>, 3> force{};          // by kind: drag, pressure gradient, buoyancy (N)
 };
@@ -51,7 +51,7 @@ class CfdDemCoupling {
   dem::LammpsSession& lammps_;
   pore_water::FluidGrid grid_;
   std::vector<std::unique_ptr<pore_water::FluidForce>> forces_;
-  std::vector<std::array<double, 3>> held_;                      // by grain id
+  std::vector<std::array<double, 3>> held_;                    // by grain id
   std::vector<std::array<std::array<double, 3>, 3>> by_kind_;  // by grain id
   double coupling_seconds_ = 0.0;
   void size_by_id();  // held_ and by_kind_ reach the largest grain id (once: ids are never reused)

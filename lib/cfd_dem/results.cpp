@@ -49,7 +49,8 @@ CfdDemSample CfdDemResults::sample(double t, double u, const GrainTotals& g, con
   for (int kind = 0; kind < 3; ++kind)
     for (int k = 0; k < 3; ++k) s.mean_force[kind][k] = g.count > 0 ? g.force[kind][k] / g.count : 0.0;
   if (c_.flow)
-    s.pressure_drop = grid.face_pressure(static_cast<int>(c_.flow->inflow)) - grid.face_pressure(static_cast<int>(c_.flow->outflow));
+    s.pressure_drop = grid.face_pressure(static_cast<int>(c_.flow->inflow)) -
+                      grid.face_pressure(static_cast<int>(c_.flow->outflow));
   s.inflow = grid.inflow();
   s.outflow = grid.outflow();
   s.imbalance = grid.largest_cell_imbalance();
@@ -81,8 +82,8 @@ json CfdDemResults::fluidisation() const {
   const double solid = (1.0 - start.porosity) * start.bed_length;  // grain volume per area
   const double weight = (rho_p - rho_f) * g * solid;               // buoyant, Pa
   const pore_water::Fluid fluid{rho_f, c_.fluid.viscosity};
-  const double ergun_velocity = pore_water::ergun_velocity(fluid, start.porosity, dem::mean_grain_diameter(c_.grains),
-                                                            weight / start.bed_length);
+  const double ergun_velocity =
+      pore_water::ergun_velocity(fluid, start.porosity, dem::mean_grain_diameter(c_.grains), weight / start.bed_length);
   json out = {{"bed_length_m", start.bed_length},
               {"porosity", start.porosity},
               {"buoyant_weight_Pa", weight},
@@ -146,28 +147,41 @@ json CfdDemResults::summary(const json& facts) const {
     std::array<double, 3> total{};
     for (int kind = 0; kind < 3; ++kind)
       for (int a = 0; a < 3; ++a) total[a] += s.mean_force[kind][a];
-    snapshots.push_back({{"time", s.time}, {"grains_in_soil", s.grains}, {"grains_in_cavity", s.in_cavity}, {"porosity", s.porosity},
-                         {"bed_length_m", s.bed_length}, {"contacts", s.contacts},
-                         {"mean_fluid_force_N", force(total)}, {"mean_drag_N", force(s.mean_force[0])},
+    snapshots.push_back({{"time", s.time},
+                         {"grains_in_soil", s.grains},
+                         {"grains_in_cavity", s.in_cavity},
+                         {"porosity", s.porosity},
+                         {"bed_length_m", s.bed_length},
+                         {"contacts", s.contacts},
+                         {"mean_fluid_force_N", force(total)},
+                         {"mean_drag_N", force(s.mean_force[0])},
                          {"mean_pressure_gradient_force_N", force(s.mean_force[1])},
-                         {"mean_buoyancy_N", force(s.mean_force[2])}, {"pressure_drop_Pa", s.pressure_drop}});
+                         {"mean_buoyancy_N", force(s.mean_force[2])},
+                         {"pressure_drop_Pa", s.pressure_drop}});
     if (c_.flow) {
       // The fluid's total force on the grains along the bed, drag plus
       // pressure gradient (buoyancy is the hydrostatic part, not the flow's).
       const double sign = from_low_ ? 1.0 : -1.0;
       const double on_grains = sign * (s.grains + s.in_cavity) * (s.mean_force[0][axis_] + s.mean_force[1][axis_]);
-      ergun.push_back({{"time", s.time}, {"superficial_velocity", s.inflow_velocity}, {"porosity", s.porosity},
-                       {"bed_length", s.bed_length}, {"pressure_drop_Pa", s.pressure_drop},
-                       {"fluid_force_on_grains_N", on_grains}, {"pressure_drop_times_area_N", s.pressure_drop * area_}});
+      ergun.push_back({{"time", s.time},
+                       {"superficial_velocity", s.inflow_velocity},
+                       {"porosity", s.porosity},
+                       {"bed_length", s.bed_length},
+                       {"pressure_drop_Pa", s.pressure_drop},
+                       {"fluid_force_on_grains_N", on_grains},
+                       {"pressure_drop_times_area_N", s.pressure_drop * area_}});
     }
   }
   j["settling"] = settling;
   if (!series_.empty()) {  // the bed as the run starts (after settling)
     const auto& s0 = series_.front();
-    j["series_start"] = {{"bed_length_m", s0.bed_length}, {"porosity", s0.porosity}, {"contacts", s0.contacts},
+    j["series_start"] = {{"bed_length_m", s0.bed_length},
+                         {"porosity", s0.porosity},
+                         {"contacts", s0.contacts},
                          {"grains_in_soil", s0.grains}};
   }
-  if (!series_.empty() && series_.back().grains + series_.back().in_cavity == 1.0) j["terminal_velocity_m_s"] = series_.back().settling_velocity;
+  if (!series_.empty() && series_.back().grains + series_.back().in_cavity == 1.0)
+    j["terminal_velocity_m_s"] = series_.back().settling_velocity;
   j["snapshots"] = snapshots;
   if (c_.flow) j["ergun"] = ergun;
   if (const json f = fluidisation(); !f.is_null()) j["minimum_fluidisation"] = f;
@@ -177,7 +191,8 @@ json CfdDemResults::summary(const json& facts) const {
     flow = std::max(flow, std::abs(s.inflow));
     mismatch = std::max(mismatch, std::abs(s.inflow - s.outflow));
   }
-  j["mass_balance"] = {{"largest_cell_imbalance_m3_s", imbalance}, {"largest_inflow_m3_s", flow},
+  j["mass_balance"] = {{"largest_cell_imbalance_m3_s", imbalance},
+                       {"largest_inflow_m3_s", flow},
                        {"largest_inflow_minus_outflow_m3_s", mismatch}};
   return j;
 }
@@ -187,8 +202,8 @@ std::string CfdDemResults::csv() const {
       "time_s,inflow_velocity_m_s,grains,bed_length_m,porosity,contacts,pressure_drop_Pa,settling_velocity_m_s,"
       "mean_drag_N,mean_pressure_gradient_force_N,mean_buoyancy_N,inflow_m3_s,outflow_m3_s,picard_iterations\n";
   for (const auto& s : series_)
-    text += fmt::format("{:.9g},{:.9g},{},{:.9g},{:.9g},{},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{}\n", s.time,
-                        s.inflow_velocity, s.grains, s.bed_length, s.porosity, s.contacts, s.pressure_drop,
+    text += fmt::format("{:.9g},{:.9g},{},{:.9g},{:.9g},{},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{}\n",
+                        s.time, s.inflow_velocity, s.grains, s.bed_length, s.porosity, s.contacts, s.pressure_drop,
                         s.settling_velocity, s.mean_force[0][axis_], s.mean_force[1][axis_], s.mean_force[2][axis_],
                         s.inflow, s.outflow, s.picard_iterations);
   return text;

@@ -17,16 +17,16 @@
 namespace frostwall::cfd_dem {
 
 struct CfdDemSample {
-  double time = 0.0;               // s
-  double inflow_velocity = 0.0;    // Darcy, m/s
-  double grains = 0.0;             // in the soil region
-  double in_cavity = 0.0;          // fallen into the cavity (centre inside it)
-  double bed_length = 0.0;         // m
-  double porosity = 0.0;           // of the bed
-  double contacts = 0.0;           // grain-grain contacts
-  std::array<std::array<double, 3>, 3> mean_force{};  // per grain, by kind (drag, pressure gradient, buoyancy), N
-  double pressure_drop = 0.0;      // inflow face - outflow face (excess), Pa
-  double settling_velocity = 0.0;  // grains' mean velocity along gravity, m/s
+  double time = 0.0;                                    // s
+  double inflow_velocity = 0.0;                         // Darcy, m/s
+  double grains = 0.0;                                  // in the soil region
+  double in_cavity = 0.0;                               // fallen into the cavity (centre inside it)
+  double bed_length = 0.0;                              // m
+  double porosity = 0.0;                                // of the bed
+  double contacts = 0.0;                                // grain-grain contacts
+  std::array<std::array<double, 3>, 3> mean_force{};    // per grain, by kind (drag, pressure gradient, buoyancy), N
+  double pressure_drop = 0.0;                           // inflow face - outflow face (excess), Pa
+  double settling_velocity = 0.0;                       // grains' mean velocity along gravity, m/s
   double inflow = 0.0, outflow = 0.0, imbalance = 0.0;  // mixture flow, m3/s; largest cell |net|
   int picard_iterations = 0;
 };
@@ -46,9 +46,9 @@ class CfdDemResults {
   nlohmann::json fluidisation() const;
   const project::Project& p_;
   const project::CfdDem& c_;
-  int axis_ = 2;            // bed axis
-  bool from_low_ = true;    // the grains rest on the axis's low face
-  double area_ = 0.0;       // cross-section normal to the axis, m2
+  int axis_ = 2;          // bed axis
+  bool from_low_ = true;  // the grains rest on the axis's low face
+  double area_ = 0.0;     // cross-section normal to the axis, m2
   std::vector<CfdDemSample> series_;
   std::vector<std::size_t> snapshots_;  // indices into series_
 };

@@ -60,15 +60,16 @@ void check_cfd_dem_resources(const project::CfdDem& c) {
                                              c.max_grains ? "max_grains" : "half this machine's memory")});
   const double cells = static_cast<double>(c.fluid.cells[0]) * c.fluid.cells[1] * c.fluid.cells[2];
   if (cells * bytes_per_cell > 0.25 * memory)
-    throw project::ProjectError({fmt::format("{}: {:.0f} cells exceed a quarter of this machine's memory; use {}", c.fluid.cells_given ? "fluid.cells" : "fluid.cell_size",
-                                             cells, c.fluid.cells_given ? "fewer cells" : "larger cells")});
+    throw project::ProjectError({fmt::format("{}: {:.0f} cells exceed a quarter of this machine's memory; use {}",
+                                             c.fluid.cells_given ? "fluid.cells" : "fluid.cell_size", cells,
+                                             c.fluid.cells_given ? "fewer cells" : "larger cells")});
 }
 
 namespace {
 
 // Every rank's grains gathered on rank 0, by id: the snapshot's grain file.
-void write_grains(const fs::path& file, const io::Labels& labels, dem::LammpsSession& lammps, const CfdDemCoupling& coupling, const SoilWatch& soil,
-                  const CavityWatch& cavity) {
+void write_grains(const fs::path& file, const io::Labels& labels, dem::LammpsSession& lammps,
+                  const CfdDemCoupling& coupling, const SoilWatch& soil, const CavityWatch& cavity) {
   constexpr int fields = 16;  // id, x3, v3, radius, contacts, force3, lost, displacement3
   const int n = lammps.local_count();
   const int* ids = lammps.ids();
@@ -81,9 +82,10 @@ void write_grains(const fs::path& file, const io::Labels& labels, dem::LammpsSes
   for (int i = 0; i < n; ++i) {
     const auto f = coupling.fluid_force(ids[i]);
     const auto s = soil.start(ids[i]);
-    for (double value : {double(ids[i]), x[i][0], x[i][1], x[i][2], v[i][0], v[i][1], v[i][2], r[i],
-                         contacts ? contacts[i] : 0.0, f[0], f[1], f[2], std::max(cavity.entered(ids[i]), coupling.lost(x[i])), x[i][0] - s[0], x[i][1] - s[1],
-                         x[i][2] - s[2]})
+    for (double value :
+         {double(ids[i]), x[i][0], x[i][1], x[i][2], v[i][0], v[i][1], v[i][2], r[i], contacts ? contacts[i] : 0.0,
+          f[0], f[1], f[2], std::max(cavity.entered(ids[i]), coupling.lost(x[i])), x[i][0] - s[0], x[i][1] - s[1],
+          x[i][2] - s[2]})
       mine.push_back(value);
   }
   const int size = static_cast<int>(mine.size());
@@ -123,7 +125,8 @@ void write_grains(const fs::path& file, const io::Labels& labels, dem::LammpsSes
 void write_fluid(const fs::path& file, const io::Labels& labels, const pore_water::FluidGrid& grid) {
   const auto& s = grid.shape();
   io::GridFrame frame;
-  for (int k = 0; k < 3; ++k) frame.origin[k] = s.low[k], frame.spacing[k] = s.cell_size(k), frame.cells[k] = s.cells[k];
+  for (int k = 0; k < 3; ++k)
+    frame.origin[k] = s.low[k], frame.spacing[k] = s.cell_size(k), frame.cells[k] = s.cells[k];
   std::vector<double> velocity;
   for (const auto& u : grid.superficial_velocity()) velocity.insert(velocity.end(), {u[0], u[1], u[2]});
   frame.fields = {{"porosity", grid.porosity()}, {"pressure", grid.pressure()}};
@@ -209,14 +212,17 @@ void run_flow(const project::Project& p, dem::LammpsSession& lammps, CfdDemCoupl
 // `lmp -in dem_commands.txt` rebuilds the assembly from this directory's
 // working directory.
 std::string dem_commands(const dem::LammpsSession& lammps, const project::CfdDem& c, int interval, long total_steps) {
-  std::string commands = fmt::format("# frostwall {}: the LAMMPS commands of this run's grain assembly\n", FROSTWALL_VERSION);
+  std::string commands =
+      fmt::format("# frostwall {}: the LAMMPS commands of this run's grain assembly\n", FROSTWALL_VERSION);
   for (const auto& line : lammps.commands())
-    if (!line.starts_with("run ") && !line.starts_with("write_data ") && line != dem::delete_in_cavity) commands += line + "\n";
-  commands += fmt::format("# then, every {} steps: the fluid grid is solved and each grain's fluid force set\n"
-                          "# (fix {} external, from frostwall), and `run {}` follows; {} steps in all.\n"
-                          "# To run the grains without the water: unfix {}\n{}",
-                          interval, dem::fluid_fix, interval, total_steps, dem::fluid_fix,
-                          c.cavity && c.cavity->drain ? fmt::format("# after every run: {}\n", dem::delete_in_cavity) : "");
+    if (!line.starts_with("run ") && !line.starts_with("write_data ") && line != dem::delete_in_cavity)
+      commands += line + "\n";
+  commands +=
+      fmt::format("# then, every {} steps: the fluid grid is solved and each grain's fluid force set\n"
+                  "# (fix {} external, from frostwall), and `run {}` follows; {} steps in all.\n"
+                  "# To run the grains without the water: unfix {}\n{}",
+                  interval, dem::fluid_fix, interval, total_steps, dem::fluid_fix,
+                  c.cavity && c.cavity->drain ? fmt::format("# after every run: {}\n", dem::delete_in_cavity) : "");
   return commands;
 }
 
@@ -289,26 +295,32 @@ void run_cfd_dem(const project::Project& p, const project::RunOptions& options) 
   io::write_text_file(out / "dem_commands.txt", dem_commands(lammps, c, interval, total_steps));
   io::write_text_file(out / "series.csv", rec.results.csv());
   io::write_text_file(out / "soil.csv", rec.soil_record.csv());
-  const json facts = {{"grains", lammps.grain_count()},
-                      {"ranks", lammps.ranks()},
-                      {"dem_timestep_s", dt},
-                      {"coupling_interval", interval},
-                      {"dem_steps", total_steps},
-                      {"fluid_cells", c.fluid.cells},
-                      {"fluid_forces", c.forces},
-                      {"packing", {{"cache", setup.cache.string()}, {"read_from_cache", setup.cached}, {"settle_time_s", c.grains.settle_time}}},
-                      {"wall_time_s", wall},
-                      {"run_wall_time_s", flow_wall},  // after settling: the DEM steps counted in dem_steps
-                      {"coupling_seconds", coupling_seconds},
-                      {"coupling_share", flow_wall > 0 ? coupling_seconds / flow_wall : 0.0}};
+  const json facts = {
+      {"grains", lammps.grain_count()},
+      {"ranks", lammps.ranks()},
+      {"dem_timestep_s", dt},
+      {"coupling_interval", interval},
+      {"dem_steps", total_steps},
+      {"fluid_cells", c.fluid.cells},
+      {"fluid_forces", c.forces},
+      {"packing",
+       {{"cache", setup.cache.string()}, {"read_from_cache", setup.cached}, {"settle_time_s", c.grains.settle_time}}},
+      {"wall_time_s", wall},
+      {"run_wall_time_s", flow_wall},  // after settling: the DEM steps counted in dem_steps
+      {"coupling_seconds", coupling_seconds},
+      {"coupling_share", flow_wall > 0 ? coupling_seconds / flow_wall : 0.0}};
   auto summary = rec.results.summary(facts);
-  summary["soil"] = rec.soil_record.summary(packing_regime(c, std::max(0.0, rec.start_volume)), soil.bins(), soil.initial_surface());
-  if (c.heap) summary["angle_of_repose_deg"] = summary["soil"].value("heap", json::object()).value("angle_of_repose_deg", json(nullptr));
+  summary["soil"] =
+      rec.soil_record.summary(packing_regime(c, std::max(0.0, rec.start_volume)), soil.bins(), soil.initial_surface());
+  if (c.heap)
+    summary["angle_of_repose_deg"] =
+        summary["soil"].value("heap", json::object()).value("angle_of_repose_deg", json(nullptr));
   if (c.cavity)
-    summary["soil"]["cavity"] = {{"mode", c.cavity->drain ? "drain" : "keep"},
-                                 {"capacity_grains", cavity.capacity()},
-                                 {"meaning", c.cavity->drain ? "grains whose centre enters the cavity are taken away by a leak (deleted)"
-                                                             : "grains that fall into the cavity stay and fill it"}};
+    summary["soil"]["cavity"] = {
+        {"mode", c.cavity->drain ? "drain" : "keep"},
+        {"capacity_grains", cavity.capacity()},
+        {"meaning", c.cavity->drain ? "grains whose centre enters the cavity are taken away by a leak (deleted)"
+                                    : "grains that fall into the cavity stay and fill it"}};
   io::write_text_file(out / "summary.json", summary.dump(2) + "\n");
 }
 

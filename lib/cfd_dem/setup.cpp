@@ -15,13 +15,15 @@ namespace fs = std::filesystem;
 namespace {
 
 dem::Neighbour neighbour(const project::CfdDem& c) {
-  return {c.neighbour.skin.value_or(0.25 * c.grains.diameter_max), c.neighbour.every, c.neighbour.bin_size.value_or(0.0)};
+  return {c.neighbour.skin.value_or(0.25 * c.grains.diameter_max), c.neighbour.every,
+          c.neighbour.bin_size.value_or(0.0)};
 }
 
 }  // namespace
 
 GrainSetup set_up_grains(const project::Project& p, dem::LammpsSession& lammps, const std::vector<dem::Grain>& grains,
-                         const fs::path& out, double dt, int interval, const std::function<void(const std::string&)>& note) {
+                         const fs::path& out, double dt, int interval,
+                         const std::function<void(const std::string&)>& note) {
   const auto& c = *p.cfd_dem;
   GrainSetup setup;
   setup.cache = dem::packing_cache_file(c, dt, interval);
@@ -61,8 +63,9 @@ GrainSetup set_up_grains(const project::Project& p, dem::LammpsSession& lammps, 
   return setup;
 }
 
-void settle_grains(const project::Project& p, dem::LammpsSession& lammps, CfdDemCoupling& coupling, const GrainSetup& setup,
-                   double dt, int interval, const std::function<void(double, double)>& progress,
+void settle_grains(const project::Project& p, dem::LammpsSession& lammps, CfdDemCoupling& coupling,
+                   const GrainSetup& setup, double dt, int interval,
+                   const std::function<void(double, double)>& progress,
                    const std::function<void(const std::string&)>& note) {
   const auto& c = *p.cfd_dem;
   if (!setup.settle || setup.cached) return;
@@ -82,14 +85,16 @@ void settle_grains(const project::Project& p, dem::LammpsSession& lammps, CfdDem
     for (const auto& s : dem::trim_commands(dem::dem_box(c), 2, c.box.high[2] - 0.5 * c.grains.diameter_max,
                                             dem::dem_contact(c), setup.open_face))
       lammps.command(s);
-    note(fmt::format("packing: {} of {} grains above the box's top taken away after settling", before - lammps.grain_count(), before));
+    note(fmt::format("packing: {} of {} grains above the box's top taken away after settling",
+                     before - lammps.grain_count(), before));
   }
   if (c.cavity)
     for (const auto& s : dem::remove_cavity_wall_commands()) lammps.command(s);
   if (c.heap)  // the container lifted: the block slumps into a heap as the run starts
     for (const auto& s : dem::remove_block_wall_commands()) lammps.command(s);
   if (c.grains.settle_friction)  // the run's friction from here on
-    for (const auto& s : dem::new_contact_commands(dem::dem_box(c), dem::dem_contact(c), setup.open_face)) lammps.command(s);
+    for (const auto& s : dem::new_contact_commands(dem::dem_box(c), dem::dem_contact(c), setup.open_face))
+      lammps.command(s);
   // Cached under a temporary name, renamed when complete.
   const fs::path tmp = setup.cache.string() + fmt::format(".tmp-{}", getpid());
   if (lammps.rank() == 0) fs::create_directories(setup.cache.parent_path());

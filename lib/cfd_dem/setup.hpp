@@ -33,8 +33,9 @@ GrainSetup set_up_grains(const project::Project& p, dem::LammpsSession& lammps, 
 
 // Settles (unless cached), trims a settling column, caches the packing,
 // takes the cavity's wall away.
-void settle_grains(const project::Project& p, dem::LammpsSession& lammps, CfdDemCoupling& coupling, const GrainSetup& setup,
-                   double dt, int interval, const std::function<void(double, double)>& progress,
+void settle_grains(const project::Project& p, dem::LammpsSession& lammps, CfdDemCoupling& coupling,
+                   const GrainSetup& setup, double dt, int interval,
+                   const std::function<void(double, double)>& progress,
                    const std::function<void(const std::string&)>& note);
 
 }  // namespace frostwall::cfd_dem

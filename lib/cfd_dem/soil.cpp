@@ -92,7 +92,8 @@ SoilMeasures SoilWatch::measure(const CfdDemCoupling& coupling) const {
   const double* r = lammps_.radius();
   const double d = c_.grains.diameter_max;
   // Point A's cell.
-  const int cell_a = c_.point_a ? grid.shape().cell_of(pore_water::Vec3(c_.point_a->at(0), c_.point_a->at(1), c_.point_a->at(2))) : -1;
+  const int cell_a =
+      c_.point_a ? grid.shape().cell_of(pore_water::Vec3(c_.point_a->at(0), c_.point_a->at(1), c_.point_a->at(2))) : -1;
   auto cell_of = [&](const double* p) { return grid.shape().cell_of(pore_water::Vec3(p[0], p[1], p[2])); };
   // Local sums: zone solid volume, grains in A's cell and their forces, displaced grains.
   std::array<double, 4 + 9> sums{};
@@ -118,7 +119,8 @@ SoilMeasures SoilWatch::measure(const CfdDemCoupling& coupling) const {
         sums[12] += 1.0;
         if (c_.cavity && x[i][2] > z0) {
           const int b = std::min(heights - 1, static_cast<int>((x[i][2] - z0) / (top - z0) * heights));
-          reach_moved[b] = std::max(reach_moved[b], std::hypot(x[i][0] - c_.cavity->centre[0], x[i][1] - c_.cavity->centre[1]));
+          reach_moved[b] =
+              std::max(reach_moved[b], std::hypot(x[i][0] - c_.cavity->centre[0], x[i][1] - c_.cavity->centre[1]));
         }
       }
       if (moved > 2.0 * d) {
@@ -135,7 +137,8 @@ SoilMeasures SoilWatch::measure(const CfdDemCoupling& coupling) const {
   max_all(lammps_, reach_moved.data(), heights);
   if (c_.cavity) {
     // The zone reaches the surface as the run started, over the cavity.
-    const int b = std::clamp(static_cast<int>((c_.cavity->centre[0] - c_.box.low[0]) / bin_width_), 0, int(initial_surface_.size()) - 1);
+    const int b = std::clamp(static_cast<int>((c_.cavity->centre[0] - c_.box.low[0]) / bin_width_), 0,
+                             int(initial_surface_.size()) - 1);
     const double length = initial_surface_[b] - (c_.cavity->centre[2] + c_.cavity->radius);
     const double zone = std::numbers::pi * c_.cavity->radius * c_.cavity->radius * length;
     if (zone > 0.0) m.zone_porosity = 1.0 - sums[0] / zone;

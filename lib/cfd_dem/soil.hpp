@@ -19,16 +19,16 @@
 namespace frostwall::cfd_dem {
 
 struct SoilMeasures {
-  double zone_porosity = NAN;        // the cylinder over the cavity's crown, to the box's top
-  double pressure_drop_a = NAN;      // inflow face's pressure less point A's cell's, Pa
-  double grains_a = 0.0;             // grains in point A's cell
+  double zone_porosity = NAN;                           // the cylinder over the cavity's crown, to the box's top
+  double pressure_drop_a = NAN;                         // inflow face's pressure less point A's cell's, Pa
+  double grains_a = 0.0;                                // grains in point A's cell
   std::array<std::array<double, 3>, 3> mean_force_a{};  // per grain there, by kind (drag, pressure gradient, buoyancy)
-  std::vector<double> surface;       // the surface's height per bin along x, m
-  double settlement_max = 0.0;       // the deepest settlement, m
-  double settlement_width = 0.0;     // width where it exceeds one grain diameter, m
-  double displaced = 0.0;            // grains moved more than 2 diameters from where the run started
-  double moved = 0.0;                // grains moved more than 1 diameter
-  std::optional<double> cone_angle;  // the collapse zone's boundary from the horizontal, degrees
+  std::vector<double> surface;                          // the surface's height per bin along x, m
+  double settlement_max = 0.0;                          // the deepest settlement, m
+  double settlement_width = 0.0;                        // width where it exceeds one grain diameter, m
+  double displaced = 0.0;                               // grains moved more than 2 diameters from where the run started
+  double moved = 0.0;                                   // grains moved more than 1 diameter
+  std::optional<double> cone_angle;                     // the collapse zone's boundary from the horizontal, degrees
   std::optional<double> slip_angle;  // likewise for the grains moved more than one diameter: the slip surface
   std::optional<Crater> crater;      // with a cavity: the surface's trough from the height maps
   std::optional<Heap> heap;          // with a heap: its flanks
@@ -60,13 +60,13 @@ class SoilWatch {
 // profile at the snapshots; summary.json's "soil" and soil.csv.
 struct SoilRow {
   double time = 0.0;
-  double grains = 0.0;         // in the soil
-  double lost_cavity = 0.0;    // entered the cavity since the start (kept there, or deleted by a drain)
-  double lost_outflow = 0.0;   // washed out through the outflow face since the start
+  double grains = 0.0;        // in the soil
+  double lost_cavity = 0.0;   // entered the cavity since the start (kept there, or deleted by a drain)
+  double lost_outflow = 0.0;  // washed out through the outflow face since the start
   double contacts = 0.0;
   SoilMeasures measures;
-  double in_cavity = 0.0;      // grains whose centre lies in the cavity now
-  double in_model = 0.0;       // grains in the model (soil and a kept cavity's)
+  double in_cavity = 0.0;  // grains whose centre lies in the cavity now
+  double in_model = 0.0;   // grains in the model (soil and a kept cavity's)
 };
 
 // The packing's regime: its porosity (box less cavity), Terzaghi's

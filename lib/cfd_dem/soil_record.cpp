@@ -20,8 +20,13 @@ json flank(const std::optional<post::Flank>& f) {
 }
 
 json bump(const post::Bump& b, const char* peak_name) {
-  return {{peak_name, b.peak}, {"at_m", b.peak_x}, {"base_m", b.base}, {"width_m", maybe(b.width())}, {"slope_deg", maybe(b.mean_slope_deg())},
-          {"low_side", flank(b.low_side)}, {"high_side", flank(b.high_side)}};
+  return {{peak_name, b.peak},
+          {"at_m", b.peak_x},
+          {"base_m", b.base},
+          {"width_m", maybe(b.width())},
+          {"slope_deg", maybe(b.mean_slope_deg())},
+          {"low_side", flank(b.low_side)},
+          {"high_side", flank(b.high_side)}};
 }
 }  // namespace
 
@@ -35,7 +40,8 @@ json crater_json(const Crater& c) {
 }
 
 json heap_json(const Heap& h) {
-  return {{"angle_of_repose_deg", maybe(h.angle_deg())}, {"along_x", bump(h.along_x, "height_m")},
+  return {{"angle_of_repose_deg", maybe(h.angle_deg())},
+          {"along_x", bump(h.along_x, "height_m")},
           {"along_y", bump(h.along_y, "height_m")}};
 }
 
@@ -50,7 +56,8 @@ json packing_regime(const project::CfdDem& c, double grain_volume) {
   const double d = dem::mean_grain_diameter(c.grains);
   const double weight = (1.0 - n) * (rho_p - rho_f) * g;  // buoyant, per volume
   const double u_mf = pore_water::ergun_velocity(fluid, n, d, weight);
-  json out = {{"porosity", n}, {"critical_gradient", (rho_p / rho_f - 1.0) * (1.0 - n)},
+  json out = {{"porosity", n},
+              {"critical_gradient", (rho_p / rho_f - 1.0) * (1.0 - n)},
               {"minimum_fluidisation_velocity_m_s", u_mf}};
   if (c.flow && !c.flow->darcy_velocity.empty()) {
     double u = 0.0;
@@ -59,14 +66,15 @@ json packing_regime(const project::CfdDem& c, double grain_volume) {
     out["darcy_velocity_m_s"] = u;
     out["hydraulic_gradient"] = gradient;
     out["above_fluidisation"] = u > u_mf;
-    out["note"] = u > u_mf
-                      ? fmt::format("{:.3g} m/s is {:.1f} times Ergun's minimum fluidisation velocity of this packing: the "
-                                    "seepage gradient ({:.2f}) exceeds the critical gradient ({:.2f}), so the ground at the "
-                                    "inflow face is loosened and boils rather than seeping",
-                                    u, u / (u_mf), gradient, (rho_p / rho_f - 1.0) * (1.0 - n))
-                      : fmt::format("{:.3g} m/s is below Ergun's minimum fluidisation velocity of this packing ({:.3g} m/s): "
-                                    "seepage gradient {:.3f} against the critical {:.2f}",
-                                    u, u_mf, gradient, (rho_p / rho_f - 1.0) * (1.0 - n));
+    out["note"] =
+        u > u_mf
+            ? fmt::format("{:.3g} m/s is {:.1f} times Ergun's minimum fluidisation velocity of this packing: the "
+                          "seepage gradient ({:.2f}) exceeds the critical gradient ({:.2f}), so the ground at the "
+                          "inflow face is loosened and boils rather than seeping",
+                          u, u / (u_mf), gradient, (rho_p / rho_f - 1.0) * (1.0 - n))
+            : fmt::format("{:.3g} m/s is below Ergun's minimum fluidisation velocity of this packing ({:.3g} m/s): "
+                          "seepage gradient {:.3f} against the critical {:.2f}",
+                          u, u_mf, gradient, (rho_p / rho_f - 1.0) * (1.0 - n));
   }
   return out;
 }
@@ -79,22 +87,30 @@ void SoilRecord::add(SoilRow row, bool snapshot) {
 // The loss rate of an interval: the grains that left the soil in it (into
 // the cavity or out through the outflow face) over those in the soil at
 // its start; the change in contacts likewise between outputs.
-json SoilRecord::summary(const json& regime, const std::vector<double>& bins, const std::vector<double>& initial) const {
+json SoilRecord::summary(const json& regime, const std::vector<double>& bins,
+                         const std::vector<double>& initial) const {
   json series = json::array();
   for (std::size_t k = 0; k < rows_.size(); ++k) {
     const auto& r = rows_[k];
-    json row = {{"time", r.time}, {"grains_in_soil", r.grains}, {"lost_to_cavity", r.lost_cavity},
-                {"washed_out", r.lost_outflow}, {"contacts", r.contacts},
+    json row = {{"time", r.time},
+                {"grains_in_soil", r.grains},
+                {"lost_to_cavity", r.lost_cavity},
+                {"washed_out", r.lost_outflow},
+                {"contacts", r.contacts},
                 {"zone_porosity", optional(r.measures.zone_porosity)},
-                {"pressure_drop_to_a_Pa", optional(r.measures.pressure_drop_a)}, {"grains_at_a", r.measures.grains_a},
+                {"pressure_drop_to_a_Pa", optional(r.measures.pressure_drop_a)},
+                {"grains_at_a", r.measures.grains_a},
                 {"mean_drag_at_a_N", vec(r.measures.mean_force_a[0])},
                 {"mean_pressure_gradient_force_at_a_N", vec(r.measures.mean_force_a[1])},
                 {"mean_buoyancy_at_a_N", vec(r.measures.mean_force_a[2])},
-                {"settlement_max_m", r.measures.settlement_max}, {"settlement_width_m", r.measures.settlement_width},
-                {"displaced_grains", r.measures.displaced}, {"moved_one_diameter", r.measures.moved},
+                {"settlement_max_m", r.measures.settlement_max},
+                {"settlement_width_m", r.measures.settlement_width},
+                {"displaced_grains", r.measures.displaced},
+                {"moved_one_diameter", r.measures.moved},
                 {"cone_angle_deg", r.measures.cone_angle ? json(*r.measures.cone_angle) : json(nullptr)},
                 {"slip_surface_angle_deg", maybe(r.measures.slip_angle)},
-                {"grains_in_cavity", r.in_cavity}, {"grains_in_model", r.in_model}};
+                {"grains_in_cavity", r.in_cavity},
+                {"grains_in_model", r.in_model}};
     if (r.measures.crater) {
       const auto& cr = *r.measures.crater;
       row["crater_depth_m"] = cr.along_x.peak;
@@ -119,8 +135,11 @@ json SoilRecord::summary(const json& regime, const std::vector<double>& bins, co
     json settlement = json::array();
     for (std::size_t b = 0; b < bins.size() && b < r.measures.surface.size(); ++b)
       settlement.push_back({bins[b], initial[b] - r.measures.surface[b]});
-    profiles.push_back({{"time", r.time}, {"settlement", settlement}, {"settlement_max_m", r.measures.settlement_max},
-                        {"settlement_width_m", r.measures.settlement_width}, {"displaced_grains", r.measures.displaced},
+    profiles.push_back({{"time", r.time},
+                        {"settlement", settlement},
+                        {"settlement_max_m", r.measures.settlement_max},
+                        {"settlement_width_m", r.measures.settlement_width},
+                        {"displaced_grains", r.measures.displaced},
                         {"cone_angle_deg", r.measures.cone_angle ? json(*r.measures.cone_angle) : json(nullptr)},
                         {"slip_surface_angle_deg", maybe(r.measures.slip_angle)}});
     if (r.measures.crater) profiles.back()["crater"] = crater_json(*r.measures.crater);
@@ -152,11 +171,11 @@ std::string SoilRecord::csv() const {
   for (const auto& r : rows_) {
     const auto& m = r.measures;
     auto opt = [](const std::optional<double>& v) { return v ? fmt::format("{:.6g}", *v) : std::string(); };
-    text += fmt::format("{:.9g},{},{},{},{},{:.9g},{:.9g},{},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{},{},{},{},{},{},{}\n", r.time, r.grains,
-                        r.lost_cavity, r.lost_outflow, r.contacts, m.zone_porosity, m.pressure_drop_a, m.grains_a,
-                        norm(m.mean_force_a[0]), norm(m.mean_force_a[1]), norm(m.mean_force_a[2]), m.settlement_max,
-                        m.settlement_width, m.displaced, opt(m.cone_angle), r.in_cavity, r.in_model, opt(m.slip_angle),
-                        m.crater ? fmt::format("{:.6g}", m.crater->along_x.peak) : std::string(),
+    text += fmt::format("{:.9g},{},{},{},{},{:.9g},{:.9g},{},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{},{},{},{},{},{},{}\n",
+                        r.time, r.grains, r.lost_cavity, r.lost_outflow, r.contacts, m.zone_porosity, m.pressure_drop_a,
+                        m.grains_a, norm(m.mean_force_a[0]), norm(m.mean_force_a[1]), norm(m.mean_force_a[2]),
+                        m.settlement_max, m.settlement_width, m.displaced, opt(m.cone_angle), r.in_cavity, r.in_model,
+                        opt(m.slip_angle), m.crater ? fmt::format("{:.6g}", m.crater->along_x.peak) : std::string(),
                         m.crater ? opt(m.crater->along_x.mean_slope_deg()) : std::string());
   }
   return text;

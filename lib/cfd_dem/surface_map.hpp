@@ -41,7 +41,7 @@ struct Crater {
 Crater crater(const HeightMap& initial, const HeightMap& now, double y, double grain);
 
 struct Heap {
-  post::Bump along_x, along_y;  // the height above the floor through the axis
+  post::Bump along_x, along_y;              // the height above the floor through the axis
   std::optional<double> angle_deg() const;  // the mean slope of the flanks found
 };
 Heap heap(const HeightMap& now, double floor, double x, double y);

@@ -10,7 +10,7 @@
 namespace frostwall::dem {
 
 struct Box {
-  std::array<double, 3> low{}, high{};     // m
+  std::array<double, 3> low{}, high{};  // m
   std::array<bool, 3> periodic{false, false, false};
 };
 
@@ -23,7 +23,7 @@ struct Contact {
   double poisson_ratio = 0.3;
   double restitution = 0.5;
   double friction = 0.5;
-  double rolling_friction = 0.0;  // 0: no rolling resistance
+  double rolling_friction = 0.0;   // 0: no rolling resistance
   double rolling_stiffness = 0.0;  // N m/rad per unit... LAMMPS k_roll (N/m), used when rolling_friction > 0
 };
 
@@ -51,8 +51,10 @@ struct Neighbour {
 // an open one (open_face 0..5, x_min .. z_max; -1 none), the neighbour
 // skin, and the per-grain contact count (compute `contacts`); both.
 std::vector<std::string> pair_commands(const Contact& contact);
-std::vector<std::string> wall_commands(const Box& box, const Contact& contact, const Neighbour& neighbour, int open_face = -1);
-std::vector<std::string> contact_commands(const Box& box, const Contact& contact, const Neighbour& neighbour, int open_face = -1);
+std::vector<std::string> wall_commands(const Box& box, const Contact& contact, const Neighbour& neighbour,
+                                       int open_face = -1);
+std::vector<std::string> contact_commands(const Box& box, const Contact& contact, const Neighbour& neighbour,
+                                          int open_face = -1);
 // The contact law changed in place (pair_coeff and the walls again): the
 // settling friction replaced by the run's.
 std::vector<std::string> new_contact_commands(const Box& box, const Contact& contact, int open_face = -1);
@@ -66,7 +68,8 @@ std::string read_data_command(const std::string& file);
 std::string write_data_command(const std::string& file);
 // A sphere (centre, radius) the grains are kept out of by a wall while
 // they settle (fix `cavity_wall`), and the commands that take it away.
-std::vector<std::string> cavity_wall_commands(const std::array<double, 3>& centre, double radius, const Contact& contact);
+std::vector<std::string> cavity_wall_commands(const std::array<double, 3>& centre, double radius,
+                                              const Contact& contact);
 std::vector<std::string> remove_cavity_wall_commands();
 // A block (low, high) the grains are held in by walls while they settle
 // (fix `heap_wall`; a heap's container, lifted as the run starts), and the
@@ -85,7 +88,8 @@ inline constexpr const char* delete_in_cavity = "delete_atoms region cavity_insi
 // After settling in a taller column: deletes the grains whose centre lies
 // above `level` along the axis, shrinks the box along it to `box`, and
 // puts that axis's walls at the new faces.
-std::vector<std::string> trim_commands(const Box& box, int axis, double level, const Contact& contact, int open_face = -1);
+std::vector<std::string> trim_commands(const Box& box, int axis, double level, const Contact& contact,
+                                       int open_face = -1);
 // With an open face: grains that leave the box are gone, not an error.
 inline constexpr const char* lost_grains_allowed = "thermo_modify lost ignore";
 

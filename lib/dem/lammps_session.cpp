@@ -80,9 +80,7 @@ void LammpsSession::command(const std::string& line) {
   lammps_command(lammps_, line.c_str());
 }
 
-void LammpsSession::run(long steps) {
-  command("run " + std::to_string(steps) + " pre no post no");
-}
+void LammpsSession::run(long steps) { command("run " + std::to_string(steps) + " pre no post no"); }
 
 int LammpsSession::local_count() const { return lammps_extract_setting(lammps_, "nlocal"); }
 int* LammpsSession::ids() const { return static_cast<int*>(lammps_extract_atom(lammps_, "id")); }

@@ -25,11 +25,14 @@ double mean_grain_volume(const project::GrainSettings& g) {
   return std::numbers::pi / 6.0 * mean_d3;
 }
 
-double mean_grain_diameter(const project::GrainSettings& g) { return std::cbrt(6.0 / std::numbers::pi * mean_grain_volume(g)); }
+double mean_grain_diameter(const project::GrainSettings& g) {
+  return std::cbrt(6.0 / std::numbers::pi * mean_grain_volume(g));
+}
 
 double fill_volume(const project::CfdDem& c) {
   auto g = c.grains;
-  for (int k = 0; k < 3; ++k) g.fill_high[k] = std::min(g.fill_high[k], c.box.high[k]);  // a settling column counts to the top
+  for (int k = 0; k < 3; ++k)
+    g.fill_high[k] = std::min(g.fill_high[k], c.box.high[k]);  // a settling column counts to the top
   double volume = 1.0;
   for (int k = 0; k < 3; ++k) volume *= g.fill_high[k] - g.fill_low[k];
   if (!c.cavity) return volume;
@@ -49,7 +52,8 @@ double fill_volume(const project::CfdDem& c) {
 
 long requested_grains(const project::CfdDem& c) {
   if (c.grains.count) return *c.grains.count;
-  return std::max(1L, std::lround((1.0 - c.grains.porosity.value_or(1.0)) * fill_volume(c) / mean_grain_volume(c.grains)));
+  return std::max(1L,
+                  std::lround((1.0 - c.grains.porosity.value_or(1.0)) * fill_volume(c) / mean_grain_volume(c.grains)));
 }
 
 std::vector<Grain> initial_grains(const project::CfdDem& c) {
@@ -101,7 +105,8 @@ std::vector<Grain> initial_grains(const project::CfdDem& c) {
   // Held: every (sites / wanted)-th site, spread over the whole region.
   if (g.held && static_cast<long>(sites.size()) > wanted) {
     std::vector<std::array<double, 3>> spread;
-    for (long i = 0; i < wanted; ++i) spread.push_back(sites[static_cast<std::size_t>(i * double(sites.size()) / wanted)]);
+    for (long i = 0; i < wanted; ++i)
+      spread.push_back(sites[static_cast<std::size_t>(i * double(sites.size()) / wanted)]);
     sites = std::move(spread);
   }
   // Bottom first: sites lowest along gravity (then by position, a total order).
@@ -145,7 +150,9 @@ std::filesystem::path packing_cache_file(const project::CfdDem& c, double timest
   for (int k = 0; k < 3; ++k)
     key += fmt::format(" {} {} {} {} {} {} {}", g.fill_low[k], g.fill_high[k], c.box.low[k], c.box.high[k],
                        c.box.periodic[k], c.gravity[k], c.fluid.cells[k]);
-  if (c.cavity) key += fmt::format(" cavity {} {} {} {}", c.cavity->centre[0], c.cavity->centre[1], c.cavity->centre[2], c.cavity->radius);
+  if (c.cavity)
+    key += fmt::format(" cavity {} {} {} {}", c.cavity->centre[0], c.cavity->centre[1], c.cavity->centre[2],
+                       c.cavity->radius);
   if (c.heap) key += " heap container";
   key += fmt::format(" {} {} {} {} {}", c.fluid.density, c.fluid.viscosity, c.fluid.min_porosity, timestep, interval);
   for (const auto& f : c.forces) key += " " + f;

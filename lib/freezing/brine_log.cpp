@@ -14,7 +14,9 @@ constexpr double day = 86400.0;
 
 BrineLog::BrineLog(const project::Pipe& pipe, const thermal::ThermalModel& model, std::size_t boundary,
                    std::vector<double> sample_times)
-    : pipe_(pipe), boundary_(boundary), h_(model.boundaries()[boundary].film->heat_transfer_coefficient),
+    : pipe_(pipe),
+      boundary_(boundary),
+      h_(model.boundaries()[boundary].film->heat_transfer_coefficient),
       perimeter_(model.boundaries()[boundary].film->perimeter),
       sample_times_(std::move(sample_times)) {
   row(model, 0.0, rate_last_);
@@ -63,8 +65,11 @@ nlohmann::json BrineLog::finish(const std::filesystem::path& out) const {
                           {"unit", "J/m of the simulated section"}};
   if (pipe_.annulus) {
     const auto film = design::annulus_film(*pipe_.annulus, pipe_.diameter);
-    brine["annulus"] = {{"reynolds", film.reynolds}, {"prandtl", film.prandtl}, {"nusselt", film.nusselt},
-                        {"regime", std::string(design::name(film.regime))}, {"h_inner_wall", film.h_inner}};
+    brine["annulus"] = {{"reynolds", film.reynolds},
+                        {"prandtl", film.prandtl},
+                        {"nusselt", film.nusselt},
+                        {"regime", std::string(design::name(film.regime))},
+                        {"h_inner_wall", film.h_inner}};
   }
   return brine;
 }

@@ -53,7 +53,8 @@ double shaft_particles(const project::Project& p, double spacing, double R) {
   section.outer_radius = R;
   const auto wedge = geometry::symmetry_wedge(section);
   const double copies = p.numerics.use_symmetry ? 1.0 : 2.0 * M_PI / wedge.angle;
-  if (p.numerics.placement == project::Placement::lattice) return copies * 0.5 * wedge.angle * R * R / (spacing * spacing);
+  if (p.numerics.placement == project::Placement::lattice)
+    return copies * 0.5 * wedge.angle * R * R / (spacing * spacing);
   const auto& g = p.numerics.grading;
   const auto size = geometry::shaft_size_field(section, wedge, spacing, g);
   double r_in = R, r_out = 0.0;
@@ -62,8 +63,8 @@ double shaft_particles(const project::Project& p, double spacing, double R) {
     r_out = std::max(r_out, std::hypot(q.x, q.y));
   }
   const double w = g.band_width.value_or(2.0), cone = (g.coarsening - 1.0) * spacing / (g.growth - 1.0);
-  return copies * graded_wedge_particles(size, wedge, R,
-                                         {r_in - w - cone, r_in - w, r_in, r_out, r_out + w, r_out + w + cone});
+  return copies *
+         graded_wedge_particles(size, wedge, R, {r_in - w - cone, r_in - w, r_in, r_out, r_out + w, r_out + w + cone});
 }
 
 double rectangle_particles(const project::Project& p, const project::Rectangle& rect, double spacing) {

@@ -16,9 +16,9 @@
 namespace frostwall::freezing {
 
 struct WallCheck {
-  std::optional<double> allowable;     // MPa, at the wall's mean temperature
-  std::optional<double> required;      // m, the governing formula's
-  std::optional<double> utilisation;   // required / achieved; null before the wall stands
+  std::optional<double> allowable;                        // MPa, at the wall's mean temperature
+  std::optional<double> required;                         // m, the governing formula's
+  std::optional<double> utilisation;                      // required / achieved; null before the wall stands
   nlohmann::json required_by = nlohmann::json::object();  // every formula: m, or null where invalid
 };
 

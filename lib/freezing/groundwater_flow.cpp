@@ -91,7 +91,8 @@ double GroundwaterFlow::preferred_step(const thermal::ThermalModel& model) const
 std::vector<double> GroundwaterFlow::advance(thermal::ThermalModel& model, double t, double dt) {
   if (water_.speed() == 0.0) return conduction_->advance(model, t, dt);  // still water carries nothing
   solve_if_changed(model);
-  if (heat_.scheme() == thermal::AdvectionScheme::coupled) return conduction_->advance(model, t, dt);  // both in one step
+  if (heat_.scheme() == thermal::AdvectionScheme::coupled)
+    return conduction_->advance(model, t, dt);  // both in one step
   auto heat = heat_.advance(model, t, 0.5 * dt);
   const auto conducted = conduction_->advance(model, t, dt);
   const auto carried = heat_.advance(model, t + 0.5 * dt, 0.5 * dt);
@@ -129,14 +130,16 @@ nlohmann::json gap_json(const post::Gap& gap, const std::array<double, 2>& q) {
 
 }  // namespace
 
-nlohmann::json groundwater_summary(const project::Groundwater& g, const GroundwaterFlow& flow, const post::GapClosure& gaps,
-                                   const post::FrozenAreaTrend& frozen_area, std::optional<double> closure_time) {
+nlohmann::json groundwater_summary(const project::Groundwater& g, const GroundwaterFlow& flow,
+                                   const post::GapClosure& gaps, const post::FrozenAreaTrend& frozen_area,
+                                   std::optional<double> closure_time) {
   nlohmann::json s = {
       {"darcy_flux_m_per_day", {g.darcy_flux[0] * 86400.0, g.darcy_flux[1] * 86400.0}},
       {"hydraulic_gradient", g.hydraulic_gradient ? nlohmann::json(*g.hydraulic_gradient) : nlohmann::json(nullptr)},
       {"permeability_m2", g.permeability_m2()},
       {"permeability_law", groundwater::permeability_law(g.law).name()},
-      {"impedance", g.law.model == groundwater::PermeabilityModel::impedance ? nlohmann::json(g.law.impedance) : nlohmann::json(nullptr)},
+      {"impedance", g.law.model == groundwater::PermeabilityModel::impedance ? nlohmann::json(g.law.impedance)
+                                                                             : nlohmann::json(nullptr)},
       {"floor", g.law.floor},
       {"flow_solves", flow.flow_solves()}};
   s["gaps"] = nlohmann::json::array();

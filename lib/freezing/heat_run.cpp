@@ -58,7 +58,7 @@ class HeatRun {
   std::vector<io::PvdEntry> pvd_, ring_pvd_;
   bool write_ring_ = false;
   std::optional<SnapshotFrames> frames_;  // with VTK output
-  io::ParaviewScene paraview_;             // what open_in_paraview.py loads
+  io::ParaviewScene paraview_;            // what open_in_paraview.py loads
   nlohmann::json front_ = nlohmann::json::array();
   // Shaft sections: the regular series is read from the fields interpolated
   // linearly in time between the two steps around each sample, so only the
@@ -67,7 +67,7 @@ class HeatRun {
   std::vector<double> series_, times_;
   GroundwaterFlow* flow_ = nullptr;
   std::optional<post::GapClosure> gaps_;  // under seepage: closure per gap
-  post::FrozenAreaTrend frozen_area_;      // and whether an open wall still grows
+  post::FrozenAreaTrend frozen_area_;     // and whether an open wall still grows
   std::vector<double> latent_left_;
   int flow_observed_ = 0;
   std::optional<ClosureTracker> closure_;
@@ -81,7 +81,11 @@ class HeatRun {
 };
 
 HeatRun::HeatRun(const Project& p, Model& built, const project::RunOptions& options, RunExtension* extension)
-    : p_(p), built_(built), options_(options), extension_(extension), out_(p.output.directory),
+    : p_(p),
+      built_(built),
+      options_(options),
+      extension_(extension),
+      out_(p.output.directory),
       unit_(p.time.unit_seconds()) {
   fs::create_directories(out_);
   if (!options.project_text.empty()) io::write_text_file(out_ / "project.json", options.project_text);
@@ -242,7 +246,8 @@ nlohmann::ordered_json HeatRun::summary(const thermal::TimeLoopResult& loop) con
   const auto& model = *built_.model;
   const double wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - built_.started).count();
   nlohmann::json boundary_heat = nlohmann::json::object();
-  for (std::size_t b = 0; b < model.boundaries().size(); ++b) boundary_heat[model.boundaries()[b].name] = loop.boundary_heat[b];
+  for (std::size_t b = 0; b < model.boundaries().size(); ++b)
+    boundary_heat[model.boundaries()[b].name] = loop.boundary_heat[b];
   // ordered_json: the keys stay in the contract's order.
   nlohmann::ordered_json summary = {{"project", p_.name}, {"frostwall_version", FROSTWALL_VERSION}};
   if (built_.shaft) {
@@ -255,7 +260,9 @@ nlohmann::ordered_json HeatRun::summary(const thermal::TimeLoopResult& loop) con
       if (parts.contains(key)) summary[key] = parts[key];
     if (brine_) summary["brine"] = brine_->finish(out_);
     const auto& w = built_.shaft->wedge;
-    summary["wedge"] = {{"mirror_lines", w.mirror_count}, {"start_deg", w.start_angle * 180 / M_PI}, {"angle_deg", w.angle * 180 / M_PI}};
+    summary["wedge"] = {{"mirror_lines", w.mirror_count},
+                        {"start_deg", w.start_angle * 180 / M_PI},
+                        {"angle_deg", w.angle * 180 / M_PI}};
   } else {
     summary["front"] = front_;
     summary["front_axis"] = built_.face ? nlohmann::json{{"face", built_.face->side}} : nlohmann::json(nullptr);
@@ -268,7 +275,8 @@ nlohmann::ordered_json HeatRun::summary(const thermal::TimeLoopResult& loop) con
   std::vector<std::string> warnings = p_.warnings;
   warnings.insert(warnings.end(), built_.warnings.begin(), built_.warnings.end());
   summary.update(nlohmann::ordered_json{
-      {"heat_balance", {{"stored_change", model.stored_heat() - heat_before_}, {"from_boundaries", boundary_heat}, {"unit", "J/m"}}},
+      {"heat_balance",
+       {{"stored_change", model.stored_heat() - heat_before_}, {"from_boundaries", boundary_heat}, {"unit", "J/m"}}},
       {"run",
        {{"particles", model.free_count()},
         {"boundary_particles", model.size() - model.free_count()},
@@ -295,7 +303,9 @@ nlohmann::ordered_json HeatRun::summary(const thermal::TimeLoopResult& loop) con
   if (const auto* rkl2 = thermal::find_integrator<thermal::SuperTimeStepping>(built_.integrator.get()))
     summary["run"]["stages"] = rkl2->statistics().stages;
   if (extension_) extension_->run_facts(summary["run"]);
-  if (flow_) summary["groundwater"] = groundwater_summary(*p_.groundwater, *flow_, *gaps_, frozen_area_, closure_->closure_time());
+  if (flow_)
+    summary["groundwater"] =
+        groundwater_summary(*p_.groundwater, *flow_, *gaps_, frozen_area_, closure_->closure_time());
   return summary;
 }
 
@@ -315,8 +325,9 @@ void run_heat(const Project& p, Model& built, const project::RunOptions& options
 void check_run_inputs(const Project& p) {
   // The regional flow is held on the far field: an adiabatic one has none.
   if (p.groundwater && !p.domain.far_field_temperature)
-    throw project::ProjectError({"groundwater: needs domain.far_field_temperature (the far field holds the regional flow "
-                                 "and the temperature of the water that enters)"});
+    throw project::ProjectError(
+        {"groundwater: needs domain.far_field_temperature (the far field holds the regional flow "
+         "and the temperature of the water that enters)"});
   io::check_output_directory(p.output.directory);
 }
 

@@ -49,7 +49,6 @@ double default_spacing(const project::Project& p) {
 
 double resolved_spacing(const project::Project& p) { return p.numerics.spacing.value_or(default_spacing(p)); }
 
-
 // Brine behind a film at the pipe walls: each pipe's wall particles form a
 // group (the nearest pipe centre), with the length of its wall inside the
 // simulated section (a pipe on a mirror line has half of it there).
@@ -65,9 +64,10 @@ void attach_brine(const project::Pipe& pipe, geometry::ShaftScene& scene, std::v
     const auto annulus = design::annulus_film(*pipe.annulus, pipe.diameter);
     film.heat_transfer_coefficient = annulus.h;
     if (annulus.regime == design::FlowRegime::transitional)
-      warnings.push_back(fmt::format("pipe.annulus: Re = {:.0f} is transitional (2300 to 10000): h = {:.0f} W/(m2 K) is "
-                                     "interpolated between the laminar and the turbulent film and is uncertain",
-                                     annulus.reynolds, annulus.h));
+      warnings.push_back(
+          fmt::format("pipe.annulus: Re = {:.0f} is transitional (2300 to 10000): h = {:.0f} W/(m2 K) is "
+                      "interpolated between the laminar and the turbulent film and is uncertain",
+                      annulus.reynolds, annulus.h));
   }
   film.group.assign(P.size() - P.n_free, -1);
   for (std::size_t i = P.n_free; i < P.size(); ++i) {
@@ -82,7 +82,8 @@ void attach_brine(const project::Pipe& pipe, geometry::ShaftScene& scene, std::v
     int inside = 0;
     for (int k = 0; k < samples; ++k) {
       const double phi = 2.0 * M_PI * (k + 0.5) / samples;
-      inside += geometry::inside_wedge(scene.wedge, {q.x + scene.pipe_radius * std::cos(phi), q.y + scene.pipe_radius * std::sin(phi)});
+      inside += geometry::inside_wedge(
+          scene.wedge, {q.x + scene.pipe_radius * std::cos(phi), q.y + scene.pipe_radius * std::sin(phi)});
     }
     film.perimeter.push_back(2.0 * M_PI * scene.pipe_radius * inside / samples);
   }
@@ -102,9 +103,10 @@ Model build_cloud(const project::Project& p) {
   const bool graded = p.numerics.placement == project::Placement::graded;
   if (const auto* rect = std::get_if<project::Rectangle>(&p.geometry)) {
     auto scene = std::make_unique<geometry::RectangleScene>(
-        graded ? geometry::build_graded_rectangle(
-                     *rect, geometry::rectangle_size_field(*rect, spacing, p.numerics.grading), p.numerics.smoothing_ratio)
-               : geometry::build_rectangle(*rect, spacing, m.h));
+        graded
+            ? geometry::build_graded_rectangle(
+                  *rect, geometry::rectangle_size_field(*rect, spacing, p.numerics.grading), p.numerics.smoothing_ratio)
+            : geometry::build_rectangle(*rect, spacing, m.h));
     m.face = geometry::cooled_face(*rect, *scene);
     m.rectangle = scene.get();
     m.scene = std::move(scene);
@@ -118,8 +120,8 @@ Model build_cloud(const project::Project& p) {
     if (p.groundwater && p.groundwater->speed() > 0.0) {
       const auto pipes = geometry::pipe_positions(section.layout);
       const auto& q = p.groundwater->darcy_flux;
-      wedge = geometry::find_flow_symmetry_wedge(pipes, std::atan2(q[1], q[0]), geometry::default_symmetry_tolerance(pipes),
-                                                 seepage_note);
+      wedge = geometry::find_flow_symmetry_wedge(pipes, std::atan2(q[1], q[0]),
+                                                 geometry::default_symmetry_tolerance(pipes), seepage_note);
     }
     auto scene = std::make_unique<geometry::ShaftScene>(
         graded ? geometry::build_graded_shaft_section(
@@ -165,7 +167,8 @@ Model build_model(const project::Project& p) {
     m.pore_of = geometry::pore_membership(P.position, P.n_free, rect->pores);
     std::vector<std::uint8_t> material(P.size(), 0);
     for (std::size_t i = 0; i < P.n_free; ++i) material[i] = m.pore_of[i] >= 0 ? 1 : 0;
-    m.model->set_materials({law, thermal::pore_water_law(p.pore_fluid)}, std::move(material), p.domain.initial_temperature);
+    m.model->set_materials({law, thermal::pore_water_law(p.pore_fluid)}, std::move(material),
+                           p.domain.initial_temperature);
   }
   const double explicit_step = p.numerics.beta * m.h * m.h / m.model->max_diffusivity();
   if (p.numerics.integrator == project::IntegratorKind::implicit) {

@@ -40,9 +40,13 @@ io::PointCloudFrame frame_of(const particles::ParticleSet<2>& particles, const t
     k[i] = 0.5 * (model.conductivity(i, 0) + model.conductivity(i, 1));
     boundary[i] = particles.boundary[i];
   }
-  frame.fields = {{"temperature", model.temperature()}, {"enthalpy", model.enthalpy()},
-                  {"liquid_fraction", model.liquid_fraction()}, {"phase", phase},
-                  {"conductivity", k}, {"volume", particles.volume}, {"boundary", boundary}};
+  frame.fields = {{"temperature", model.temperature()},
+                  {"enthalpy", model.enthalpy()},
+                  {"liquid_fraction", model.liquid_fraction()},
+                  {"phase", phase},
+                  {"conductivity", k},
+                  {"volume", particles.volume},
+                  {"boundary", boundary}};
   return frame;
 }
 
@@ -64,7 +68,8 @@ io::PointCloudFrame full_ring(const io::PointCloudFrame& wedge, const std::vecto
     }
     for (auto& field : ring.fields)
       for (const auto& source : wedge.fields)
-        if (source.first == field.first) field.second.insert(field.second.end(), source.second.begin(), source.second.end());
+        if (source.first == field.first)
+          field.second.insert(field.second.end(), source.second.begin(), source.second.end());
   }
   return ring;
 }
@@ -84,7 +89,8 @@ std::vector<geometry::Triangle> ground_triangles(const std::vector<particles::Ve
   return all;
 }
 
-bool shown_in_files(const particles::ParticleSet<2>& P, std::size_t i, const std::optional<std::array<double, 2>>& plate) {
+bool shown_in_files(const particles::ParticleSet<2>& P, std::size_t i,
+                    const std::optional<std::array<double, 2>>& plate) {
   if (P.is_free(i)) return true;
   if (P.reflection[i].allFinite()) return false;  // a layer beyond a wall
   const auto& x = P.position[i];
@@ -115,6 +121,5 @@ const char* integrator_name(project::IntegratorKind k) {
   if (k == project::IntegratorKind::rkl2) return "rkl2";
   return k == project::IntegratorKind::implicit ? "implicit" : "explicit";
 }
-
 
 }  // namespace frostwall::freezing

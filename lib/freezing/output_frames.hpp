@@ -36,7 +36,8 @@ io::PointCloudFrame full_ring(const io::PointCloudFrame& wedge, const std::vecto
 // Whether particle i is written to the snapshot files (below): free, or
 // fixed with the boundary's own temperature and on the plate (plate: its
 // width and height; nullopt: a shaft section).
-bool shown_in_files(const particles::ParticleSet<2>& P, std::size_t i, const std::optional<std::array<double, 2>>& plate);
+bool shown_in_files(const particles::ParticleSet<2>& P, std::size_t i,
+                    const std::optional<std::array<double, 2>>& plate);
 
 // The cloud's triangles at most `limit` (per point) long; in a shaft
 // section (shaft true) without those whose three corners all hold a

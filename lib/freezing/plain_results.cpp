@@ -133,7 +133,8 @@ json PlainResults::finish(const std::filesystem::path& out) const {
       for (std::size_t s = 0; s < readings_[k].size(); ++s) {
         csv += fmt::format(",{:.6g}", readings_[k][s]);
         if (mechanics_)
-          csv += fmt::format(",{:.6g},{:.6g},{:.6g}", solid_readings_[k][s][0], solid_readings_[k][s][1], solid_readings_[k][s][2]);
+          csv += fmt::format(",{:.6g},{:.6g},{:.6g}", solid_readings_[k][s][0], solid_readings_[k][s][1],
+                             solid_readings_[k][s][2]);
       }
       csv += "\n";
     }

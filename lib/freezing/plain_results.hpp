@@ -32,7 +32,8 @@ class PlainResults {
   // At every output time (the regular series and the snapshots).
   void sample(double t, const thermal::ThermalModel& model);
   // At each snapshot: front lines and the interface file (stem "field_0001").
-  void snapshot(double t, const thermal::ThermalModel& model, const std::filesystem::path& out, const std::string& stem);
+  void snapshot(double t, const thermal::ThermalModel& model, const std::filesystem::path& out,
+                const std::string& stem);
   // Summary entries ("monitoring", "front_along", "interface") and monitoring.csv.
   nlohmann::json finish(const std::filesystem::path& out) const;
 
@@ -44,9 +45,9 @@ class PlainResults {
   std::unique_ptr<post::PointProbe> sensors_;
   const SolidView* mechanics_ = nullptr;
   std::unique_ptr<post::LinearProbe> solid_sensors_;
-  std::vector<std::unique_ptr<post::PointProbe>> lines_;  // samples along each front line
-  std::vector<double> times_;                             // of the sensor rows, project unit
-  std::vector<std::vector<double>> readings_;             // per row, per sensor
+  std::vector<std::unique_ptr<post::PointProbe>> lines_;            // samples along each front line
+  std::vector<double> times_;                                       // of the sensor rows, project unit
+  std::vector<std::vector<double>> readings_;                       // per row, per sensor
   std::vector<std::vector<std::array<double, 3>>> solid_readings_;  // per row, per sensor: ux, uy, damage
   nlohmann::json front_along_ = nlohmann::json::array(), interface_ = nlohmann::json::array();
   std::vector<particles::Vec<2>> curve_points_;  // particles and their mirror images

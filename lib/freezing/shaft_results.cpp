@@ -32,13 +32,20 @@ std::string csv_number(const std::optional<double>& v) { return v ? fmt::format(
 }  // namespace
 
 ShaftResults::ShaftResults(const project::Project& p, const Model& m)
-    : project_(p), model_(m), planes_(interface_planes(m.shaft->pipes)), sampler_(m.particles(), *m.kernel, m.smoothing) {
+    : project_(p),
+      model_(m),
+      planes_(interface_planes(m.shaft->pipes)),
+      sampler_(m.particles(), *m.kernel, m.smoothing) {
   const auto& shaft = *m.shaft;
   const double dx = m.particles().spacing, R = shaft.far_field_radius;
   // The fan over the simulated wedge finds the weakest ray; a second gauge
   // with just OA and OB gives their extents and OB's mean temperature.
-  post::RayFan fan{shaft.wedge.start_angle, shaft.wedge.angle,
-                   post::RayFan::rays_needed(shaft.wedge.angle, planes_.ring_radius, dx), 0.0, R, 0.5 * dx};
+  post::RayFan fan{shaft.wedge.start_angle,
+                   shaft.wedge.angle,
+                   post::RayFan::rays_needed(shaft.wedge.angle, planes_.ring_radius, dx),
+                   0.0,
+                   R,
+                   0.5 * dx};
   fan_gauge_ = std::make_unique<post::WallGauge>(sampler_, fan, planes_.ring_radii, p.design.isotherm);
   planes_gauge_ = std::make_unique<post::WallGauge>(
       sampler_, post::RayFan{planes_.OA, planes_.OB - planes_.OA, 2, 0.0, R, 0.5 * dx}, planes_.ring_radii);
@@ -54,7 +61,8 @@ ShaftResults::ShaftResults(const project::Project& p, const Model& m)
     std::vector<char> inside(points.size(), 0);
     if (std::get<project::ShaftSection>(p.geometry).pipe.model == project::PipeModel::point) return inside;
     for (std::size_t k = 0; k < points.size(); ++k)
-      for (const auto& q : shaft.pipes) inside[k] |= (points[k] - particles::Vec<2>(q.x, q.y)).norm() < shaft.pipe_radius;
+      for (const auto& q : shaft.pipes)
+        inside[k] |= (points[k] - particles::Vec<2>(q.x, q.y)).norm() < shaft.pipe_radius;
     return inside;
   };
   in_pipe_OA_ = in_pipe(on_OA);
@@ -99,8 +107,16 @@ ShaftResults::Reading ShaftResults::read(double t, const std::vector<double>& li
                                          const std::vector<double>& temperature) const {
   const auto fan = fan_gauge_->measure(liquid_fraction, temperature);
   const auto planes = planes_gauge_->measure(liquid_fraction, temperature);
-  Reading r{t / day, planes.extents.OA(), planes.extents.OB(), fan.extents.min_thickness, planes.mean_temperature_OB,
-            fan.mean_temperature_thinnest, {}, {}, {}, {}};
+  Reading r{t / day,
+            planes.extents.OA(),
+            planes.extents.OB(),
+            fan.extents.min_thickness,
+            planes.mean_temperature_OB,
+            fan.mean_temperature_thinnest,
+            {},
+            {},
+            {},
+            {}};
   if (project_.design.isotherm) {
     r.isotherm_thickness = fan.isotherm.min_thickness;
     r.isotherm_mean_temperature = fan.isotherm_mean_temperature;
@@ -117,7 +133,8 @@ ShaftResults::Reading ShaftResults::read(double t, const std::vector<double>& li
   return r;
 }
 
-void ShaftResults::sample(double t, const std::vector<double>& liquid_fraction, const std::vector<double>& temperature) {
+void ShaftResults::sample(double t, const std::vector<double>& liquid_fraction,
+                          const std::vector<double>& temperature) {
   series_.push_back(read(t, liquid_fraction, temperature));
   const auto T = (*sensors_)(temperature);
   for (std::size_t s = 0; s < T.size(); ++s) sensor_readings_[s].emplace_back(t / day, T[s]);
@@ -167,7 +184,8 @@ void ShaftResults::snapshot(double t, const thermal::ThermalModel& model, const 
       std::vector<double> limit(ring_source_.size()), boundary(ring_source_.size());
       for (std::size_t k = 0; k < limit.size(); ++k)
         limit[k] = 3.0 * P.spacing_of(ring_source_[k]), boundary[k] = P.boundary[ring_source_[k]];
-      ring_mesh_ = std::make_unique<post::IsolineMesh>(ring_points_, ground_triangles(ring_points_, limit, boundary, true));
+      ring_mesh_ =
+          std::make_unique<post::IsolineMesh>(ring_points_, ground_triangles(ring_points_, limit, boundary, true));
     }
     io::write_vtp(out / ring_file, ring_mesh_->isolines(values(ring_source_), 0.5), io::file_labels(project_));
     entry["full_ring_file"] = ring_file;
@@ -181,8 +199,11 @@ json ShaftResults::wall_entries(std::optional<DesignMet>& met) const {
   // ---- wall: one entry per snapshot
   json wall = json::array();
   for (const auto& r : snapshots_)
-    wall.push_back({{"day", r.day}, {"OA", stretch_json(r.OA)}, {"OB", stretch_json(r.OB)},
-                    {"min_thickness", r.min_thickness}, {"mean_temperature_OB", or_null(r.mean_temperature_OB)}});
+    wall.push_back({{"day", r.day},
+                    {"OA", stretch_json(r.OA)},
+                    {"OB", stretch_json(r.OB)},
+                    {"min_thickness", r.min_thickness},
+                    {"mean_temperature_OB", or_null(r.mean_temperature_OB)}});
   if (project_.design.isotherm)
     for (std::size_t k = 0; k < snapshots_.size(); ++k) {
       wall[k]["isotherm_thickness"] = or_null(snapshots_[k].isotherm_thickness);
@@ -250,9 +271,9 @@ json ShaftResults::design_entry(const std::optional<DesignMet>& met) const {
       }
     }
     result = {{"required_thickness", or_null(design.required_thickness)},
-                        {"max_mean_temperature", or_null(design.max_mean_temperature)},
-                        {"reached_day", or_null(reached)},
-                        {"pass", reached.has_value()}};
+              {"max_mean_temperature", or_null(design.max_mean_temperature)},
+              {"reached_day", or_null(reached)},
+              {"pass", reached.has_value()}};
     if (met) {
       if (!design.required_thickness && !design.max_mean_temperature)  // the strength check is the only target
         result["reached_day"] = or_null(met->day), result["pass"] = met->day.has_value();
@@ -265,7 +286,7 @@ json ShaftResults::design_entry(const std::optional<DesignMet>& met) const {
       result["isotherm"] = or_null(design.isotherm);
       result["friction_angle"] = or_null(design.friction_angle);
       result["measured_on"] = design.isotherm ? fmt::format("the {:g} degC isotherm", *design.isotherm)
-                                                        : std::string("the frozen front (liquid fraction 0.5)");
+                                              : std::string("the frozen front (liquid fraction 0.5)");
     }
   }
 
@@ -273,9 +294,8 @@ json ShaftResults::design_entry(const std::optional<DesignMet>& met) const {
 }
 
 void ShaftResults::write_tables(const std::filesystem::path& out) const {
-  std::string csv =
-      "day,OA_inner_m,OA_outer_m,OA_thickness_m,OB_inner_m,OB_outer_m,OB_thickness_m,min_thickness_m,"
-      "mean_temperature_OB_C\n";
+  std::string csv = "day,OA_inner_m,OA_outer_m,OA_thickness_m,OB_inner_m,OB_outer_m,OB_thickness_m,min_thickness_m,"
+                    "mean_temperature_OB_C\n";
   for (const auto& r : series_)
     csv += fmt::format("{:.6g},{},{},{:.6g},{},{},{:.6g},{:.6g},{}\n", r.day, csv_number(r.OA.inner),
                        csv_number(r.OA.outer), r.OA.thickness, csv_number(r.OB.inner), csv_number(r.OB.outer),

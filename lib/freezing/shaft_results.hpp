@@ -35,13 +35,15 @@ class ShaftResults {
   // particle at t (the model's state, or one interpolated between steps).
   void sample(double t, const std::vector<double>& liquid_fraction, const std::vector<double>& temperature);
   void snapshot(double t, const thermal::ThermalModel& model, const std::filesystem::path& out,
-                const std::string& stem);                         // at each snapshot day
+                const std::string& stem);  // at each snapshot day
   // Summary entries (wall, design, monitoring, interface) and the CSV files.
   nlohmann::json finish(const std::filesystem::path& out) const;
   // The whole ring's triangles (once a snapshot has built them; else
   // nullptr), over the copies of the particles the snapshot files show, in
   // the order of the ring files: shared with them.
-  const std::vector<geometry::Triangle>* ring_triangles() const { return ring_mesh_ ? &ring_mesh_->triangles() : nullptr; }
+  const std::vector<geometry::Triangle>* ring_triangles() const {
+    return ring_mesh_ ? &ring_mesh_->triangles() : nullptr;
+  }
 
  private:
   nlohmann::json wall_entries(std::optional<DesignMet>& met) const;

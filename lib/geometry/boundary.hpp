@@ -21,8 +21,8 @@ namespace frostwall::geometry {
 
 struct FilmWall {
   double heat_transfer_coefficient = 0.0;  // h, W/(m2 K)
-  std::vector<int> group;         // per fixed particle (index i - free count); -1: not on this wall
-  std::vector<double> perimeter;  // per group: m of its wall inside the simulated section
+  std::vector<int> group;                  // per fixed particle (index i - free count); -1: not on this wall
+  std::vector<double> perimeter;           // per group: m of its wall inside the simulated section
 };
 
 struct FixedTemperatureBoundary {

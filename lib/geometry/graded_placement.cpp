@@ -1,6 +1,5 @@
 #include "geometry/graded_placement.hpp"
 
-
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Delaunay_mesh_face_base_2.h>
 #include <CGAL/Delaunay_mesh_size_criteria_2.h>
@@ -24,7 +23,8 @@ constexpr double settled_move = 0.05;
 using K = Kernel2;
 using MeshVertex = CGAL::Delaunay_mesh_vertex_base_2<K>;
 using MeshFace = CGAL::Delaunay_mesh_face_base_2<K>;
-using MeshCDT = CGAL::Constrained_Delaunay_triangulation_2<K, CGAL::Triangulation_data_structure_2<MeshVertex, MeshFace>>;
+using MeshCDT =
+    CGAL::Constrained_Delaunay_triangulation_2<K, CGAL::Triangulation_data_structure_2<MeshVertex, MeshFace>>;
 
 // CGAL's size criterion with the size field in place of one global bound:
 // a triangle is too big when its longest edge exceeds factor * s(centroid).

@@ -45,17 +45,17 @@ struct ReflectingWall {
 };
 
 struct PlacementRegion {
-  std::vector<Vec2> outline;                  // polygon around the region, counter-clockwise (seeding)
-  std::function<bool(const Vec2&)> inside;    // where a free particle may sit
-  std::vector<particles::MirrorPlane<2>> mirrors;   // adiabatic sides
-  std::vector<Vec2> fixed;                    // fixed particles already placed (pipe rings)
+  std::vector<Vec2> outline;                       // polygon around the region, counter-clockwise (seeding)
+  std::function<bool(const Vec2&)> inside;         // where a free particle may sit
+  std::vector<particles::MirrorPlane<2>> mirrors;  // adiabatic sides
+  std::vector<Vec2> fixed;                         // fixed particles already placed (pipe rings)
   std::vector<ReflectingWall> walls;
 };
 
 struct PlacementReport {
   std::size_t particles = 0;
   int iterations = 0;
-  double last_move = 0.0;      // largest move of the last iteration, in local spacings
+  double last_move = 0.0;  // largest move of the last iteration, in local spacings
 };
 
 // At most `iterations` Lloyd iterations; fewer once the cloud has settled

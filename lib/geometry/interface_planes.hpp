@@ -12,9 +12,9 @@ namespace frostwall::geometry {
 // and the radii of every ring (mean radius of its pipes; measured pipes,
 // which form no ring, count as OA's).
 struct InterfacePlanes {
-  double OA = 0.0, OB = 0.0;          // rad
-  double ring_radius = 0.0;           // m
-  std::vector<double> ring_radii;     // m, ascending
+  double OA = 0.0, OB = 0.0;       // rad
+  double ring_radius = 0.0;        // m
+  std::vector<double> ring_radii;  // m, ascending
 };
 InterfacePlanes interface_planes(const std::vector<geometry::Pipe2>& pipes);
 

@@ -84,8 +84,7 @@ std::vector<RegularRing> regular_rings(const Layout& layout) {
         rings.push_back(r);
       }
       break;
-    case Pattern::pipes:
-      break;
+    case Pattern::pipes: break;
   }
   return rings;
 }
@@ -146,17 +145,15 @@ std::vector<std::string> layout_problems(const project::ShaftSection& section) {
     for (std::size_t i = 0; i < p.size(); ++i)
       for (std::size_t j = i + 1; j < p.size(); ++j)
         if (const double c = std::hypot(p[i].x - p[j].x, p[i].y - p[j].y); c < d)
-          problems.push_back(
-              fmt::format("layout.pipes[{}]: overlaps layout.pipes[{}] (centres {:.3f} m apart, "
-                          "pipe diameter {:.3f} m)",
-                          i, j, c, d));
+          problems.push_back(fmt::format("layout.pipes[{}]: overlaps layout.pipes[{}] (centres {:.3f} m apart, "
+                                         "pipe diameter {:.3f} m)",
+                                         i, j, c, d));
     for (std::size_t i = 0; i < p.size(); ++i) {
       const double r = std::hypot(p[i].x, p[i].y);
       if (excavation && r - d / 2 < *excavation)
-        problems.push_back(
-            fmt::format("layout.pipes[{}]: the pipe reaches into the excavation (its wall {:.3f} m "
-                        "from the shaft axis, shaft.excavation_radius {:.3f} m)",
-                        i, r - d / 2, *excavation));
+        problems.push_back(fmt::format("layout.pipes[{}]: the pipe reaches into the excavation (its wall {:.3f} m "
+                                       "from the shaft axis, shaft.excavation_radius {:.3f} m)",
+                                       i, r - d / 2, *excavation));
       if (r + d / 2 > farthest.reach) farthest = {r + d / 2, fmt::format("layout.pipes[{}]", i)};
     }
   } else {
@@ -166,10 +163,9 @@ std::vector<std::string> layout_problems(const project::ShaftSection& section) {
     for (const auto& ring : rings)
       if (ring.count >= 2)
         if (const double c = chord(ring.radius, ring.radius, ring.spacing); c < d)
-          problems.push_back(
-              fmt::format("{}: {} pipes on radius {:.3f} m overlap their neighbours (centres {:.3f} m "
-                          "apart, pipe diameter {:.3f} m)",
-                          ring.path, ring.count, ring.radius, c, d));
+          problems.push_back(fmt::format("{}: {} pipes on radius {:.3f} m overlap their neighbours (centres {:.3f} m "
+                                         "apart, pipe diameter {:.3f} m)",
+                                         ring.path, ring.count, ring.radius, c, d));
     for (std::size_t b = 0; b < rings.size(); ++b)
       for (std::size_t a = 0; a < b; ++a)
         if (rings[a].count > 0 && rings[b].count > 0)
@@ -179,10 +175,9 @@ std::vector<std::string> layout_problems(const project::ShaftSection& section) {
     for (const auto& ring : rings) {
       if (ring.count < 1) continue;
       if (excavation && ring.radius - d / 2 < *excavation)
-        problems.push_back(
-            fmt::format("{}: {} reach into the excavation (their wall {:.3f} m from the shaft axis, "
-                        "shaft.excavation_radius {:.3f} m)",
-                        ring.radius_path, ring.pipes, ring.radius - d / 2, *excavation));
+        problems.push_back(fmt::format("{}: {} reach into the excavation (their wall {:.3f} m from the shaft axis, "
+                                       "shaft.excavation_radius {:.3f} m)",
+                                       ring.radius_path, ring.pipes, ring.radius - d / 2, *excavation));
       if (ring.radius + d / 2 > farthest.reach) farthest = {ring.radius + d / 2, "the pipes of " + ring.name};
     }
   }
@@ -202,12 +197,11 @@ std::vector<std::string> layout_problems(const project::ShaftSection& section) {
                                          far_field_clearance_diameters)
                            : ""));
     else if (farthest.reach + clearance > far)
-      problems.push_back(
-          fmt::format("domain.outer_radius: the far-field circle of {:.3f} m is only {:.3f} m from "
-                      "{} (reaching {:.3f} m); the disc model needs {:g} pipe diameters ({:.3f} m) "
-                      "of soil there, so at least {:.3f} m",
-                      far, far - farthest.reach, farthest.who, farthest.reach, far_field_clearance_diameters, clearance,
-                      farthest.reach + clearance));
+      problems.push_back(fmt::format("domain.outer_radius: the far-field circle of {:.3f} m is only {:.3f} m from "
+                                     "{} (reaching {:.3f} m); the disc model needs {:g} pipe diameters ({:.3f} m) "
+                                     "of soil there, so at least {:.3f} m",
+                                     far, far - farthest.reach, farthest.who, farthest.reach,
+                                     far_field_clearance_diameters, clearance, farthest.reach + clearance));
   }
   return problems;
 }

@@ -16,8 +16,8 @@ bool is_fixed(const project::SideCondition& c) { return std::holds_alternative<p
 // Particle rows along one axis of length L between a low and a high side.
 struct AxisRows {
   double spacing = 0.0;
-  std::vector<double> free;             // coordinates of free rows
-  std::vector<double> below, above;     // fixed layers beyond each side (empty if mirror)
+  std::vector<double> free;          // coordinates of free rows
+  std::vector<double> below, above;  // fixed layers beyond each side (empty if mirror)
 };
 
 AxisRows axis_rows(double L, bool fixed_lo, bool fixed_hi, double s, int layers) {
@@ -73,8 +73,8 @@ RectangleScene build_rectangle(const project::Rectangle& rect, double spacing, d
   P.spacing = std::min(X.spacing, Y.spacing);
   for (double y : ys)
     for (double x : xs) {
-      const std::array<bool, 4> beyond{x < X.free.front() - 1e-12 * X.spacing, x > X.free.back() + 1e-12 * X.spacing,
-                                       y < Y.free.front() - 1e-12 * Y.spacing, y > Y.free.back() + 1e-12 * Y.spacing};
+      const std::array<bool, 4> beyond{x<X.free.front() - 1e-12 * X.spacing, x> X.free.back() + 1e-12 * X.spacing,
+                                       y<Y.free.front() - 1e-12 * Y.spacing, y> Y.free.back() + 1e-12 * Y.spacing};
       int b = -1, owner = -1, count = 0;
       for (int s = 3; s >= 0; --s)
         if (beyond[s]) {

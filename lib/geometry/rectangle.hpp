@@ -41,8 +41,8 @@ struct CooledFace {
   std::string side;
   particles::Vec<2> origin;         // a point on the face
   particles::Vec<2> inward_normal;  // unit, into the rectangle
-  double spacing = 0.0;       // lattice spacing along the normal (graded: the finest)
-  bool lattice_rows = true;   // particles in rows parallel to the face (false: a graded cloud)
+  double spacing = 0.0;             // lattice spacing along the normal (graded: the finest)
+  bool lattice_rows = true;         // particles in rows parallel to the face (false: a graded cloud)
 };
 std::optional<CooledFace> cooled_face(const project::Rectangle& rect, const RectangleScene& scene);
 

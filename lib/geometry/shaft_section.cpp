@@ -30,7 +30,6 @@ struct WedgeSides {
         B(std::cos(w.start_angle + w.angle), std::sin(w.start_angle + w.angle)) {}
 };
 
-
 // Pipes: rings of fixed particles following the wall, symmetric about the
 // radial line through the pipe centre (a mirror line when the pipe sits on
 // a wedge side), or the single centre particle of the point model. `dx` is
@@ -59,7 +58,8 @@ void add_pipe(particles::ParticleSet<2>& P, const ShaftScene& scene, const Wedge
       const double phi = radial + (m + 0.5) * 2.0 * std::numbers::pi / count;
       const Vec<2> x = c + rho * Vec<2>(std::cos(phi), std::sin(phi));
       // Reflected across the pipe wall: radius 2a - rho from the centre.
-      const Vec<2> reflected = l == 0 ? particles::ParticleSet<2>::on_wall() : Vec<2>(c + (2.0 * a - rho) / rho * (x - c));
+      const Vec<2> reflected = l == 0 ? particles::ParticleSet<2>::on_wall()
+                                      : Vec<2>(c + (2.0 * a - rho) / rho * (x - c));
       if (keep(x)) P.add(x, 2.0 * std::numbers::pi * rho / count * dx, scene.pipe_boundary, reflected);
     }
   }
@@ -111,8 +111,8 @@ bool inside_wedge(const Wedge& wedge, const Vec<2>& p) {
   return left_of_OA && CGAL::orientation(s.O, s.B, q) == CGAL::RIGHT_TURN;
 }
 
-ShaftScene build_shaft_section(const project::ShaftSection& section, const project::Domain& domain,
-                               const Wedge& wedge, double spacing, double h) {
+ShaftScene build_shaft_section(const project::ShaftSection& section, const project::Domain& domain, const Wedge& wedge,
+                               double spacing, double h) {
   ShaftScene scene = empty_scene(section, domain, wedge);
   const double dx = spacing, R = section.outer_radius, a = scene.pipe_radius;
   const int layers = static_cast<int>(std::ceil(2.0 * h / dx - 1e-9));
@@ -174,8 +174,7 @@ SizeField shaft_size_field(const project::ShaftSection& section, const Wedge& we
   size.in_annulus(r_in - w, r_out + w, grading.band_coarsening * finest, slope);
   // Near the apex the wedge's 2M mirror copies put rings of images r * angle
   // apart round the axis: a particle there cannot be coarser than that.
-  if (wedge.mirror_count > 1)
-    size.add([](const Vec<2>& x) { return x.norm(); }, 0.0, std::min(slope, wedge.angle));
+  if (wedge.mirror_count > 1) size.add([](const Vec<2>& x) { return x.norm(); }, 0.0, std::min(slope, wedge.angle));
   return size;
 }
 

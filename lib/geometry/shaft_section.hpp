@@ -35,8 +35,8 @@ struct ShaftScene : Scene {
   int far_field_boundary = -1;  // boundary id of the far field, -1 if adiabatic
 };
 
-ShaftScene build_shaft_section(const project::ShaftSection& section, const project::Domain& domain,
-                               const Wedge& wedge, double spacing, double h);
+ShaftScene build_shaft_section(const project::ShaftSection& section, const project::Domain& domain, const Wedge& wedge,
+                               double spacing, double h);
 
 // The spacing a graded shaft section asks for (numerics.placement "graded"):
 //  - `finest` at every pipe wall, growing at (growth - 1) per metre away;

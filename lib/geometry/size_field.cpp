@@ -14,7 +14,8 @@ void SizeField::near_circle(const Vec2& centre, double radius, double spacing, d
 }
 
 void SizeField::in_annulus(double r_in, double r_out, double spacing, double slope) {
-  add([=](const Vec2& x) {
+  add(
+      [=](const Vec2& x) {
         const double r = x.norm();
         return std::max({0.0, r_in - r, r - r_out});
       },

@@ -25,9 +25,10 @@ class SizeField {
   // d(x) >= 0: the distance from the source (0 on or inside it).
   void add(std::function<double(const Vec2&)> distance, double spacing, double slope);
   // Convenience sources.
-  void near_circle(const Vec2& centre, double radius, double spacing, double slope);    // a pipe wall
-  void in_annulus(double r_in, double r_out, double spacing, double slope);              // a band round the axis
-  void near_line(const Vec2& point, const Vec2& normal, double width, double spacing, double slope);  // a strip along a face
+  void near_circle(const Vec2& centre, double radius, double spacing, double slope);  // a pipe wall
+  void in_annulus(double r_in, double r_out, double spacing, double slope);           // a band round the axis
+  void near_line(const Vec2& point, const Vec2& normal, double width, double spacing,
+                 double slope);  // a strip along a face
 
   double operator()(const Vec2& x) const;
   double finest() const { return finest_; }

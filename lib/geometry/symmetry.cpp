@@ -143,7 +143,8 @@ Wedge find_symmetry_wedge(const std::vector<Pipe2>& pipes, double preferred_star
   return find_symmetry_wedge(pipes, preferred_start_angle, default_symmetry_tolerance(pipes));
 }
 
-Wedge find_flow_symmetry_wedge(const std::vector<Pipe2>& pipes, double flow_angle, double tolerance, std::string& note) {
+Wedge find_flow_symmetry_wedge(const std::vector<Pipe2>& pipes, double flow_angle, double tolerance,
+                               std::string& note) {
   const double along = wrap(flow_angle, 2 * pi);
   const Pipe2* ref = pipes.empty() ? nullptr : farthest_pipe(pipes);
   const double same_line = ref ? angular_tolerance(tolerance, std::hypot(ref->x, ref->y)) : 1e-12;
@@ -155,12 +156,14 @@ Wedge find_flow_symmetry_wedge(const std::vector<Pipe2>& pipes, double flow_angl
     if (d <= same_line || pi - d <= same_line) mirrored = true;
   }
   if (!mirrored) {
-    note = fmt::format("symmetry under seepage: the layout has no mirror line along the flow ({:.3f} deg); the full circle",
-                       along * 180.0 / pi);
+    note = fmt::format(
+        "symmetry under seepage: the layout has no mirror line along the flow ({:.3f} deg); the full circle",
+        along * 180.0 / pi);
     return {0, along, 2 * pi};
   }
-  note = fmt::format("symmetry under seepage: only the mirror line along the flow ({:.3f} deg) survives; half the section",
-                     along * 180.0 / pi);
+  note =
+      fmt::format("symmetry under seepage: only the mirror line along the flow ({:.3f} deg) survives; half the section",
+                  along * 180.0 / pi);
   return {1, along, pi};
 }
 
@@ -178,7 +181,8 @@ Wedge symmetry_wedge(const project::ShaftSection& section) {
                            ? std::atan2(pipes.front().y, pipes.front().x)
                            : (section.layout.pattern == project::Pattern::rings
                                   ? section.layout.rings.front().offset_deg
-                                  : section.layout.outer_ring.offset_deg) * M_PI / 180.0;
+                                  : section.layout.outer_ring.offset_deg) *
+                                 M_PI / 180.0;
   return find_symmetry_wedge(pipes, start);
 }
 

@@ -1,6 +1,5 @@
 #include "geometry/voronoi_volumes.hpp"
 
-
 #include "particles/mirror_images.hpp"
 #include "geometry/delaunay.hpp"
 

@@ -37,11 +37,17 @@ struct DarcyCloud::Factor {
     ldlt.factorize(A);
     return ldlt.info() == Eigen::Success;
   }
-  Eigen::VectorXd solve(const Eigen::VectorXd& b) const { return supernodal ? Eigen::VectorXd(llt.solve(b)) : Eigen::VectorXd(ldlt.solve(b)); }
+  Eigen::VectorXd solve(const Eigen::VectorXd& b) const {
+    return supernodal ? Eigen::VectorXd(llt.solve(b)) : Eigen::VectorXd(ldlt.solve(b));
+  }
 };
 
-DarcyCloud::DarcyCloud(const particles::PairWeights& pairs, std::vector<double> volume, std::vector<double> fixed_potential)
-    : pairs_(pairs), volume_(std::move(volume)), fixed_(std::move(fixed_potential)), factor_(std::make_unique<Factor>()) {
+DarcyCloud::DarcyCloud(const particles::PairWeights& pairs, std::vector<double> volume,
+                       std::vector<double> fixed_potential)
+    : pairs_(pairs),
+      volume_(std::move(volume)),
+      fixed_(std::move(fixed_potential)),
+      factor_(std::make_unique<Factor>()) {
   if (volume_.size() < pairs_.n_free || pairs_.n_free + fixed_.size() < volume_.size())
     throw std::invalid_argument("DarcyCloud: volumes and fixed potentials do not cover the particles");
 }
@@ -66,7 +72,7 @@ DarcySolveReport DarcyCloud::solve(const std::vector<double>& k) {
     double diagonal = 0.0;
     for (std::size_t e = pairs_.row_start[i]; e < pairs_.row_start[i + 1]; ++e) {
       const std::size_t j = pairs_.column[e];
-      if (j == i) continue;  // a particle's own mirror image carries nothing
+      if (j == i) continue;                                // a particle's own mirror image carries nothing
       if (j >= n && std::isnan(fixed_value(j))) continue;  // no flow through a pipe
       const double a = volume_[i] * pairs_.weight[e] * pair_permeability(k[i], k[j]);
       diagonal += a;
@@ -84,7 +90,8 @@ DarcySolveReport DarcyCloud::solve(const std::vector<double>& k) {
   // small, and a team forked for each cost 2.4 times the whole run's time
   // under seepage (bench/README.md).
   report.factored = particles::serially([&] { return factor_->factor(A); });
-  if (!report.factored) throw std::runtime_error("Darcy flow: the system could not be factored (is the cloud connected?)");
+  if (!report.factored)
+    throw std::runtime_error("Darcy flow: the system could not be factored (is the cloud connected?)");
   const Eigen::VectorXd x = particles::serially([&] { return factor_->solve(rhs); });
   psi_.assign(volume_.size(), 0.0);
   for (std::size_t i = 0; i < n; ++i) psi_[i] = x[Eigen::Index(i)];

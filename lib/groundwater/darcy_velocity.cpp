@@ -4,8 +4,9 @@
 
 namespace frostwall::groundwater {
 
-std::vector<particles::Vec<2>> darcy_flux_at_particles(const particles::PairWeights& pairs, const std::vector<double>& potential,
-                                                        const std::vector<double>& k_r) {
+std::vector<particles::Vec<2>> darcy_flux_at_particles(const particles::PairWeights& pairs,
+                                                       const std::vector<double>& potential,
+                                                       const std::vector<double>& k_r) {
   std::vector<double> gradient;
   particles::pair_gradient(pairs, potential, gradient);
   std::vector<particles::Vec<2>> q(pairs.n_free);

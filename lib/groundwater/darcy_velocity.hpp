@@ -15,7 +15,7 @@ namespace frostwall::groundwater {
 // potential: every particle's (NaN: no flow). The pairs must carry their
 // vectors. Returns one vector per free particle, m/s when psi is in m^2/s.
 std::vector<particles::Vec<2>> darcy_flux_at_particles(const particles::PairWeights& pairs,
-                                                        const std::vector<double>& potential,
-                                                        const std::vector<double>& relative_permeability);
+                                                       const std::vector<double>& potential,
+                                                       const std::vector<double>& relative_permeability);
 
 }  // namespace frostwall::groundwater

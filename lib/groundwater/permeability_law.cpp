@@ -9,17 +9,13 @@ double PermeabilityLaw::relative(double liquid_fraction) const {
   const double f = std::clamp(liquid_fraction, 0.0, 1.0);
   double k = 1.0;
   switch (model) {
-    case PermeabilityModel::impedance:
-      k = std::pow(10.0, -impedance * (1.0 - f));
-      break;
+    case PermeabilityModel::impedance: k = std::pow(10.0, -impedance * (1.0 - f)); break;
     case PermeabilityModel::kozeny_carman: {
       const auto carman = [](double n) { return n * n * n / ((1.0 - n) * (1.0 - n)); };
       k = carman(porosity * f) / carman(porosity);
       break;
     }
-    case PermeabilityModel::threshold:
-      k = f >= threshold_liquid_fraction ? 1.0 : 0.0;
-      break;
+    case PermeabilityModel::threshold: k = f >= threshold_liquid_fraction ? 1.0 : 0.0; break;
   }
   return std::max(k, floor);
 }
@@ -33,9 +29,7 @@ std::string PermeabilityLaw::name() const {
   return "?";
 }
 
-PermeabilityLaw permeability_law(const project::PermeabilitySettings& s) {
-  return {s};
-}
+PermeabilityLaw permeability_law(const project::PermeabilitySettings& s) { return {s}; }
 
 bool permeability_model_from_name(const std::string& name, PermeabilityModel& model) {
   for (auto m : {PermeabilityModel::impedance, PermeabilityModel::kozeny_carman, PermeabilityModel::threshold})

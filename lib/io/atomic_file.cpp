@@ -10,8 +10,7 @@ namespace frostwall::io {
 
 namespace fs = std::filesystem;
 
-void write_atomically(const fs::path& file,
-                      const std::function<void(const fs::path&)>& write) {
+void write_atomically(const fs::path& file, const std::function<void(const fs::path&)>& write) {
   // Same directory as the target so the rename stays on one file system
   // (and is therefore atomic); the pid keeps concurrent processes apart.
   fs::path tmp = file;

@@ -7,7 +7,8 @@
 namespace frostwall::io {
 
 Labels file_labels(const project::Project& p, const char* time_unit) {
-  return {{"project", p.name}, {"time_unit", time_unit ? time_unit : p.time.unit_name()},
+  return {{"project", p.name},
+          {"time_unit", time_unit ? time_unit : p.time.unit_name()},
           {"frostwall_version", FROSTWALL_VERSION}};
 }
 

@@ -19,7 +19,8 @@ void check_output_directory(const std::string& directory) {
   std::error_code ec;
   const fs::path target = fs::absolute(fs::path(directory).lexically_normal(), ec);
   fs::path existing = target;
-  while (!existing.empty() && !fs::exists(existing, ec) && existing.has_parent_path() && existing != existing.parent_path())
+  while (!existing.empty() && !fs::exists(existing, ec) && existing.has_parent_path() &&
+         existing != existing.parent_path())
     existing = existing.parent_path();
   std::string reason;
   if (!fs::is_directory(existing, ec)) reason = std::make_error_code(std::errc::not_a_directory).message();
@@ -34,7 +35,8 @@ void check_output_directory(const std::string& directory) {
     if (FILE* f = std::fopen(probe.c_str(), "w")) std::fclose(f), fs::remove(probe, ec);
     else reason = std::error_code(errno, std::generic_category()).message();
   }
-  if (!reason.empty()) throw project::ProjectError({fmt::format("output.directory: cannot create '{}': {}", directory, reason)});
+  if (!reason.empty())
+    throw project::ProjectError({fmt::format("output.directory: cannot create '{}': {}", directory, reason)});
 }
 
 }  // namespace frostwall::io

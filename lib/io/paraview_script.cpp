@@ -130,24 +130,24 @@ void write_paraview_script(const std::filesystem::path& file, const ParaviewScen
   std::string series;
   for (const auto& s : scene.series)
     series += fmt::format("    ({}, '{}', {}),\n", quoted(s.pvd), kind_name(s.kind), s.visible ? "True" : "False");
-  const std::string head = fmt::format(
-      "# Opens the files of the frostwall run {} in ParaView with its colour maps:\n"
-      "#   paraview --script=open_in_paraview.py      (the ParaView window)\n"
-      "#   pvpython open_in_paraview.py --png         (no window: saves open_in_paraview.png)\n"
-      "# Temperature diverges at the freezing point; black lines: the frozen front\n"
-      "# (liquid fraction 0.5); magenta: the design isotherm; grains: spheres of\n"
-      "# their radius coloured by displacement. Edit the settings below freely.\n"
-      "import os\n"
-      "HERE = os.path.dirname(os.path.abspath(__file__)) if '__file__' in globals() else os.getcwd()\n"
-      "FREEZING_POINT = {:.6g}  # degC\n"
-      "COLDEST = {:.6g}  # degC\n"
-      "WARMEST = {:.6g}  # degC\n"
-      "ISOTHERM = {}  # degC, or None\n"
-      "SOLID = {}  # displacement and damage in the temperature files\n"
-      "SERIES = [  # (collection, kind, shown at start)\n{}]\n",
-      quoted(scene.title), scene.freezing_point, scene.coldest, scene.warmest,
-      scene.isotherm ? fmt::format("{:.6g}", *scene.isotherm) : std::string("None"), scene.solid ? "True" : "False",
-      series);
+  const std::string head =
+      fmt::format("# Opens the files of the frostwall run {} in ParaView with its colour maps:\n"
+                  "#   paraview --script=open_in_paraview.py      (the ParaView window)\n"
+                  "#   pvpython open_in_paraview.py --png         (no window: saves open_in_paraview.png)\n"
+                  "# Temperature diverges at the freezing point; black lines: the frozen front\n"
+                  "# (liquid fraction 0.5); magenta: the design isotherm; grains: spheres of\n"
+                  "# their radius coloured by displacement. Edit the settings below freely.\n"
+                  "import os\n"
+                  "HERE = os.path.dirname(os.path.abspath(__file__)) if '__file__' in globals() else os.getcwd()\n"
+                  "FREEZING_POINT = {:.6g}  # degC\n"
+                  "COLDEST = {:.6g}  # degC\n"
+                  "WARMEST = {:.6g}  # degC\n"
+                  "ISOTHERM = {}  # degC, or None\n"
+                  "SOLID = {}  # displacement and damage in the temperature files\n"
+                  "SERIES = [  # (collection, kind, shown at start)\n{}]\n",
+                  quoted(scene.title), scene.freezing_point, scene.coldest, scene.warmest,
+                  scene.isotherm ? fmt::format("{:.6g}", *scene.isotherm) : std::string("None"),
+                  scene.solid ? "True" : "False", series);
   write_text_file(file, head + body);
 }
 

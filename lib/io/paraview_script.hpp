@@ -24,10 +24,10 @@ struct ParaviewSeries {
 struct ParaviewScene {
   std::string title;  // the project's name
   std::vector<ParaviewSeries> series;
-  double freezing_point = 0.0;      // degC: the white of the temperature map
+  double freezing_point = 0.0;          // degC: the white of the temperature map
   double coldest = 0.0, warmest = 0.0;  // degC: what the boundaries and the start span
-  std::optional<double> isotherm;   // degC: the design isotherm
-  bool solid = false;               // the temperature files carry displacement and damage
+  std::optional<double> isotherm;       // degC: the design isotherm
+  bool solid = false;                   // the temperature files carry displacement and damage
 };
 
 // Writes the script (atomically); throws std::invalid_argument on a scene

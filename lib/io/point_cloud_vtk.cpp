@@ -92,12 +92,13 @@ void write_vtu(const fs::path& file, const PointCloudFrame& frame) {
   // Validate before touching the file system so a bad frame leaves nothing.
   for (const auto& [name, values] : frame.fields) {
     if (values.size() != frame.points.size())
-      throw std::invalid_argument(fmt::format(
-          "write_vtu: field '{}' has {} values for {} points", name, values.size(), n));
+      throw std::invalid_argument(
+          fmt::format("write_vtu: field '{}' has {} values for {} points", name, values.size(), n));
   }
   for (const auto& [name, values] : frame.vectors)
     if (values.size() != 3 * frame.points.size())
-      throw std::invalid_argument(fmt::format("write_vtu: vector '{}' has {} values for {} points", name, values.size(), n));
+      throw std::invalid_argument(
+          fmt::format("write_vtu: vector '{}' has {} values for {} points", name, values.size(), n));
 
   vtkNew<vtkPoints> points;
   if (frame.single_precision) points->SetDataTypeToFloat();
@@ -138,8 +139,7 @@ void write_vtu(const fs::path& file, const PointCloudFrame& frame) {
     // main job 1.48x slower to run (bench/README.md).
     writer->SetCompressorTypeToLZ4();
     // Write() reports failure only through its return value (1 = success).
-    if (writer->Write() != 1)
-      throw std::runtime_error("write_vtu: VTK failed to write " + tmp.string());
+    if (writer->Write() != 1) throw std::runtime_error("write_vtu: VTK failed to write " + tmp.string());
   });
 }
 
@@ -165,14 +165,13 @@ std::string xml_escape(const std::string& s) {
 }  // namespace
 
 void write_pvd(const fs::path& file, const std::vector<PvdEntry>& entries) {
-  std::string xml =
-      "<?xml version=\"1.0\"?>\n"
-      "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
-      "  <Collection>\n";
+  std::string xml = "<?xml version=\"1.0\"?>\n"
+                    "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
+                    "  <Collection>\n";
   for (const auto& e : entries) {
     // {:.17g} round-trips every double, so ParaView sees the exact times.
-    xml += fmt::format("    <DataSet timestep=\"{:.17g}\" group=\"\" part=\"0\" file=\"{}\"/>\n",
-                       e.time, xml_escape(e.file));
+    xml += fmt::format("    <DataSet timestep=\"{:.17g}\" group=\"\" part=\"0\" file=\"{}\"/>\n", e.time,
+                       xml_escape(e.file));
   }
   xml += "  </Collection>\n</VTKFile>\n";
   write_text_file(file, xml);

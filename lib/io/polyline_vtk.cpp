@@ -45,8 +45,7 @@ void write_vtp(const fs::path& file, const std::vector<geometry::Polyline>& line
     writer->EncodeAppendedDataOff();  // raw binary, not base64
     writer->SetHeaderTypeToUInt64();  // as the .vtu files: no 4 GiB limit per array
     // Write() reports failure only through its return value (1 = success).
-    if (writer->Write() != 1)
-      throw std::runtime_error("write_vtp: VTK failed to write " + tmp.string());
+    if (writer->Write() != 1) throw std::runtime_error("write_vtp: VTK failed to write " + tmp.string());
   });
 }
 

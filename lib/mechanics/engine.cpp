@@ -39,7 +39,8 @@ void add_solid_fields(io::PointCloudFrame& frame, const MechanicsRun& mechanics)
 // particles' triangles, both faces of a crack band) of the solid now.
 double crack_length(const Model& m, const MechanicsRun& mechanics) {
   const auto& P = m.particles();
-  const post::IsolineMesh mesh(std::vector<particles::Vec<2>>(P.position.begin(), P.position.begin() + P.n_free), 2.5 * P.spacing);
+  const post::IsolineMesh mesh(std::vector<particles::Vec<2>>(P.position.begin(), P.position.begin() + P.n_free),
+                               2.5 * P.spacing);
   return crack_measure(mesh.isolines(mechanics.damage(), FrostResults::crack_damage), 0.0).length;
 }
 

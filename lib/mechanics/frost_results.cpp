@@ -40,8 +40,8 @@ FrostResults::FrostResults(const project::Project& p, const Model& m, const Mech
       end_(rect_.pores.size()) {
   if (mechanics_) {
     const auto& P = m.particles();
-    mesh_ = std::make_unique<post::IsolineMesh>(
-        std::vector<Vec2>(P.position.begin(), P.position.begin() + P.n_free), 2.5 * P.spacing);
+    mesh_ = std::make_unique<post::IsolineMesh>(std::vector<Vec2>(P.position.begin(), P.position.begin() + P.n_free),
+                                                2.5 * P.spacing);
   }
 }
 
@@ -182,8 +182,10 @@ json FrostResults::finish(const std::filesystem::path& out) const {
   }
   result["pores"] = pores;
   if (const auto& g = rect_.pore_generator)
-    result["pores_generated"] = {{"count", g->count}, {"radius", {g->radius_min, g->radius_max}},
-                                 {"min_gap", g->min_gap}, {"seed", g->seed},
+    result["pores_generated"] = {{"count", g->count},
+                                 {"radius", {g->radius_min, g->radius_max}},
+                                 {"min_gap", g->min_gap},
+                                 {"seed", g->seed},
                                  {"saturation", {g->saturation_min, g->saturation_max}}};
   std::optional<double> all = 0.0;
   for (const auto& e : end_) all = e && all ? std::optional(std::max(*all, *e)) : std::nullopt;

@@ -25,10 +25,10 @@ using freezing::Model;
 
 // Damage of the solid at one time.
 struct DamageState {
-  double broken_bond_share = 0.0;  // broken / all bonds between material points
-  double largest_damage = 0.0;     // of a material point
-  double damaged_area = 0.0;       // m2 per metre of depth with damage above crack_damage
-  double broken_bond_energy = 0.0; // J per metre of depth: the work to break the broken bonds
+  double broken_bond_share = 0.0;   // broken / all bonds between material points
+  double largest_damage = 0.0;      // of a material point
+  double damaged_area = 0.0;        // m2 per metre of depth with damage above crack_damage
+  double broken_bond_energy = 0.0;  // J per metre of depth: the work to break the broken bonds
 };
 
 // The crack lines at one time: the damage-0.4 isolines' total length (m
@@ -75,7 +75,7 @@ class FrostResults {
   const std::vector<std::optional<double>>& freezing_end() const { return end_; }
 
  private:
-  std::vector<double> rim_damage() const;  // largest damage within a horizon outside each rim
+  std::vector<double> rim_damage() const;               // largest damage within a horizon outside each rim
   std::vector<geometry::Polyline> crack_lines() const;  // the damage isolines at crack_damage
 
   const project::Project& project_;

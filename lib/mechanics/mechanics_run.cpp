@@ -86,8 +86,9 @@ void MechanicsRun::update(const thermal::ThermalModel& model, double t, bool for
   };
   auto relax = [&](bool breaking) {
     const std::function<bool()> changes = breaking ? std::function<bool()>(adjust) : std::function<bool()>();
-    const auto r = direct_ ? direct_->solve_adjusting(*solid_, u_, dT_, changes)
-                           : pd::relax_adjusting(*solid_, u_, dT_, mechanics_.tolerance, mechanics_.max_iterations, changes);
+    const auto r =
+        direct_ ? direct_->solve_adjusting(*solid_, u_, dT_, changes)
+                : pd::relax_adjusting(*solid_, u_, dT_, mechanics_.tolerance, mechanics_.max_iterations, changes);
     ++relaxations_;
     iterations_ += r.iterations;
     largest_ = std::max(largest_, r.iterations);
@@ -119,7 +120,8 @@ void MechanicsRun::update(const thermal::ThermalModel& model, double t, bool for
       for (std::size_t k = 0; k < u_.size(); ++k) u_[k] = u0[k] + lambda * (u_[k] - u0[k]);
       if (pores_) {
         std::vector<double> shape = pores_->shape_field();
-        for (std::size_t k = 0; k < shape.size() && k < shape0.size(); ++k) shape[k] = shape0[k] + lambda * (shape[k] - shape0[k]);
+        for (std::size_t k = 0; k < shape.size() && k < shape0.size(); ++k)
+          shape[k] = shape0[k] + lambda * (shape[k] - shape0[k]);
         pores_->set_shape_field(std::move(shape));
       }
       set_load(lambda);
@@ -141,7 +143,8 @@ nlohmann::json MechanicsRun::facts() const {
   return {{"bonds", solid_->bonds()},
           {"horizon", law.horizon},
           {"micromodulus", law.micromodulus},
-          {"critical_stretch", std::isfinite(law.critical_stretch) ? nlohmann::json(law.critical_stretch) : nlohmann::json(nullptr)},
+          {"critical_stretch",
+           std::isfinite(law.critical_stretch) ? nlohmann::json(law.critical_stretch) : nlohmann::json(nullptr)},
           {"equilibrium", direct_ ? "direct" : "dynamic_relaxation"},
           {"factorizations", direct_ ? direct_->factorizations() : 0},
           {"direct_solves", direct_ ? direct_->solves() : 0},
@@ -150,7 +153,11 @@ nlohmann::json MechanicsRun::facts() const {
           {"longest_relaxation", largest_},
           {"unconverged_relaxations", unconverged_},
           {"broken_bonds", broken_},
-          {"first_damage", first_damage_.empty() ? nlohmann::json(nullptr) : nlohmann::json{{"time", first_damage_time_}, {"x", onset[0]}, {"y", onset[1]}, {"bonds", first_damage_.size()}}},
+          {"first_damage", first_damage_.empty() ? nlohmann::json(nullptr)
+                                                 : nlohmann::json{{"time", first_damage_time_},
+                                                                  {"x", onset[0]},
+                                                                  {"y", onset[1]},
+                                                                  {"bonds", first_damage_.size()}}},
           {"thermal_pairs_cut", insulated_},
           {"largest_displacement", largest_u}};
 }

@@ -85,8 +85,7 @@ class CellList {
   }
   std::array<long, Dim> coords(const Vec<Dim>& p) const {
     std::array<long, Dim> c;
-    for (int d = 0; d < Dim; ++d)
-      c[d] = std::clamp<long>(static_cast<long>((p[d] - lo_[d]) / cell_), 0, dims_[d] - 1);
+    for (int d = 0; d < Dim; ++d) c[d] = std::clamp<long>(static_cast<long>((p[d] - lo_[d]) / cell_), 0, dims_[d] - 1);
     return c;
   }
   long linear(const std::array<long, Dim>& c) const {

@@ -14,8 +14,7 @@ template <int Dim>
 MirrorImages<Dim> mirror_images(const ParticleSet<Dim>& particles, double reach, const std::vector<double>& own_reach) {
   MirrorImages<Dim> images;
   if (particles.mirrors.empty()) return images;
-  const std::vector<Vec<Dim>> free_points(particles.position.begin(),
-                                          particles.position.begin() + particles.n_free);
+  const std::vector<Vec<Dim>> free_points(particles.position.begin(), particles.position.begin() + particles.n_free);
   const CellList<Dim> free_cells(free_points, reach);
   // The free particles lie on one side of each plane (the fundamental
   // domain); an image further than the reach beyond any plane is too far,

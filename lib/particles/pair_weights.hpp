@@ -14,9 +14,9 @@ namespace frostwall::particles {
 
 struct PairWeights {
   std::size_t n_free = 0;
-  std::vector<std::size_t> row_start;     // n_free + 1
-  std::vector<std::uint32_t> column;      // real particle index (>= n_free: fixed)
-  std::vector<double> weight;             // G_ij
+  std::vector<std::size_t> row_start;  // n_free + 1
+  std::vector<std::uint32_t> column;   // real particle index (>= n_free: fixed)
+  std::vector<double> weight;          // G_ij
   // Squared direction cosines of r_ij per pair (Dim values), kept only for
   // anisotropic soils, whose pair factor depends on the pair's direction.
   std::vector<double> direction2;
@@ -24,7 +24,7 @@ struct PairWeights {
   // or the particle), kept only when asked (LaplacianOptions::keep_vectors).
   std::vector<double> vector;
   int dim = 2;
-  std::vector<double> renormalisation;    // c_i per free particle (1 for plain)
+  std::vector<double> renormalisation;  // c_i per free particle (1 for plain)
   // Moment correction (graded clouds): particles corrected, and the range of
   // new weight / old weight over the pairs.
   std::size_t moments_corrected = 0;

@@ -15,7 +15,6 @@ namespace frostwall::particles {
 // than free cores (ctest -j, a study) spinning threads stall each other.
 inline constexpr std::size_t parallel_threshold = 4096;
 
-
 template <class Body>
 void for_each_particle(std::size_t n, Body&& body) {
   const long long count = static_cast<long long>(n);

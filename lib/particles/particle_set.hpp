@@ -19,9 +19,7 @@ template <int Dim>
 struct MirrorPlane {
   Vec<Dim> point;
   Vec<Dim> normal;
-  Vec<Dim> reflect(const Vec<Dim>& x) const {
-    return x - 2.0 * (x - point).dot(normal) * normal;
-  }
+  Vec<Dim> reflect(const Vec<Dim>& x) const { return x - 2.0 * (x - point).dot(normal) * normal; }
   double distance(const Vec<Dim>& x) const { return std::abs((x - point).dot(normal)); }
 };
 
@@ -36,7 +34,7 @@ template <int Dim>
 struct ParticleSet {
   std::vector<Vec<Dim>> position;
   std::vector<double> volume;
-  std::vector<int> boundary;  // -1 for free particles
+  std::vector<int> boundary;         // -1 for free particles
   std::vector<Vec<Dim>> reflection;  // fixed particles: see above; free: NaN
   std::size_t n_free = 0;
   std::vector<MirrorPlane<Dim>> mirrors;

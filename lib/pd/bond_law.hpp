@@ -25,14 +25,16 @@
 namespace frostwall::pd {
 
 struct BondLaw {
-  double micromodulus = 0.0;      // c, N/m^6 per metre of depth
+  double micromodulus = 0.0;  // c, N/m^6 per metre of depth
   double critical_stretch = std::numeric_limits<double>::infinity();
   double thermal_stretch_per_K = 0.0;  // s_T = this x (bond's mean temperature change)
   double horizon = 0.0;
 
   // The continuum's elastic energy density under a uniaxial strain eps
   // along one axis, as the bonds would store it: pi c eps^2 delta^3 / 16.
-  double uniaxial_energy(double eps) const { return std::numbers::pi * micromodulus * eps * eps * std::pow(horizon, 3) / 16.0; }
+  double uniaxial_energy(double eps) const {
+    return std::numbers::pi * micromodulus * eps * eps * std::pow(horizon, 3) / 16.0;
+  }
 };
 
 inline BondLaw make_bond_law(const project::Mechanics& m, double horizon) {
@@ -43,7 +45,8 @@ inline BondLaw make_bond_law(const project::Mechanics& m, double horizon) {
   law.micromodulus = strain ? 48.0 * E / (5.0 * pi * d3) : 9.0 * E / (pi * d3);
   if (m.material.fracture_energy) {
     const double G0 = *m.material.fracture_energy;
-    law.critical_stretch = strain ? std::sqrt(5.0 * pi * G0 / (12.0 * E * horizon)) : std::sqrt(4.0 * pi * G0 / (9.0 * E * horizon));
+    law.critical_stretch = strain ? std::sqrt(5.0 * pi * G0 / (12.0 * E * horizon))
+                                  : std::sqrt(4.0 * pi * G0 / (9.0 * E * horizon));
   }
   law.thermal_stretch_per_K = (strain ? 1.0 + m.material.poisson_ratio : 1.0) * m.material.thermal_expansion;
   return law;

@@ -13,7 +13,8 @@ namespace frostwall::pd {
 
 double micro_conductivity_per_k(double horizon) { return 6.0 / (std::numbers::pi * std::pow(horizon, 3)); }
 
-particles::PairWeights build_conduction_bonds(const particles::ParticleSet<2>& P, const ConductionBondOptions& options) {
+particles::PairWeights build_conduction_bonds(const particles::ParticleSet<2>& P,
+                                              const ConductionBondOptions& options) {
   const double delta = options.horizon;
   if (!(delta > P.coarsest_spacing())) throw std::invalid_argument("pd: the horizon must be larger than the spacing");
   // A neighbour's cell reaches half a spacing beyond its centre.

@@ -28,7 +28,7 @@
 namespace frostwall::pd {
 
 struct ConductionBondOptions {
-  double horizon = 0.0;     // delta, m
+  double horizon = 0.0;  // delta, m
   bool renormalised = true;
   bool partial_volumes = true;
 };

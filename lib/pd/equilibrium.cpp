@@ -12,8 +12,8 @@ struct DirectEquilibrium::Factor {
   // particles outside groups: the map P from unknowns to displacements.
   std::vector<long> dof;
   std::size_t unknowns = 0, held = 0, groups = 0;
-  Eigen::VectorXd anchor;  // the spring each unknown has to where it was
-  bool analysed = false;   // the pattern's ordering and symbolic factor done
+  Eigen::VectorXd anchor;     // the spring each unknown has to where it was
+  bool analysed = false;      // the pattern's ordering and symbolic factor done
   std::uint64_t version = 0;  // the solid's stiffness version it factors
   Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>, Eigen::Lower> cholesky;
 
@@ -216,7 +216,8 @@ RelaxationResult DirectEquilibrium::solve(const PdSolid& solid, std::vector<doub
 }
 
 RelaxationResult DirectEquilibrium::solve_adjusting(const PdSolid& solid, std::vector<double>& u,
-                                                    const std::vector<double>& dT, const std::function<bool()>& adjust) {
+                                                    const std::vector<double>& dT,
+                                                    const std::function<bool()>& adjust) {
   RelaxationResult total;
   for (;;) {
     const RelaxationResult r = solve(solid, u, dT);

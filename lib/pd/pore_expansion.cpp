@@ -22,7 +22,8 @@ double PoreExpansion::free_strain(double phi, double saturation) const {
   return std::sqrt(1.0 + pore_excess(expansion_.volume_change, saturation, phi)) - 1.0;
 }
 
-std::vector<double> PoreExpansion::frozen_fraction(const std::vector<double>& f, const std::vector<double>& volume) const {
+std::vector<double> PoreExpansion::frozen_fraction(const std::vector<double>& f,
+                                                   const std::vector<double>& volume) const {
   return geometry::pore_frozen_fraction(pore_of_, pores_.size(), f, volume);
 }
 
@@ -74,7 +75,8 @@ void PoreExpansion::apply(PdSolid& solid, const std::vector<double>& f, const st
   if (rim_displacement()) {
     const std::vector<double> F = frozen_fraction(f, volume);
     rim_u_.resize(pores_.size());
-    for (std::size_t p = 0; p < pores_.size(); ++p) rim_u_[p] = pores_[p].radius * free_strain(F[p], pores_[p].saturation);
+    for (std::size_t p = 0; p < pores_.size(); ++p)
+      rim_u_[p] = pores_[p].radius * free_strain(F[p], pores_[p].saturation);
     // A pore is a hole until it starts to freeze, then the loading device.
     std::vector<double> ratio(pore_of_.size(), 1.0);
     for (std::size_t i = 0; i < pore_of_.size(); ++i)

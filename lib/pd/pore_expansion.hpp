@@ -46,7 +46,8 @@ class PoreExpansion {
   // until the ice has filled the air (dV phi at S = 1).
   double free_strain(double phi, double saturation = 1.0) const;
   // Each pore's frozen fraction: the volume-weighted mean of 1 - f.
-  std::vector<double> frozen_fraction(const std::vector<double>& liquid_fraction, const std::vector<double>& volume) const;
+  std::vector<double> frozen_fraction(const std::vector<double>& liquid_fraction,
+                                      const std::vector<double>& volume) const;
   // Installs the model on the solid (rim_displacement: the pore particles
   // held, one rigid group per pore).
   void prepare(PdSolid& solid);
@@ -74,8 +75,8 @@ class PoreExpansion {
   double ice_ratio_;  // E_ice / E_matrix
   std::vector<project::Pore> pores_;
   std::vector<int> pore_of_;
-  std::vector<double> shape_;                   // the held field last set, 2 per particle
-  std::vector<double> rim_u_;                   // u_a of each pore at the last apply
+  std::vector<double> shape_;  // the held field last set, 2 per particle
+  std::vector<double> rim_u_;  // u_a of each pore at the last apply
 };
 
 }  // namespace frostwall::pd

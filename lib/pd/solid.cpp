@@ -316,7 +316,8 @@ std::size_t PdSolid::cut(const Vec2& a, const Vec2& b) {
     for (std::size_t e = start_[i]; e < start_[i + 1]; ++e) {
       const Vec2 p = position_[i], q = position_[column_[e]];
       // Proper intersection of the segments p-q and a-b.
-      const double d1 = cross(b - a, p - a), d2 = cross(b - a, q - a), d3 = cross(q - p, a - p), d4 = cross(q - p, b - p);
+      const double d1 = cross(b - a, p - a), d2 = cross(b - a, q - a), d3 = cross(q - p, a - p),
+                   d4 = cross(q - p, b - p);
       if (d1 * d2 < 0.0 && d3 * d4 < 0.0 && intact_[e]) {
         intact_[e] = 0;
         broken_energy_ += break_energy(i, e);

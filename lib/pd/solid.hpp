@@ -56,12 +56,14 @@ class PdSolid {
   // The same in the form the relaxation calls many times: u and dT given
   // at every point (ghosts included: extend() fills them), so the bond loop
   // is a plain gather; no allocation.
-  void forces_extended(const std::vector<double>& u_all, const std::vector<double>& dT_all, std::vector<double>& force) const;
+  void forces_extended(const std::vector<double>& u_all, const std::vector<double>& dT_all,
+                       std::vector<double>& force) const;
   // Linear kinematics: the thermal part of the force, fixed while dT is,
   // -sum_j w s_T xi/|xi| (computed once per relaxation); then each
   // evaluation is force = thermal + sum_j (w / |xi|^3) (xi . (u_j - u_i)) xi.
   void thermal_force(const std::vector<double>& dT_all, std::vector<double>& force) const;
-  void forces_linear(const std::vector<double>& u_all, const std::vector<double>& thermal, std::vector<double>& force) const;
+  void forces_linear(const std::vector<double>& u_all, const std::vector<double>& thermal,
+                     std::vector<double>& force) const;
   std::size_t points() const { return position_.size(); }
   // u_all (2 per point) and dT_all (1 per point) from the free particles'.
   void extend(const std::vector<double>& u, std::vector<double>& u_all) const;
@@ -158,19 +160,21 @@ class PdSolid {
   template <class F>
   void for_each_bond(F&& f) const {
     for (std::size_t i = 0; i < n_; ++i)
-      for (std::size_t e = start_[i]; e < start_[i + 1]; ++e) f(i, source(column_[e]), position_[column_[e]], intact_[e] != 0);
+      for (std::size_t e = start_[i]; e < start_[i + 1]; ++e)
+        f(i, source(column_[e]), position_[column_[e]], intact_[e] != 0);
   }
 
  private:
   struct Ghost {
     std::uint32_t source = 0;  // the free particle it images or reflects
     Eigen::Matrix2d map = Eigen::Matrix2d::Identity();
-    bool held = false;         // true: displacement `held_u`; false: map * u_source
+    bool held = false;  // true: displacement `held_u`; false: map * u_source
     Vec2 held_u = Vec2::Zero();
   };
   Vec2 displacement(std::uint32_t k, const std::vector<double>& u) const;
   // s - s_T of bond e of particle i (the exact stretch).
-  double mechanical_stretch(std::size_t i, std::size_t e, const std::vector<double>& u, const std::vector<double>& dT) const {
+  double mechanical_stretch(std::size_t i, std::size_t e, const std::vector<double>& u,
+                            const std::vector<double>& dT) const {
     const std::uint32_t k = column_[e];
     const Vec2 ui(u[2 * i], u[2 * i + 1]);
     const double L = (position_[k] - position_[i] + displacement(k, u) - ui).norm();
@@ -189,24 +193,23 @@ class PdSolid {
     return law_.thermal_stretch_per_K * 0.5 * (dT[i] + dT[j]) + eigen;
   }
 
-
   BondLaw law_;
   std::size_t n_ = 0;
   std::vector<Vec2> position_;
   std::vector<Ghost> ghosts_;
   std::vector<std::size_t> start_;
-  std::vector<std::uint32_t> column_;   // point index (>= n_: ghost)
-  std::vector<double> length_;          // |xi|
-  std::vector<double> weight_;          // c G V_j share (force per unit volume per unit stretch); 0 once broken
-  std::vector<double> matrix_weight_;   // weight_ of the matrix material (set_stiffness_ratio scales it)
-  std::vector<double> eigen_;           // per point (ghosts: their source's); empty: none
-  std::vector<std::uint8_t> held_;      // per free particle; empty: none
+  std::vector<std::uint32_t> column_;  // point index (>= n_: ghost)
+  std::vector<double> length_;         // |xi|
+  std::vector<double> weight_;         // c G V_j share (force per unit volume per unit stretch); 0 once broken
+  std::vector<double> matrix_weight_;  // weight_ of the matrix material (set_stiffness_ratio scales it)
+  std::vector<double> eigen_;          // per point (ghosts: their source's); empty: none
+  std::vector<std::uint8_t> held_;     // per free particle; empty: none
   std::vector<std::vector<std::size_t>> groups_;
-  std::vector<double> xi_;              // reference bond vector x_j - x_i, 2 per bond
-  std::vector<double> stiffness3_;      // w / |xi|^3 (linear kinematics; 0 once broken)
+  std::vector<double> xi_;          // reference bond vector x_j - x_i, 2 per bond
+  std::vector<double> stiffness3_;  // w / |xi|^3 (linear kinematics; 0 once broken)
   bool linear_ = true;
-  std::vector<double> volume_share_;    // V_j share (damage)
-  std::vector<double> volume_;          // free particles'
+  std::vector<double> volume_share_;  // V_j share (damage)
+  std::vector<double> volume_;        // free particles'
   mutable std::vector<std::uint8_t> intact_;
   std::vector<double> stiffness_;
   std::uint64_t stiffness_version_ = 0;

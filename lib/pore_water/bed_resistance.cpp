@@ -37,7 +37,8 @@ double bed_gradient(const Fluid& fluid, double e, double d, double U) {
 
 double bed_gradient_per_solid(const Fluid& fluid, double e, double d, double U) {
   const double phi = blend(e), e3 = e * e * e;
-  const double ergun = 150.0 * fluid.viscosity * (1.0 - e) * U / (e3 * d * d) + 1.75 * fluid.density * std::abs(U) * U / (e3 * d);
+  const double ergun = 150.0 * fluid.viscosity * (1.0 - e) * U / (e3 * d * d) +
+                       1.75 * fluid.density * std::abs(U) * U / (e3 * d);
   double wen_yu = 0.0;
   if (U != 0.0) {
     const double Re = fluid.density * std::abs(U) * d / fluid.viscosity;

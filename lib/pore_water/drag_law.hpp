@@ -13,8 +13,8 @@ namespace frostwall::pore_water {
 using Vec3 = particles::Vec<3>;
 
 struct Fluid {
-  double density = 1000.0;   // kg/m3
-  double viscosity = 1e-3;   // dynamic, Pa s
+  double density = 1000.0;  // kg/m3
+  double viscosity = 1e-3;  // dynamic, Pa s
 };
 
 // Schiller & Naumann's drag coefficient of a sphere: 24 / Re (1 + 0.15

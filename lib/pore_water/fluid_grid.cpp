@@ -13,9 +13,9 @@
 namespace frostwall::pore_water {
 
 struct PressureSolver {
-  Eigen::ConjugateGradient<Eigen::SparseMatrix<double>, Eigen::Lower | Eigen::Upper, Eigen::IncompleteCholesky<double>> cg;
+  Eigen::ConjugateGradient<Eigen::SparseMatrix<double>, Eigen::Lower | Eigen::Upper, Eigen::IncompleteCholesky<double>>
+      cg;
 };
-
 
 using namespace grid;
 
@@ -34,8 +34,12 @@ int GridShape::cell_of(const Vec3& x) const {
 
 FluidGrid::FluidGrid(GridShape shape, std::array<FaceCondition, 6> faces, Fluid fluid, double default_diameter,
                      double min_porosity, double max_porosity)
-    : shape_(shape), faces_(faces), fluid_(fluid), default_diameter_(default_diameter),
-      min_porosity_(min_porosity), max_porosity_(max_porosity) {
+    : shape_(shape),
+      faces_(faces),
+      fluid_(fluid),
+      default_diameter_(default_diameter),
+      min_porosity_(min_porosity),
+      max_porosity_(max_porosity) {
   for (int a = 0; a < 3; ++a)
     if (shape_.cells[a] < 1 || !(shape_.high[a] > shape_.low[a]))
       throw std::invalid_argument("fluid grid: the box needs a positive size and at least one cell per axis");

@@ -59,8 +59,8 @@ struct FluidSample {
   // volume, K (drag_velocity - v), with K and K u_f interpolated from the
   // cells by the weights the grains were deposited with: the grains of a
   // uniform bed then take exactly the momentum its water loses.
-  double drag_coefficient = 0.0;             // K, kg/(m3 s)
-  Vec3 drag_velocity = Vec3::Zero();         // m/s
+  double drag_coefficient = 0.0;      // K, kg/(m3 s)
+  Vec3 drag_velocity = Vec3::Zero();  // m/s
 };
 
 struct SolveReport {
@@ -136,7 +136,7 @@ class FluidGrid {
   Fluid fluid_;
   double default_diameter_, min_porosity_, max_porosity_;
   double beta_floor_;
-  std::vector<double> drag_coefficient_;  // K per cell, after a solve
+  std::vector<double> drag_coefficient_;    // K per cell, after a solve
   std::unique_ptr<PressureSolver> solver_;  // the matrix's pattern never changes: ordered once
   std::vector<double> deposits_;
   std::vector<double> raw_porosity_, porosity_, diameter_, beta_, pressure_;

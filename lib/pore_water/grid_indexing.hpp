@@ -38,5 +38,4 @@ inline Vec3 face_mean(const GridShape& s, const std::array<std::vector<double>, 
   return mean;
 }
 
-
 }  // namespace frostwall::pore_water::grid

@@ -1,6 +1,5 @@
 #include "post/closure.hpp"
 
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -44,7 +43,8 @@ ClosureDetector::ClosureDetector(const std::vector<particles::Vec<2>>& position,
       where.push_back(image_position[k]);
       source.push_back(image_source[k]);
     }
-  for (std::size_t k = 0; k < where.size(); ++k) points.emplace_back(geometry::Kernel2::Point_2(where[k][0], where[k][1]), k);
+  for (std::size_t k = 0; k < where.size(); ++k)
+    points.emplace_back(geometry::Kernel2::Point_2(where[k][0], where[k][1]), k);
   const geometry::IndexedDelaunay dt(points.begin(), points.end());
   std::vector<std::vector<std::uint32_t>> near(n_free);
   for (auto e = dt.finite_edges_begin(); e != dt.finite_edges_end(); ++e) {
@@ -86,9 +86,9 @@ ClosureDetector graded_detector(const particles::ParticleSet<2>& particles, doub
 }  // namespace
 
 ClosureDetector::ClosureDetector(const particles::ParticleSet<2>& particles, double far_field_radius)
-    : ClosureDetector(particles.graded()
-                          ? graded_detector(particles, far_field_radius)
-                          : ClosureDetector(particles.position, particles.n_free, particles.spacing, far_field_radius)) {}
+    : ClosureDetector(particles.graded() ? graded_detector(particles, far_field_radius)
+                                         : ClosureDetector(particles.position, particles.n_free, particles.spacing,
+                                                           far_field_radius)) {}
 
 double ClosureDetector::bottleneck(const std::vector<double>& f) const {
   // Kruskal-like: add particles from the most liquid down, joining linked

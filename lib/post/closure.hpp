@@ -74,7 +74,7 @@ class ClosureDetector {
   std::vector<std::size_t> start_;
   std::vector<std::uint32_t> link_;
   std::vector<char> far_field_;  // 1 for particles next to the far-field circle
-  std::uint32_t axis_ = 0;      // the free particle nearest the shaft axis
+  std::uint32_t axis_ = 0;       // the free particle nearest the shaft axis
 };
 
 // Follows the bottleneck of g = H / H_latent in time and interpolates the

@@ -1,6 +1,5 @@
 #include "post/field_sampler.hpp"
 
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -15,19 +14,19 @@ namespace frostwall::post {
 
 struct FieldSampler::Cloud {
   const sph::Kernel* kernel = nullptr;
-  double h_max = 0.0;                  // the largest smoothing length
-  std::vector<double> h;               // per point (of its source)
+  double h_max = 0.0;     // the largest smoothing length
+  std::vector<double> h;  // per point (of its source)
   std::size_t n_particles = 0;
-  std::vector<Vec2> points;            // real particles, then images
-  std::vector<std::uint32_t> source;   // particle a point carries the value of
-  std::vector<double> volume;          // V of the source
+  std::vector<Vec2> points;           // real particles, then images
+  std::vector<std::uint32_t> source;  // particle a point carries the value of
+  std::vector<double> volume;         // V of the source
   // Points grouped by smoothing length (each level within a factor 2), one
   // cell list per level sized to its supports: a query near fine particles
   // then scans cells of their size, not of the far field's.
   struct Level {
-    double reach = 0.0;                 // largest support in the level
+    double reach = 0.0;  // largest support in the level
     std::vector<Vec2> points;
-    std::vector<std::uint32_t> index;   // into the cloud's points
+    std::vector<std::uint32_t> index;  // into the cloud's points
     std::unique_ptr<particles::CellList<2>> cells;
   };
   std::vector<Level> levels;

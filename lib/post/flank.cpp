@@ -9,7 +9,8 @@ namespace frostwall::post {
 namespace {
 
 // Walking from the peak by `step` (+1 or -1): where f first falls through `level`.
-std::optional<double> crossing(const std::vector<double>& x, const std::vector<double>& f, std::size_t peak, int step, double level) {
+std::optional<double> crossing(const std::vector<double>& x, const std::vector<double>& f, std::size_t peak, int step,
+                               double level) {
   for (long i = static_cast<long>(peak); i + step >= 0 && i + step < static_cast<long>(f.size()); i += step) {
     const double a = f[i], b = f[i + step];
     if (b <= level) return x[i] + (x[i + step] - x[i]) * (a - level) / (a - b);
@@ -17,8 +18,8 @@ std::optional<double> crossing(const std::vector<double>& x, const std::vector<d
   return std::nullopt;
 }
 
-std::optional<Flank> flank(const std::vector<double>& x, const std::vector<double>& f, std::size_t peak, int step, double low,
-                           double high) {
+std::optional<Flank> flank(const std::vector<double>& x, const std::vector<double>& f, std::size_t peak, int step,
+                           double low, double high) {
   const double p = f[peak];
   const auto x90 = crossing(x, f, peak, step, high * p);
   const auto x10 = crossing(x, f, peak, step, low * p);

@@ -20,8 +20,8 @@ struct Flank {
 };
 
 struct Bump {
-  double peak = 0.0, peak_x = 0.0;  // the height over the base, and where
-  double base = 0.0;                // the profile's lowest value
+  double peak = 0.0, peak_x = 0.0;           // the height over the base, and where
+  double base = 0.0;                         // the profile's lowest value
   std::optional<Flank> low_side, high_side;  // towards smaller and larger x; none where the profile ends first
   // Both feet apart (only with both flanks), and the mean slope of those found.
   std::optional<double> width() const;

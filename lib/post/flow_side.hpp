@@ -14,7 +14,8 @@ namespace frostwall::post {
 enum class FlowSide { upstream, flank, downstream };
 
 inline FlowSide flow_side(const particles::Vec<2>& direction, const std::array<double, 2>& q) {
-  const double along = (direction[0] * q[0] + direction[1] * q[1]) / (direction.norm() * std::hypot(q[0], q[1]) + 1e-300);
+  const double along = (direction[0] * q[0] + direction[1] * q[1]) /
+                       (direction.norm() * std::hypot(q[0], q[1]) + 1e-300);
   return along < -0.5 ? FlowSide::upstream : (along > 0.5 ? FlowSide::downstream : FlowSide::flank);
 }
 

@@ -64,7 +64,8 @@ namespace {
 
 // Does the segment p -> q cross a -> b (p on the left of a -> b, q not)?
 // The sign of the crossing: +1 left to right, -1 right to left, 0 none.
-int crossing(const particles::Vec<2>& a, const particles::Vec<2>& b, const particles::Vec<2>& p, const particles::Vec<2>& q) {
+int crossing(const particles::Vec<2>& a, const particles::Vec<2>& b, const particles::Vec<2>& p,
+             const particles::Vec<2>& q) {
   auto side = [](const particles::Vec<2>& u, const particles::Vec<2>& v, const particles::Vec<2>& w) {
     return (v[0] - u[0]) * (w[1] - u[1]) - (v[1] - u[1]) * (w[0] - u[0]);
   };

@@ -21,9 +21,9 @@
 namespace frostwall::post {
 
 struct Gap {
-  std::string between;               // "outer 3 - outer 4"
-  particles::Vec<2> middle;          // the segment's midpoint (m)
-  particles::Vec<2> from, to;        // the pipe centres
+  std::string between;         // "outer 3 - outer 4"
+  particles::Vec<2> middle;    // the segment's midpoint (m)
+  particles::Vec<2> from, to;  // the pipe centres
   // The part of the segment inside the simulated section, and how many
   // such parts the whole gap has (2 when a mirror line cuts it).
   particles::Vec<2> inside_from, inside_to;

@@ -33,15 +33,13 @@ void append(std::vector<particles::Vec<2>>& out, const particles::Vec<2>& x) {
 
 std::vector<Polyline> isolines(const std::vector<particles::Vec<2>>& points, const std::vector<double>& values,
                                double level, double max_edge) {
-  if (values.size() != points.size())
-    throw std::invalid_argument("isolines: values and points differ in size");
+  if (values.size() != points.size()) throw std::invalid_argument("isolines: values and points differ in size");
   return IsolineMesh(points, max_edge).isolines(values, level);
 }
 
 std::vector<Polyline> isolines(const std::vector<particles::Vec<2>>& points, const std::vector<double>& values,
                                double level, const std::vector<double>& max_edge_at) {
-  if (values.size() != points.size())
-    throw std::invalid_argument("isolines: values and points differ in size");
+  if (values.size() != points.size()) throw std::invalid_argument("isolines: values and points differ in size");
   return IsolineMesh(points, max_edge_at).isolines(values, level);
 }
 
@@ -56,8 +54,7 @@ IsolineMesh::IsolineMesh(std::vector<particles::Vec<2>> points, const std::vecto
 
 std::vector<Polyline> IsolineMesh::isolines(const std::vector<double>& values, double level) const {
   const auto& points = points_;
-  if (values.size() != points.size())
-    throw std::invalid_argument("isolines: values and points differ in size");
+  if (values.size() != points.size()) throw std::invalid_argument("isolines: values and points differ in size");
   if (!std::isfinite(level)) throw std::invalid_argument("isolines: level is not finite");
   for (double v : values)
     if (!std::isfinite(v)) throw std::invalid_argument("isolines: non-finite point or value");

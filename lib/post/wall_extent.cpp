@@ -94,7 +94,8 @@ FrozenStretch stretch_at_or_below(const std::vector<double>& r, const std::vecto
                                   const std::vector<double>& ring_radii) {
   FrozenStretch longest;
   for (double ring : ring_radii)
-    if (const auto s = stretch_at_or_below(r, values, level, ring); s.frozen() && (!longest.frozen() || s.thickness > longest.thickness))
+    if (const auto s = stretch_at_or_below(r, values, level, ring);
+        s.frozen() && (!longest.frozen() || s.thickness > longest.thickness))
       longest = s;
   return longest;
 }
@@ -176,11 +177,16 @@ WallExtents wall_extents(const RayFan& fan, const std::vector<double>& values_on
   return w;
 }
 
-WallGauge::WallGauge(const FieldSampler& sampler, RayFan fan, std::vector<double> ring_radii, std::optional<double> isotherm)
-    : fan_(fan), ring_radii_(std::move(ring_radii)), radii_(fan.radii()), fan_probe_(sampler, fan.points()), isotherm_(isotherm) {}
+WallGauge::WallGauge(const FieldSampler& sampler, RayFan fan, std::vector<double> ring_radii,
+                     std::optional<double> isotherm)
+    : fan_(fan),
+      ring_radii_(std::move(ring_radii)),
+      radii_(fan.radii()),
+      fan_probe_(sampler, fan.points()),
+      isotherm_(isotherm) {}
 
 std::vector<double> WallGauge::read_outward(const std::vector<double>& field, double level,
-                                           std::vector<std::pair<std::size_t, std::size_t>>& read) const {
+                                            std::vector<std::pair<std::size_t, std::size_t>>& read) const {
   // A ray's stretches at or below the level need their samples only from
   // each ring outward, on either side, to the first one above it: those are
   // read, the rest stay NaN (skipped as "no particle within reach"). The
@@ -228,7 +234,8 @@ WallReading WallGauge::measure(const std::vector<double>& liquid_fraction,
     const std::vector<double> T_fan = read_outward(temperature, *isotherm_, read);
     reading.isotherm = wall_extents(fan_, T_fan, ring_radii_, *isotherm_);
     const std::vector<double> ray = fan_.on_ray(T_fan, reading.isotherm.thinnest_ray);
-    reading.isotherm_mean_temperature = mean_over_frozen(radii_, ray, ray, reading.isotherm.rays[std::size_t(reading.isotherm.thinnest_ray)]);
+    reading.isotherm_mean_temperature =
+        mean_over_frozen(radii_, ray, ray, reading.isotherm.rays[std::size_t(reading.isotherm.thinnest_ray)]);
   }
   return reading;
 }

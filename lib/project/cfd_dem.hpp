@@ -24,8 +24,8 @@ struct GrainSettings {
   double density = 2650.0;                        // kg/m3
   double youngs_modulus = 5e7;                    // Pa (Hertz contact)
   double poisson_ratio = 0.3;
-  double restitution = 0.5;       // normal coefficient of restitution (Tsuji damping)
-  double friction = 0.5;          // sliding, Coulomb
+  double restitution = 0.5;  // normal coefficient of restitution (Tsuji damping)
+  double friction = 0.5;     // sliding, Coulomb
   // Sliding friction while settling (default: friction): a low value packs
   // the grains denser, the usual way DEM prepares a dense sand.
   std::optional<double> settle_friction;
@@ -45,7 +45,7 @@ struct GrainSettings {
 };
 
 struct CfdDemBox {
-  Point3 low{}, high{};  // m
+  Point3 low{}, high{};                               // m
   std::array<bool, 3> periodic{false, false, false};  // for the grains; the fluid sees walls
 };
 
@@ -68,8 +68,8 @@ struct Heap {
 };
 
 struct FluidSettings {
-  double density = 1000.0;    // kg/m3
-  double viscosity = 1e-3;    // dynamic, Pa s
+  double density = 1000.0;     // kg/m3
+  double viscosity = 1e-3;     // dynamic, Pa s
   std::array<int, 3> cells{};  // grid cells per axis (from cell_size when given so)
   bool cells_given = false;    // "cells" was written (else "cell_size"): what messages name
   double min_porosity = 0.3;   // voidage clamp of the coarse cells
@@ -84,7 +84,7 @@ struct FlowSettings {
   std::vector<std::pair<double, double>> darcy_velocity;  // (s, m/s); empty with inflow_pressure
   std::optional<double> inflow_pressure;                  // Pa
   BoxFace outflow = BoxFace::z_max;
-  double outflow_pressure = 0.0;                          // Pa
+  double outflow_pressure = 0.0;  // Pa
   // Grains may leave through the outflow face (washed out: no wall there);
   // else a screen holds them.
   bool open_to_grains = false;

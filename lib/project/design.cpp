@@ -64,11 +64,12 @@ std::string table_problem(const std::vector<std::pair<double, double>>& points) 
   auto sorted = points;
   std::sort(sorted.begin(), sorted.end());
   for (std::size_t k = 0; k < sorted.size(); ++k) {
-    if (sorted[k].second <= 0.0) return fmt::format("strength must be positive, got {} MPa at {} C", sorted[k].second, sorted[k].first);
+    if (sorted[k].second <= 0.0)
+      return fmt::format("strength must be positive, got {} MPa at {} C", sorted[k].second, sorted[k].first);
     if (k > 0 && sorted[k].first == sorted[k - 1].first) return fmt::format("two strengths at {} C", sorted[k].first);
     if (k > 0 && sorted[k].second > sorted[k - 1].second)
-      return fmt::format("strength must not fall as the soil gets colder: {} MPa at {} C, {} MPa at {} C", sorted[k - 1].second,
-                         sorted[k - 1].first, sorted[k].second, sorted[k].first);
+      return fmt::format("strength must not fall as the soil gets colder: {} MPa at {} C, {} MPa at {} C",
+                         sorted[k - 1].second, sorted[k - 1].first, sorted[k].second, sorted[k].first);
   }
   return {};
 }

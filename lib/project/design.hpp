@@ -56,12 +56,12 @@ std::string table_problem(const std::vector<std::pair<double, double>>& points);
 struct Design {
   std::optional<double> required_thickness;    // m
   std::optional<double> max_mean_temperature;  // degC
-  std::optional<StrengthLaw> strength;  // uniaxial compressive, MPa
+  std::optional<StrengthLaw> strength;         // uniaxial compressive, MPa
   double allowable_factor = 0.5;
-  std::optional<double> depth;                 // m
-  std::optional<double> pressure;              // lateral, MPa, at the depth
+  std::optional<double> depth;               // m
+  std::optional<double> pressure;            // lateral, MPa, at the depth
   WallFormula formula = WallFormula::domke;  // the governing one
-  std::optional<double> friction_angle;        // degrees: Mohr-Coulomb's plastic limit
+  std::optional<double> friction_angle;      // degrees: Mohr-Coulomb's plastic limit
   // The design isotherm (degC): the wall is also measured on the part of
   // each ray colder than this, and the check then uses that wall.
   std::optional<double> isotherm;

@@ -8,7 +8,6 @@
 #include <array>
 #include <optional>
 
-
 namespace frostwall::project {
 
 // How ice cuts the permeability, as given (groundwater/permeability_law.hpp
@@ -52,8 +51,8 @@ struct Groundwater {
   double resolve_tolerance = 3e-4;
   Advection advection = Advection::coupled;
 
-  double speed() const;            // |q|, m/s
-  double permeability_m2() const;  // k, m^2 (from K when K was given)
+  double speed() const;                 // |q|, m/s
+  double permeability_m2() const;       // k, m^2 (from K when K was given)
   double conductivity_m_per_s() const;  // K, m/s (from k when k was given)
 };
 

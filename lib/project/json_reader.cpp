@@ -38,7 +38,8 @@ std::string suggestion(std::string_view key, std::initializer_list<std::string_v
 // out of range.
 class PathWalker {
  public:
-  PathWalker(std::string source, std::vector<std::string>& problems) : source_(std::move(source)), problems_(&problems) {}
+  PathWalker(std::string source, std::vector<std::string>& problems)
+      : source_(std::move(source)), problems_(&problems) {}
   bool null() { return value(); }
   bool boolean(bool) { return value(); }
   bool number_integer(Json::number_integer_t) { return value(); }
@@ -53,7 +54,8 @@ class PathWalker {
   bool key(std::string& k) {
     Frame& f = frames_.back();
     f.key = k;
-    if (!f.keys.insert(k).second) problems_->push_back(path() + ": given twice in one object (only one value may stand)");
+    if (!f.keys.insert(k).second)
+      problems_->push_back(path() + ": given twice in one object (only one value may stand)");
     return true;
   }
   bool parse_error(std::size_t, const std::string& token, const nlohmann::detail::exception& e) {
@@ -74,8 +76,8 @@ class PathWalker {
  private:
   struct Frame {
     bool object = true;
-    std::string key;           // the key being read (objects)
-    std::size_t index = 0;     // the element being read (arrays)
+    std::string key;        // the key being read (objects)
+    std::size_t index = 0;  // the element being read (arrays)
     std::set<std::string> keys;
   };
   bool value() {
@@ -104,7 +106,8 @@ class PathWalker {
 
 }  // namespace
 
-std::optional<Json> parse_document(const std::string& text, const std::string& source, std::vector<std::string>& problems) {
+std::optional<Json> parse_document(const std::string& text, const std::string& source,
+                                   std::vector<std::string>& problems) {
   const std::size_t before = problems.size();
   PathWalker walker(source, problems);
   Json::sax_parse(text, &walker);

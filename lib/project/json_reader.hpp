@@ -52,8 +52,7 @@ class Node {
 
   // A string naming one of `options`; reports "unknown <what> 'x' (expected ...)".
   template <class E>
-  std::optional<E> choice(std::string_view what,
-                          std::initializer_list<std::pair<std::string_view, E>> options) const {
+  std::optional<E> choice(std::string_view what, std::initializer_list<std::pair<std::string_view, E>> options) const {
     const auto name = string(true);
     if (!name) return std::nullopt;
     std::string expected;
@@ -83,6 +82,7 @@ namespace frostwall::project::detail {
 // own message (prefixed "<source>: not valid JSON: "), a number out of the
 // range of a double named by its path, or each key given twice in one
 // object named by its path (the parser would silently keep the last).
-std::optional<Json> parse_document(const std::string& text, const std::string& source, std::vector<std::string>& problems);
+std::optional<Json> parse_document(const std::string& text, const std::string& source,
+                                   std::vector<std::string>& problems);
 
 }  // namespace frostwall::project::detail

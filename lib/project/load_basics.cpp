@@ -58,10 +58,9 @@ TemperatureSchedule detail::read_schedule(const Node& n) {
     const double day = p[0].get<double>();
     const double seconds = day * seconds_per_day;
     if (!schedule.points.empty() && seconds <= schedule.points.back().first)
-      point.problem(fmt::format("days must be ascending, got {} after {}", day,
-                                schedule.points.back().first / seconds_per_day));
-    else
-      schedule.points.emplace_back(seconds, p[1].get<double>());
+      point.problem(
+          fmt::format("days must be ascending, got {} after {}", day, schedule.points.back().first / seconds_per_day));
+    else schedule.points.emplace_back(seconds, p[1].get<double>());
   }
   if (schedule.points.empty()) schedule = TemperatureSchedule::fixed(0.0);
   return schedule;
@@ -96,9 +95,9 @@ Soil detail::read_soil(const Node& n, std::vector<std::string>& warnings) {
   soil.freezing_point = n["freezing_point"].number().value_or(0.0);
   soil.freezing_range = n["freezing_range"].non_negative().value_or(0.0);
   if (soil.latent_heat > pure_water_latent_heat)
-    warnings.push_back(fmt::format(
-        "{}: {} J/kg is more than pure water's 334 kJ/kg; probably a slipped decimal point ({}?)",
-        n["latent_heat"].path(), soil.latent_heat, soil.latent_heat / 10));
+    warnings.push_back(
+        fmt::format("{}: {} J/kg is more than pure water's 334 kJ/kg; probably a slipped decimal point ({}?)",
+                    n["latent_heat"].path(), soil.latent_heat, soil.latent_heat / 10));
   return soil;
 }
 
@@ -111,8 +110,8 @@ std::optional<std::string> rectangle_spacing_problem(const Rectangle& r, double 
   const double rows = long_binds ? rows_along_long : rows_across_narrow, side = long_binds ? longer : narrow;
   const char* key = (long_binds == wide) ? "geometry.width" : "geometry.height";
   if (spacing <= side / rows * (1 + 1e-9)) return std::nullopt;
-  return fmt::format("{} m leaves fewer than {} particle rows across {} ({} m); use {} m or less", spacing, rows, key, side,
-                     side / rows);
+  return fmt::format("{} m leaves fewer than {} particle rows across {} ({} m); use {} m or less", spacing, rows, key,
+                     side, side / rows);
 }
 
 std::optional<std::string> shaft_spacing_problem(const ShaftSection& s, double spacing) {

@@ -63,8 +63,12 @@ bool inside(const Point3& p, const Point3& low, const Point3& high) {
 }
 
 std::optional<BoxFace> read_face(const Node& n) {
-  return n.choice<BoxFace>("face", {{"x_min", BoxFace::x_min}, {"x_max", BoxFace::x_max}, {"y_min", BoxFace::y_min},
-                                    {"y_max", BoxFace::y_max}, {"z_min", BoxFace::z_min}, {"z_max", BoxFace::z_max}});
+  return n.choice<BoxFace>("face", {{"x_min", BoxFace::x_min},
+                                    {"x_max", BoxFace::x_max},
+                                    {"y_min", BoxFace::y_min},
+                                    {"y_max", BoxFace::y_max},
+                                    {"z_min", BoxFace::z_min},
+                                    {"z_max", BoxFace::z_max}});
 }
 
 CfdDemBox read_box(const Node& n) {
@@ -75,7 +79,9 @@ CfdDemBox read_box(const Node& n) {
     box.low = *low;
     box.high = *high;
     for (int k = 0; k < 3; ++k)
-      if (!(high->at(k) > low->at(k))) n["high"].problem(fmt::format("must be above box.low on every axis, got {} <= {} on axis {}", high->at(k), low->at(k), "xyz"[k]));
+      if (!(high->at(k) > low->at(k)))
+        n["high"].problem(fmt::format("must be above box.low on every axis, got {} <= {} on axis {}", high->at(k),
+                                      low->at(k), "xyz"[k]));
   }
   if (const Node p = n["periodic"]; p.present()) {
     const Json& j = p.json();
@@ -100,8 +106,7 @@ GrainSettings read_grains(const Node& n, const CfdDemBox& box) {
     if (!j.is_array() || j.size() != 2 || !j[0].is_number() || !j[1].is_number() || !(j[0].get<double>() > 0) ||
         j[1].get<double>() < j[0].get<double>())
       range.problem("must be [min, max] in metres with 0 < min <= max, got " + range.shown());
-    else
-      g.diameter_min = j[0].get<double>(), g.diameter_max = j[1].get<double>();
+    else g.diameter_min = j[0].get<double>(), g.diameter_max = j[1].get<double>();
   }
   g.density = n["density"].required().positive().value_or(g.density);
   g.youngs_modulus = n["youngs_modulus"].positive().value_or(g.youngs_modulus);
@@ -117,7 +122,8 @@ GrainSettings read_grains(const Node& n, const CfdDemBox& box) {
   g.settle_friction = n["settle_friction"].non_negative();
   g.rolling_friction = n["rolling_friction"].non_negative().value_or(g.rolling_friction);
   const Node count = n["count"], porosity = n["porosity"];
-  if (count.present() == porosity.present()) count.problem(R"(give either "count" (grains) or "porosity" (of the fill region))");
+  if (count.present() == porosity.present())
+    count.problem(R"(give either "count" (grains) or "porosity" (of the fill region))");
   if (const auto c = count.count()) g.count = *c;
   if (const auto e = porosity.number()) {
     // Below 0.26 no packing of spheres exists; 1 has no grains.
@@ -143,7 +149,8 @@ GrainSettings read_grains(const Node& n, const CfdDemBox& box) {
     }
   }
   if (const auto s = n["seed"].number()) {
-    if (*s < 0 || *s != std::floor(*s) || *s > 9e15) n["seed"].problem(fmt::format("must be a whole number >= 0, got {}", *s));
+    if (*s < 0 || *s != std::floor(*s) || *s > 9e15)
+      n["seed"].problem(fmt::format("must be a whole number >= 0, got {}", *s));
     else g.seed = static_cast<unsigned long long>(*s);
   }
   g.settle_time = n["settle_time"].non_negative().value_or(0.0);
@@ -151,7 +158,8 @@ GrainSettings read_grains(const Node& n, const CfdDemBox& box) {
   if (g.diameter_max > 0)
     for (int k = 0; k < 3; ++k)
       if (g.fill_high[k] - g.fill_low[k] < g.diameter_max)
-        n["diameter"].problem(fmt::format("the largest grain ({} m) does not fit across the fill region along {}", g.diameter_max, "xyz"[k]));
+        n["diameter"].problem(fmt::format("the largest grain ({} m) does not fit across the fill region along {}",
+                                          g.diameter_max, "xyz"[k]));
   return g;
 }
 
@@ -165,22 +173,28 @@ FluidSettings read_fluid(const Node& n, const CfdDemBox& box) {
   if (const auto h = size.positive()) {
     for (int k = 0; k < 3; ++k)
       if (const double side = box.high[k] - box.low[k]; side > 0 && *h > side * (1 + 1e-9)) {
-        size.problem(fmt::format("{} m is larger than the box along {} ({} m); use at most {} m", *h, "xyz"[k], side,
-                                 std::min({box.high[0] - box.low[0], box.high[1] - box.low[1], box.high[2] - box.low[2]})));
+        size.problem(
+            fmt::format("{} m is larger than the box along {} ({} m); use at most {} m", *h, "xyz"[k], side,
+                        std::min({box.high[0] - box.low[0], box.high[1] - box.low[1], box.high[2] - box.low[2]})));
         return f;
       }
     for (int k = 0; k < 3; ++k) {
       const double n_k = (box.high[k] - box.low[k]) / *h;
-      if (n_k > 1e6) { size.problem(fmt::format("{} m gives more than a million cells along {}", *h, "xyz"[k])); return f; }
+      if (n_k > 1e6) {
+        size.problem(fmt::format("{} m gives more than a million cells along {}", *h, "xyz"[k]));
+        return f;
+      }
       f.cells[k] = std::max(1, static_cast<int>(std::lround(n_k)));
     }
   }
   if (cells.present()) {
     const Json& j = cells.json();
     bool ok = j.is_array() && j.size() == 3;
-    for (std::size_t k = 0; ok && k < 3; ++k) ok = j[k].is_number_integer() && j[k].get<long>() >= 1 && j[k].get<long>() <= 1000000;
+    for (std::size_t k = 0; ok && k < 3; ++k)
+      ok = j[k].is_number_integer() && j[k].get<long>() >= 1 && j[k].get<long>() <= 1000000;
     if (!ok) cells.problem("must be [nx, ny, nz], whole numbers from 1 to 1e6, got " + cells.shown());
-    else for (int k = 0; k < 3; ++k) f.cells[k] = j[k].get<int>();
+    else
+      for (int k = 0; k < 3; ++k) f.cells[k] = j[k].get<int>();
     f.cells_given = true;
   }
   if (const auto e = n["min_porosity"].number()) {
@@ -192,19 +206,22 @@ FluidSettings read_fluid(const Node& n, const CfdDemBox& box) {
 
 FlowSettings read_flow(const Node& n) {
   FlowSettings flow;
-  if (!n.object({"inflow", "darcy_velocity", "inflow_pressure", "outflow", "outflow_pressure", "open_to_grains"})) return flow;
+  if (!n.object({"inflow", "darcy_velocity", "inflow_pressure", "outflow", "outflow_pressure", "open_to_grains"}))
+    return flow;
   flow.open_to_grains = n["open_to_grains"].boolean().value_or(false);
   flow.inflow = read_face(n["inflow"].required()).value_or(flow.inflow);
   flow.outflow = read_face(n["outflow"].required()).value_or(flow.outflow);
   if (n["inflow"].present() && n["outflow"].present() && flow.inflow == flow.outflow)
     n["outflow"].problem("must be another face than flow.inflow");
   const Node u = n["darcy_velocity"], p = n["inflow_pressure"];
-  if (u.present() == p.present()) u.problem(R"(give either "darcy_velocity" (m/s, or [[s, m/s], ...]) or "inflow_pressure" (Pa))");
+  if (u.present() == p.present())
+    u.problem(R"(give either "darcy_velocity" (m/s, or [[s, m/s], ...]) or "inflow_pressure" (Pa))");
   flow.inflow_pressure = p.number();
   flow.outflow_pressure = n["outflow_pressure"].number().value_or(0.0);
   if (u.present()) {
     if (u.json().is_number()) flow.darcy_velocity = {{0.0, u.json().get<double>()}};
-    else if (!u.json().is_array() || u.json().empty()) u.problem("must be a number (m/s) or a [[s, m/s], ...] schedule, got " + u.shown());
+    else if (!u.json().is_array() || u.json().empty())
+      u.problem("must be a number (m/s) or a [[s, m/s], ...] schedule, got " + u.shown());
     else
       for (std::size_t i = 0; i < u.json().size(); ++i) {
         const Json& q = u.json()[i];
@@ -230,10 +247,11 @@ std::vector<std::string> read_forces(const Node& n) {
   std::set<std::string> seen;
   int drags = 0;
   for (std::size_t i = 0; i < size.value_or(0); ++i) {
-    const auto name = n[i].choice<std::string>(
-        "fluid force", {{"difelice_drag", "difelice_drag"}, {"gidaspow_drag", "gidaspow_drag"},
-                        {"schiller_naumann_drag", "schiller_naumann_drag"},
-                        {"pressure_gradient", "pressure_gradient"}, {"buoyancy", "buoyancy"}});
+    const auto name = n[i].choice<std::string>("fluid force", {{"difelice_drag", "difelice_drag"},
+                                                               {"gidaspow_drag", "gidaspow_drag"},
+                                                               {"schiller_naumann_drag", "schiller_naumann_drag"},
+                                                               {"pressure_gradient", "pressure_gradient"},
+                                                               {"buoyancy", "buoyancy"}});
     if (!name) continue;
     if (!seen.insert(*name).second) n[i].problem("'" + *name + "' is listed twice");
     if (name->ends_with("_drag") && ++drags > 1) n[i].problem("only one drag law at a time");
@@ -257,14 +275,17 @@ bool positive_number(const Node& n) { return n.present() && n.json().is_number()
 void check_cfd_dem_limits(const Node& root, const CfdDem& c) {
   const Node grains = root["grains"], density = grains["density"];
   if (positive_number(density) && positive_number(root["fluid"]["density"]) && !(c.grains.density > c.fluid.density))
-    density.problem(fmt::format("{} kg/m3 is not above fluid.density ({} kg/m3): the grains would not settle", c.grains.density,
-                                c.fluid.density));
-  if (const Node cav = root["cavity"]; c.cavity && c.cavity->radius > 0 && inside(c.cavity->centre, c.box.low, c.box.high))
+    density.problem(fmt::format("{} kg/m3 is not above fluid.density ({} kg/m3): the grains would not settle",
+                                c.grains.density, c.fluid.density));
+  if (const Node cav = root["cavity"];
+      c.cavity && c.cavity->radius > 0 && inside(c.cavity->centre, c.box.low, c.box.high))
     for (int k = 0; k < 3; ++k)
-      if (c.cavity->centre[k] - c.cavity->radius < c.box.low[k] || c.cavity->centre[k] + c.cavity->radius > c.box.high[k]) {
+      if (c.cavity->centre[k] - c.cavity->radius < c.box.low[k] ||
+          c.cavity->centre[k] + c.cavity->radius > c.box.high[k]) {
         const auto& x = c.cavity->centre;
-        cav["radius"].problem(fmt::format("the cavity ({} m round ({}, {}, {})) does not fit in the box ({} to {} m along {})",
-                                          c.cavity->radius, x[0], x[1], x[2], c.box.low[k], c.box.high[k], "xyz"[k]));
+        cav["radius"].problem(
+            fmt::format("the cavity ({} m round ({}, {}, {})) does not fit in the box ({} to {} m along {})",
+                        c.cavity->radius, x[0], x[1], x[2], c.box.low[k], c.box.high[k], "xyz"[k]));
         break;
       }
   if (!(c.grains.diameter_min > 0) || !positive_number(density)) return;
@@ -275,8 +296,8 @@ void check_cfd_dem_limits(const Node& root, const CfdDem& c) {
         *dt, max_rayleigh_fraction, rayleigh, two_digits(max_rayleigh_fraction * rayleigh, false)));
   if (const auto bin = c.neighbour.bin_size; bin && *bin < min_bin_fraction * c.grains.diameter_min)
     root["neighbour"]["bin_size"].problem(fmt::format(
-        "{:.3g} m is less than {} of the smallest grain's diameter ({} m): far too many bins; use {:.2g} m or more", *bin,
-        min_bin_fraction, c.grains.diameter_min, two_digits(min_bin_fraction * c.grains.diameter_min, true)));
+        "{:.3g} m is less than {} of the smallest grain's diameter ({} m): far too many bins; use {:.2g} m or more",
+        *bin, min_bin_fraction, c.grains.diameter_min, two_digits(min_bin_fraction * c.grains.diameter_min, true)));
 }
 
 }  // namespace
@@ -303,17 +324,21 @@ void read_cfd_dem(const Node& root, Project& project) {
     if (const auto v = read_point3(g)) c.gravity = *v;
   c.forces = read_forces(root["forces"]);
   if (const Node heap = root["heap"]; heap.object({"axis", "lift_speed"})) {
-    Heap h{{0.5 * (c.grains.fill_low[0] + c.grains.fill_high[0]), 0.5 * (c.grains.fill_low[1] + c.grains.fill_high[1])}};
+    Heap h{
+        {0.5 * (c.grains.fill_low[0] + c.grains.fill_high[0]), 0.5 * (c.grains.fill_low[1] + c.grains.fill_high[1])}};
     if (const Node axis = heap["axis"]; axis.present()) {
       const auto& j = axis.json();
       if (!j.is_array() || j.size() != 2 || !j[0].is_number() || !j[1].is_number()) axis.problem("must be [x, y] in m");
       else h.axis = {j[0].get<double>(), j[1].get<double>()};
     }
-    if (!(h.axis[0] > c.box.low[0] && h.axis[0] < c.box.high[0] && h.axis[1] > c.box.low[1] && h.axis[1] < c.box.high[1]))
+    if (!(h.axis[0] > c.box.low[0] && h.axis[0] < c.box.high[0] && h.axis[1] > c.box.low[1] &&
+          h.axis[1] < c.box.high[1]))
       (heap["axis"].present() ? heap["axis"] : heap).problem("must lie inside the box (x and y)");
     h.lift_speed = heap["lift_speed"].positive().value_or(h.lift_speed);
-    if (c.grains.settle_time <= 0.0) root["grains"]["settle_time"].problem("a heap settles in its container first: give a settle time");
-    if (!(c.gravity[2] < 0.0 && c.gravity[0] == 0.0 && c.gravity[1] == 0.0)) heap.problem("a heap needs gravity along -z");
+    if (c.grains.settle_time <= 0.0)
+      root["grains"]["settle_time"].problem("a heap settles in its container first: give a settle time");
+    if (!(c.gravity[2] < 0.0 && c.gravity[0] == 0.0 && c.gravity[1] == 0.0))
+      heap.problem("a heap needs gravity along -z");
     c.heap = h;
   }
   if (const Node cp = root["coupling"]; cp.object({"interval", "dem_timestep"})) {
@@ -323,7 +348,8 @@ void read_cfd_dem(const Node& root, Project& project) {
   if (const Node nb = root["neighbour"]; nb.object({"skin", "every", "bin_size"})) {
     c.neighbour.skin = nb["skin"].positive();
     if (c.neighbour.skin && *c.neighbour.skin > c.grains.diameter_max)
-      nb["skin"].problem("must not exceed the largest grain's diameter (each grain would list far more than its contacts)");
+      nb["skin"].problem(
+          "must not exceed the largest grain's diameter (each grain would list far more than its contacts)");
     if (const auto k = nb["every"].count()) {
       c.neighbour.every = *k;
       if (*k > 100) nb["every"].problem("must be at most 100 steps");

@@ -21,8 +21,8 @@ namespace detail {
 
 Groundwater read_groundwater(const Node& n) {
   Groundwater g;
-  n.object({"permeability", "hydraulic_conductivity", "porosity", "permeability_law", "darcy_flux", "hydraulic_gradient", "unit", "water",
-            "resolve_tolerance", "advection"});
+  n.object({"permeability", "hydraulic_conductivity", "porosity", "permeability_law", "darcy_flux",
+            "hydraulic_gradient", "unit", "water", "resolve_tolerance", "advection"});
   g.permeability = n["permeability"].positive();
   g.hydraulic_conductivity = n["hydraulic_conductivity"].positive();
   if (n["permeability"].present() == n["hydraulic_conductivity"].present())
@@ -54,7 +54,8 @@ Groundwater read_groundwater(const Node& n) {
   double per_second = 1.0 / 86400.0;
   if (const auto unit = n["unit"].choice<double>("unit", {{"m/d", 1.0 / 86400.0}, {"m/s", 1.0}})) per_second = *unit;
   if (n["darcy_flux"].present() == n["hydraulic_gradient"].present())
-    n["darcy_flux"].problem(R"(give either "darcy_flux" (the regional flux) or "hydraulic_gradient" (the head's fall per metre))");
+    n["darcy_flux"].problem(
+        R"(give either "darcy_flux" (the regional flux) or "hydraulic_gradient" (the head's fall per metre))");
   if (const Node i = n["hydraulic_gradient"]; i.present()) {
     if (i.array() != std::size_t{2}) i.problem(fmt::format("must be [i_x, i_y], got {}", i.shown()));
     else {
@@ -79,9 +80,10 @@ Groundwater read_groundwater(const Node& n) {
   if (g.hydraulic_gradient)
     for (std::size_t d = 0; d < 2; ++d) g.darcy_flux[d] = g.conductivity_m_per_s() * (*g.hydraulic_gradient)[d];
   if (const auto tol = n["resolve_tolerance"].positive()) g.resolve_tolerance = *tol;
-  if (const auto a = n["advection"].choice<Advection>(
-          "advection scheme",
-          {{"coupled", Advection::coupled}, {"implicit", Advection::implicit}, {"limited", Advection::limited}, {"upwind", Advection::upwind}}))
+  if (const auto a = n["advection"].choice<Advection>("advection scheme", {{"coupled", Advection::coupled},
+                                                                           {"implicit", Advection::implicit},
+                                                                           {"limited", Advection::limited},
+                                                                           {"upwind", Advection::upwind}}))
     g.advection = *a;
   return g;
 }

@@ -13,9 +13,9 @@ Support read_support(const detail::Node& n) {
   Support s;
   if (!n.present()) return s;  // free
   if (n.json().is_string()) {
-    s.kind = n.choice<Support::Kind>("support", {{"free", Support::Kind::free},
-                                                 {"roller", Support::Kind::roller},
-                                                 {"fixed", Support::Kind::fixed}})
+    s.kind = n.choice<Support::Kind>(
+                  "support",
+                  {{"free", Support::Kind::free}, {"roller", Support::Kind::roller}, {"fixed", Support::Kind::fixed}})
                  .value_or(Support::Kind::free);
     return s;
   }
@@ -36,10 +36,12 @@ Support read_support(const detail::Node& n) {
 
 Mechanics read_mechanics(const detail::Node& n, std::vector<std::string>& warnings) {
   Mechanics m;
-  if (!n.object({"material", "plane", "supports", "relaxation", "kinematics", "equilibrium", "cracks_insulate", "freezing_expansion"}))
+  if (!n.object({"material", "plane", "supports", "relaxation", "kinematics", "equilibrium", "cracks_insulate",
+                 "freezing_expansion"}))
     return m;
   m.cracks_insulate = n["cracks_insulate"].boolean().value_or(false);
-  m.linear_kinematics = n["kinematics"].choice<bool>("kinematics", {{"linear", true}, {"nonlinear", false}}).value_or(true);
+  m.linear_kinematics =
+      n["kinematics"].choice<bool>("kinematics", {{"linear", true}, {"nonlinear", false}}).value_or(true);
   using Equilibrium = Mechanics::Equilibrium;
   const auto equilibrium = n["equilibrium"].choice<Equilibrium>(
       "equilibrium method", {{"direct", Equilibrium::direct}, {"dynamic_relaxation", Equilibrium::dynamic_relaxation}});
@@ -48,7 +50,8 @@ Mechanics read_mechanics(const detail::Node& n, std::vector<std::string>& warnin
     n["equilibrium"].problem("\"direct\" needs \"kinematics\": \"linear\" (nonlinear kinematics relax dynamically)");
   const detail::Node mat = n["material"].required();
   m.plane = n["plane"].choice<Plane>("plane", {{"strain", Plane::strain}, {"stress", Plane::stress}}).value_or(m.plane);
-  if (mat.object({"elastic_modulus", "poisson_ratio", "thermal_expansion", "fracture_energy", "reference_temperature"})) {
+  if (mat.object(
+          {"elastic_modulus", "poisson_ratio", "thermal_expansion", "fracture_energy", "reference_temperature"})) {
     m.material.elastic_modulus = mat["elastic_modulus"].required().positive().value_or(0.0);
     m.material.thermal_expansion = mat["thermal_expansion"].required().number().value_or(0.0);
     m.material.fracture_energy = mat["fracture_energy"].positive();
@@ -86,9 +89,10 @@ Mechanics read_mechanics(const detail::Node& n, std::vector<std::string>& warnin
   if (const detail::Node f = n["freezing_expansion"]; f.object({"model", "volume_change", "ice_elastic_modulus"})) {
     using Model = FreezingExpansion::Model;
     FreezingExpansion e;
-    e.model = f["model"].required().choice<Model>("freezing expansion model",
-                                                  {{"rim_displacement", Model::rim_displacement},
-                                                   {"ice_eigenstrain", Model::ice_eigenstrain}})
+    e.model = f["model"]
+                  .required()
+                  .choice<Model>("freezing expansion model", {{"rim_displacement", Model::rim_displacement},
+                                                              {"ice_eigenstrain", Model::ice_eigenstrain}})
                   .value_or(e.model);
     e.volume_change = f["volume_change"].non_negative().value_or(e.volume_change);
     e.ice_elastic_modulus = f["ice_elastic_modulus"].positive().value_or(e.ice_elastic_modulus);

@@ -106,18 +106,19 @@ void read_generator(const Node& n, Rectangle& rectangle, double plate_saturation
   const auto radius = radius_range(n["radius"].required());
   const auto gap = n["min_gap"].present() ? n["min_gap"].non_negative() : std::optional{0.0};
   const auto seed = n["seed"].present() ? seed_of(n["seed"]) : std::optional{1ULL};
-  const auto saturation =
-      n["saturation"].present() ? saturation_range(n["saturation"]) : std::optional{std::pair{plate_saturation, plate_saturation}};
+  const auto saturation = n["saturation"].present() ? saturation_range(n["saturation"])
+                                                    : std::optional{std::pair{plate_saturation, plate_saturation}};
   if (!count || !radius || !gap || !seed || !saturation) return;
   const PoreGenerator g{*count, radius->first, radius->second, *gap, *seed, saturation->first, saturation->second};
   rectangle.pore_generator = g;
   if (!(rectangle.width > 0) || !(rectangle.height > 0)) return;  // reported with the width or height
   rectangle.pores = draw_pores(g, rectangle.width, rectangle.height);
   if (static_cast<int>(rectangle.pores.size()) < g.count) {
-    const std::string radii =
-        g.radius_min == g.radius_max ? fmt::format("{}", g.radius_min) : fmt::format("{}..{}", g.radius_min, g.radius_max);
-    count_node.problem(fmt::format("cannot place {} pores of radius {} m at least {} m apart inside the plate (placed {})",
-                                   g.count, radii, g.min_gap, rectangle.pores.size()));
+    const std::string radii = g.radius_min == g.radius_max ? fmt::format("{}", g.radius_min)
+                                                           : fmt::format("{}..{}", g.radius_min, g.radius_max);
+    count_node.problem(
+        fmt::format("cannot place {} pores of radius {} m at least {} m apart inside the plate (placed {})", g.count,
+                    radii, g.min_gap, rectangle.pores.size()));
   }
 }
 

@@ -40,7 +40,9 @@ TimeSettings detail::read_time(const Node& n) {
   TimeSettings time;
   if (!n.object({"end", "unit", "snapshots"})) return time;
   const auto end = n["end"].required().positive();
-  time.unit = n["unit"].required().choice<TimeUnit>("time unit", {{"s", TimeUnit::s}, {"h", TimeUnit::h}, {"d", TimeUnit::d}})
+  time.unit = n["unit"]
+                  .required()
+                  .choice<TimeUnit>("time unit", {{"s", TimeUnit::s}, {"h", TimeUnit::h}, {"d", TimeUnit::d}})
                   .value_or(TimeUnit::d);
   const double unit = time.unit_seconds();
   time.end = end.value_or(0.0) * unit;
@@ -67,9 +69,7 @@ TimeSettings detail::read_time(const Node& n) {
   return time;
 }
 
-
 namespace {
-
 
 std::string join(const std::vector<std::string>& lines) {
   std::string text;
@@ -106,7 +106,6 @@ SideCondition read_side(const Node& n) {
 
 }  // namespace
 
-
 namespace {
 
 Rectangle read_rectangle(const Node& n) {
@@ -123,7 +122,6 @@ Rectangle read_rectangle(const Node& n) {
     *side = read_side(sides[key].required());
   return rectangle;
 }
-
 
 // Defaults that depend on the problem: a shaft section is graded (fine at
 // the pipes and through the wall, coarse far out: the same accuracy from a
@@ -146,36 +144,41 @@ Numerics read_numerics(const Node& n, bool shaft) {
   numerics.spacing = n["spacing"].positive();
   numerics.max_particles = n["max_particles"].positive();
   numerics.error_estimate = n["error_estimate"].boolean().value_or(numerics.error_estimate);
-  numerics.kernel = n["kernel"].choice<KernelKind>(
-      "kernel", {{"wendland_c2", KernelKind::wendland_c2}, {"cubic_spline", KernelKind::cubic_spline}})
+  numerics.kernel = n["kernel"]
+                        .choice<KernelKind>("kernel", {{"wendland_c2", KernelKind::wendland_c2},
+                                                       {"cubic_spline", KernelKind::cubic_spline}})
                         .value_or(numerics.kernel);
   numerics.smoothing_ratio = n["smoothing_ratio"].positive().value_or(numerics.smoothing_ratio);
-  numerics.integrator = n["integrator"].choice<IntegratorKind>(
-      "integrator", {{"explicit", IntegratorKind::explicit_euler},
-                     {"implicit", IntegratorKind::implicit},
-                     {"rkl2", IntegratorKind::rkl2}})
+  numerics.integrator = n["integrator"]
+                            .choice<IntegratorKind>("integrator", {{"explicit", IntegratorKind::explicit_euler},
+                                                                   {"implicit", IntegratorKind::implicit},
+                                                                   {"rkl2", IntegratorKind::rkl2}})
                             .value_or(numerics.integrator);
   numerics.beta = n["beta"].positive().value_or(numerics.beta);
   numerics.step_change = n["step_change"].positive().value_or(numerics.step_change);
   default_step_change();
-  numerics.conductivity_mean = n["conductivity_mean"].choice<ConductivityMean>(
-      "conductivity mean", {{"harmonic", ConductivityMean::harmonic}, {"arithmetic", ConductivityMean::arithmetic}})
-                                   .value_or(numerics.conductivity_mean);
-  numerics.laplacian = n["laplacian"].choice<LaplacianForm>(
-      "laplacian", {{"renormalised", LaplacianForm::renormalised}, {"plain", LaplacianForm::plain}})
+  numerics.conductivity_mean =
+      n["conductivity_mean"]
+          .choice<ConductivityMean>("conductivity mean", {{"harmonic", ConductivityMean::harmonic},
+                                                          {"arithmetic", ConductivityMean::arithmetic}})
+          .value_or(numerics.conductivity_mean);
+  numerics.laplacian = n["laplacian"]
+                           .choice<LaplacianForm>("laplacian", {{"renormalised", LaplacianForm::renormalised},
+                                                                {"plain", LaplacianForm::plain}})
                            .value_or(numerics.laplacian);
-  numerics.method = n["method"].choice<Method>("method", {{"sph", Method::sph}, {"pd", Method::pd}})
-                        .value_or(numerics.method);
+  numerics.method =
+      n["method"].choice<Method>("method", {{"sph", Method::sph}, {"pd", Method::pd}}).value_or(numerics.method);
   if (const auto h = n["horizon"].positive()) {
     if (*h < 2.0 || *h > 6.0) n["horizon"].problem(fmt::format("must be between 2 and 6 spacings, got {}", *h));
     else numerics.horizon = *h;
   }
   if (numerics.method != Method::pd && n["horizon"].present()) n["horizon"].problem(R"(only used with "method": "pd")");
-  numerics.use_symmetry = n["symmetry"].choice<bool>("symmetry", {{"auto", true}, {"off", false}})
-                              .value_or(numerics.use_symmetry);
-  numerics.placement = n["placement"].choice<Placement>(
-      "placement", {{"lattice", Placement::lattice}, {"graded", Placement::graded}})
-                           .value_or(numerics.placement);
+  numerics.use_symmetry =
+      n["symmetry"].choice<bool>("symmetry", {{"auto", true}, {"off", false}}).value_or(numerics.use_symmetry);
+  numerics.placement =
+      n["placement"]
+          .choice<Placement>("placement", {{"lattice", Placement::lattice}, {"graded", Placement::graded}})
+          .value_or(numerics.placement);
   // The grading: only with placement "graded" (a lattice would ignore it).
   Grading& g = numerics.grading;
   const Node coarsening = n["coarsening"], growth = n["growth"], band = n["band_coarsening"], width = n["band_width"];
@@ -214,8 +217,8 @@ void read_domain(const Node& domain, bool shaft, ShaftSection& section, Project&
       section.outer_radius = outer.positive().value_or(0.0);
       const double pipes = outermost_pipe_radius(section.layout);
       if (section.outer_radius > 0 && section.outer_radius <= pipes)
-        outer.problem(fmt::format("must be larger than the outermost pipe's radius {}, got {}", pipes,
-                                  section.outer_radius));
+        outer.problem(
+            fmt::format("must be larger than the outermost pipe's radius {}, got {}", pipes, section.outer_radius));
       // Default: the far field stays at the initial ground temperature.
       project.domain.far_field_temperature = project.domain.initial_temperature;
       if (const Node far = domain["far_field"]; far.present()) {
@@ -237,7 +240,8 @@ void read_groundwater_block(const Node& root, bool shaft, Project& project) {
       project.groundwater = detail::read_groundwater(water);
       auto& g = *project.groundwater;
       const Node numerics = root["numerics"];
-      const bool other_integrator = numerics["integrator"].present() && project.numerics.integrator != IntegratorKind::implicit;
+      const bool other_integrator = numerics["integrator"].present() &&
+                                    project.numerics.integrator != IntegratorKind::implicit;
       if (g.advection == Advection::coupled && other_integrator) {
         if (water["advection"].present())
           water["advection"].problem(R"("coupled" needs "numerics": {"integrator": "implicit"} (or no integrator))");
@@ -292,7 +296,8 @@ Project read_project(const Node& root) {
   const bool shaft = layout.present() || !geometry.present();
   if (layout.present() && geometry.present()) geometry.problem(R"(give either "layout" or "geometry", not both)");
   if (!layout.present() && !geometry.present())
-    layout.problem(R"(required field is missing (give "layout" for a shaft section or "geometry" for a plain geometry))");
+    layout.problem(
+        R"(required field is missing (give "layout" for a shaft section or "geometry" for a plain geometry))");
   ShaftSection section;
   if (layout.present()) section.layout = read_layout(layout);
   if (geometry.present()) {
@@ -322,12 +327,14 @@ Project read_project(const Node& root) {
   project.numerics = read_numerics(root["numerics"], shaft);
   if (const auto* r = std::get_if<Rectangle>(&project.geometry))
     detail::check_rectangle_spacing(root["numerics"]["spacing"], *r, project.numerics.spacing);
-  else detail::check_shaft_spacing(root["numerics"]["spacing"], std::get<ShaftSection>(project.geometry), project.numerics.spacing);
+  else
+    detail::check_shaft_spacing(root["numerics"]["spacing"], std::get<ShaftSection>(project.geometry),
+                                project.numerics.spacing);
   if (const double s = project.numerics.smoothing_ratio; s < 1.0 || s > 2.5)
-    project.warnings.push_back(fmt::format(
-        "numerics.smoothing_ratio: {} is outside the usual 1.0..2.5 (too few neighbours below, "
-        "a smeared front above)",
-        s));
+    project.warnings.push_back(
+        fmt::format("numerics.smoothing_ratio: {} is outside the usual 1.0..2.5 (too few neighbours below, "
+                    "a smeared front above)",
+                    s));
   if (project.numerics.method == Method::pd) {
     // The PD bonds use one horizon for the whole cloud, and an isotropic
     // micro-conductivity.

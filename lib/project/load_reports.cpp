@@ -41,7 +41,8 @@ std::optional<StrengthLaw> read_strength(const Node& n) {
     if (a && b) return StrengthLaw::linear(*a, *b);
     return std::nullopt;
   }
-  const auto s0 = n["sigma_0"].required().non_negative(), k = n["k"].required().positive(), m = n["m"].required().positive();
+  const auto s0 = n["sigma_0"].required().non_negative(), k = n["k"].required().positive(),
+             m = n["m"].required().positive();
   if (s0 && k && m) return StrengthLaw::power(*s0, *k, *m);
   return std::nullopt;
 }
@@ -49,10 +50,13 @@ std::optional<StrengthLaw> read_strength(const Node& n) {
 // {"gradient_MPa_per_m"} (times the depth), {"value_MPa"}, or
 // {"unit_weight_kN_per_m3", "earth_pressure_coefficient"} (gamma z K).
 std::optional<double> read_pressure(const Node& n, std::optional<double> depth, const Node& depth_node) {
-  if (!n.object({"gradient_MPa_per_m", "value_MPa", "unit_weight_kN_per_m3", "earth_pressure_coefficient"})) return std::nullopt;
-  const int given = int(n["gradient_MPa_per_m"].present()) + int(n["value_MPa"].present()) + int(n["unit_weight_kN_per_m3"].present());
+  if (!n.object({"gradient_MPa_per_m", "value_MPa", "unit_weight_kN_per_m3", "earth_pressure_coefficient"}))
+    return std::nullopt;
+  const int given = int(n["gradient_MPa_per_m"].present()) + int(n["value_MPa"].present()) +
+                    int(n["unit_weight_kN_per_m3"].present());
   if (given != 1) {
-    n.problem(R"(give one of "gradient_MPa_per_m", "value_MPa" or "unit_weight_kN_per_m3" (with "earth_pressure_coefficient"))");
+    n.problem(
+        R"(give one of "gradient_MPa_per_m", "value_MPa" or "unit_weight_kN_per_m3" (with "earth_pressure_coefficient"))");
     return std::nullopt;
   }
   if (n["value_MPa"].present()) return n["value_MPa"].non_negative();
@@ -68,8 +72,8 @@ std::optional<double> read_pressure(const Node& n, std::optional<double> depth, 
 
 Design read_design(const Node& n, bool layered) {
   Design design;
-  if (!n.object({"required_thickness", "max_mean_temperature", "strength", "allowable_factor", "depth", "pressure", "formula",
-                 "friction_angle", "isotherm"}))
+  if (!n.object({"required_thickness", "max_mean_temperature", "strength", "allowable_factor", "depth", "pressure",
+                 "formula", "friction_angle", "isotherm"}))
     return design;
   design.required_thickness = n["required_thickness"].positive();
   design.max_mean_temperature = n["max_mean_temperature"].number();
@@ -86,12 +90,12 @@ Design read_design(const Node& n, bool layered) {
   // With layers, each layer's depth serves; the design's own may be left out.
   if (!layered || design.depth || n["pressure"]["value_MPa"].present())
     design.pressure = read_pressure(n["pressure"], design.depth, n["depth"]);
-  design.formula = n["formula"].choice<WallFormula>(
-                                 "formula", {{"domke", WallFormula::domke},
-                                             {"lame_mises", WallFormula::lame_mises},
-                                             {"lame_tresca", WallFormula::lame_tresca},
-                                             {"plastic_mohr_coulomb", WallFormula::plastic_mohr_coulomb},
-                                             {"plastic_tresca", WallFormula::plastic_tresca}})
+  design.formula = n["formula"]
+                       .choice<WallFormula>("formula", {{"domke", WallFormula::domke},
+                                                        {"lame_mises", WallFormula::lame_mises},
+                                                        {"lame_tresca", WallFormula::lame_tresca},
+                                                        {"plastic_mohr_coulomb", WallFormula::plastic_mohr_coulomb},
+                                                        {"plastic_tresca", WallFormula::plastic_tresca}})
                        .value_or(design.formula);
   if (const Node phi = n["friction_angle"]; phi.present())
     if (const auto v = phi.non_negative()) {
@@ -101,7 +105,8 @@ Design read_design(const Node& n, bool layered) {
   if (design.formula == WallFormula::plastic_mohr_coulomb && !design.friction_angle)
     n["friction_angle"].problem(R"(needed with "formula": "plastic_mohr_coulomb")");
   if (!layered && n["strength"].present() != n["pressure"].present())
-    (n["strength"].present() ? n["pressure"] : n["strength"]).problem(R"(the wall check needs both "strength" and "pressure")");
+    (n["strength"].present() ? n["pressure"] : n["strength"])
+        .problem(R"(the wall check needs both "strength" and "pressure")");
   return design;
 }
 

@@ -21,9 +21,13 @@ std::optional<Annulus> read_annulus(const Node& n, double pipe_diameter) {
   const Node b = n["brine"].required();
   bool ok = di && d_o && flow;
   if (d_o && *d_o >= pipe_diameter)
-    n["outer_diameter"].problem(fmt::format("must be below the pipe's diameter {} (the freeze pipe's inner diameter), got {}", pipe_diameter, *d_o)), ok = false;
+    n["outer_diameter"].problem(fmt::format(
+        "must be below the pipe's diameter {} (the freeze pipe's inner diameter), got {}", pipe_diameter, *d_o)),
+        ok = false;
   if (di && d_o && *di >= *d_o)
-    n["inner_diameter"].problem(fmt::format("must be below outer_diameter {} (the supply pipe inside the freeze pipe), got {}", *d_o, *di)), ok = false;
+    n["inner_diameter"].problem(
+        fmt::format("must be below outer_diameter {} (the supply pipe inside the freeze pipe), got {}", *d_o, *di)),
+        ok = false;
   if (!b.object({"density", "viscosity", "conductivity", "heat_capacity"})) return std::nullopt;
   const auto rho = b["density"].required().positive(), mu = b["viscosity"].required().positive();
   const auto k = b["conductivity"].required().positive(), cp = b["heat_capacity"].required().positive();
@@ -49,12 +53,11 @@ Layout read_layout(const Node& n) {
   Layout layout;
   if (!n.object({"pattern", "outer_ring", "inner_ring", "rings", "pipes"})) return layout;
   const Node pattern_node = n["pattern"].required();
-  const auto pattern = pattern_node.choice<Pattern>(
-      "pattern", {{"single", Pattern::single},
-                  {"three-hole", Pattern::three_hole},
-                  {"four-hole", Pattern::four_hole},
-                  {"rings", Pattern::rings},
-                  {"pipes", Pattern::pipes}});
+  const auto pattern = pattern_node.choice<Pattern>("pattern", {{"single", Pattern::single},
+                                                                {"three-hole", Pattern::three_hole},
+                                                                {"four-hole", Pattern::four_hole},
+                                                                {"rings", Pattern::rings},
+                                                                {"pipes", Pattern::pipes}});
   if (!pattern) return layout;  // which fields belong depends on the pattern
   layout.pattern = *pattern;
   const bool double_ring = *pattern == Pattern::three_hole || *pattern == Pattern::four_hole;
@@ -85,8 +88,7 @@ Layout read_layout(const Node& n) {
     const Node rings = n["rings"].required();
     const auto size = rings.array();
     if (size == 0u) rings.problem("must list at least one ring");
-    for (std::size_t i = 0; i < size.value_or(0); ++i)
-      layout.rings.push_back(read_ring(rings[i], "offset_deg"));
+    for (std::size_t i = 0; i < size.value_or(0); ++i) layout.rings.push_back(read_ring(rings[i], "offset_deg"));
   } else {
     const Node pipes = n["pipes"].required();
     const auto size = pipes.array();
@@ -110,13 +112,17 @@ double outermost_pipe_radius(const Layout& layout) {
 
 Pipe read_pipe(const Node& n) {
   Pipe pipe;
-  if (!n.object({"diameter", "temperature", "model", "boundary", "brine_temperature", "heat_transfer_coefficient", "annulus"}))
+  if (!n.object({"diameter", "temperature", "model", "boundary", "brine_temperature", "heat_transfer_coefficient",
+                 "annulus"}))
     return pipe;
   pipe.diameter = n["diameter"].required().positive().value_or(0.0);
-  pipe.model = n["model"].choice<PipeModel>("pipe model", {{"disc", PipeModel::disc}, {"point", PipeModel::point}})
+  pipe.model = n["model"]
+                   .choice<PipeModel>("pipe model", {{"disc", PipeModel::disc}, {"point", PipeModel::point}})
                    .value_or(PipeModel::disc);
-  pipe.boundary = n["boundary"].choice<PipeBoundary>("pipe boundary", {{"fixed", PipeBoundary::fixed}, {"brine", PipeBoundary::brine}})
-                      .value_or(PipeBoundary::fixed);
+  pipe.boundary =
+      n["boundary"]
+          .choice<PipeBoundary>("pipe boundary", {{"fixed", PipeBoundary::fixed}, {"brine", PipeBoundary::brine}})
+          .value_or(PipeBoundary::fixed);
   if (pipe.boundary == PipeBoundary::fixed) {
     pipe.temperature = read_schedule(n["temperature"].required());
     for (const char* key : {"brine_temperature", "heat_transfer_coefficient", "annulus"})
@@ -126,14 +132,13 @@ Pipe read_pipe(const Node& n) {
   // Brine: the schedule is the brine's; the wall's temperature follows from
   // the heat the ground gives up through the film.
   if (n["temperature"].present())
-    n["temperature"].problem(R"(with "boundary": "brine" the pipe wall's temperature is computed; give "brine_temperature")");
+    n["temperature"].problem(
+        R"(with "boundary": "brine" the pipe wall's temperature is computed; give "brine_temperature")");
   pipe.temperature = read_schedule(n["brine_temperature"].required());
   if (n["annulus"].present() == n["heat_transfer_coefficient"].present())
     n["heat_transfer_coefficient"].problem(R"(give either "heat_transfer_coefficient" or "annulus" (h from the flow))");
-  else if (n["annulus"].present())
-    pipe.annulus = read_annulus(n["annulus"], pipe.diameter);
-  else
-    pipe.heat_transfer_coefficient = n["heat_transfer_coefficient"].positive().value_or(0.0);
+  else if (n["annulus"].present()) pipe.annulus = read_annulus(n["annulus"], pipe.diameter);
+  else pipe.heat_transfer_coefficient = n["heat_transfer_coefficient"].positive().value_or(0.0);
   if (pipe.model == PipeModel::point)
     n["boundary"].problem(R"("brine" needs "model": "disc" (a film needs the pipe's wall))");
   return pipe;
@@ -148,7 +153,8 @@ void warn_warm_pipe(const Node& n, const Pipe& pipe, double freezing_point, std:
     if (const double t = pipe.temperature.points[i].second; t > freezing_point)
       warnings.push_back(fmt::format("{}: {} degC is above the soil's freezing point ({} degC); "
                                      "a {} this warm cannot freeze the ground",
-                                     is_schedule ? temperature[i].path() : temperature.path(), t, freezing_point, what));
+                                     is_schedule ? temperature[i].path() : temperature.path(), t, freezing_point,
+                                     what));
 }
 
 std::vector<Layer> read_layers(const Node& n, const Node& root, const Project& project) {
@@ -174,7 +180,8 @@ std::vector<Layer> read_layers(const Node& n, const Node& root, const Project& p
     if (!layer.name.empty() && !names.insert(layer.name).second)
       l["name"].problem(fmt::format("'{}' names two layers", layer.name));
     const auto depth = l["depth"].required().number();
-    if (depth && *depth < 0.0) l["depth"].problem(fmt::format("must not be negative (metres below the surface), got {}", *depth));
+    if (depth && *depth < 0.0)
+      l["depth"].problem(fmt::format("must not be negative (metres below the surface), got {}", *depth));
     layer.depth = depth.value_or(0.0);
     layer.soil = l["soil"].present() ? read_soil(l["soil"], ignored) : project.soil;
     if (l["strength"].present()) read_strength(l["strength"]);  // checked here; the layer's run reads it from the patch
@@ -183,7 +190,8 @@ std::vector<Layer> read_layers(const Node& n, const Node& root, const Project& p
     } else if (const Node design = root["design"]["pressure"]; design.present()) {
       // The design's pressure at this depth; its problems were reported once, there.
       std::vector<std::string> repeated;
-      layer.pressure = read_pressure(Node(&design.json(), design.path(), repeated), layer.depth, l["depth"]).value_or(0.0);
+      layer.pressure =
+          read_pressure(Node(&design.json(), design.path(), repeated), layer.depth, l["depth"]).value_or(0.0);
     } else {
       l["pressure"].problem(R"(required ("design" gives no pressure))");
     }

@@ -20,9 +20,9 @@ struct Support {
 };
 
 struct SolidMaterial {
-  double elastic_modulus = 0.0;     // Pa
-  double poisson_ratio = 0.25;      // bond-based PD fixes it (1/4 plane strain, 1/3 plane stress)
-  double thermal_expansion = 0.0;   // 1/K, linear
+  double elastic_modulus = 0.0;           // Pa
+  double poisson_ratio = 0.25;            // bond-based PD fixes it (1/4 plane strain, 1/3 plane stress)
+  double thermal_expansion = 0.0;         // 1/K, linear
   std::optional<double> fracture_energy;  // J/m2; none: bonds never break
   double reference_temperature = 0.0;     // degC: stress-free
 };
@@ -36,8 +36,8 @@ struct FreezingExpansion {
   // (ice_elastic_modulus) and a free areal expansion of volume_change x
   // their frozen fraction; liquid water carries no bonds.
   enum class Model { rim_displacement, ice_eigenstrain } model = Model::ice_eigenstrain;
-  double volume_change = 0.09;        // relative, at full freezing
-  double ice_elastic_modulus = 9e9;   // Pa
+  double volume_change = 0.09;       // relative, at full freezing
+  double ice_elastic_modulus = 9e9;  // Pa
 };
 
 struct Mechanics {

@@ -31,9 +31,9 @@ struct Grading {
 struct Numerics {
   std::optional<double> spacing;  // m; nullopt = frostwall chooses
   KernelKind kernel = KernelKind::wendland_c2;
-  double smoothing_ratio = 1.3;   // h / spacing
+  double smoothing_ratio = 1.3;  // h / spacing
   IntegratorKind integrator = IntegratorKind::rkl2;
-  double beta = 0.1;              // explicit step: dt = beta h^2 / alpha_max
+  double beta = 0.1;  // explicit step: dt = beta h^2 / alpha_max
   // RKL2 and implicit steps: the largest enthalpy change of a particle per
   // step, as a fraction of the latent heat (the step adapts to hold it).
   // Default 1 for RKL2, 0.25 for implicit (load_project).

@@ -84,11 +84,11 @@ struct PoreGenerator {
 // The fluid that fills the pores (project "pore_fluid"): water that
 // freezes to ice at freezing_point, releasing latent_heat per kg of water.
 struct PoreFluid {
-  double water_conductivity = 0.6, ice_conductivity = 2.14;      // W/(m K)
+  double water_conductivity = 0.6, ice_conductivity = 2.14;         // W/(m K)
   double water_heat_capacity = 4182.0, ice_heat_capacity = 2060.0;  // J/(kg K)
-  double water_density = 1000.0, ice_density = 920.0;            // kg/m3
-  double latent_heat = 334e3;                                    // J/kg
-  double freezing_point = 0.0;                                   // degC
+  double water_density = 1000.0, ice_density = 920.0;               // kg/m3
+  double latent_heat = 334e3;                                       // J/kg
+  double freezing_point = 0.0;                                      // degC
 };
 
 struct Rectangle {
@@ -119,8 +119,8 @@ struct Layout {
   // start_angle_deg) and, for the double rings, the inner radius.
   Ring outer_ring;
   std::optional<double> inner_ring_radius;
-  std::vector<Ring> rings;           // pattern "rings"
-  std::vector<PipePosition> pipes;   // pattern "pipes" (measured)
+  std::vector<Ring> rings;          // pattern "rings"
+  std::vector<PipePosition> pipes;  // pattern "pipes" (measured)
 };
 
 enum class PipeModel { disc, point };
@@ -131,7 +131,7 @@ enum class PipeModel { disc, point };
 enum class PipeBoundary { fixed, brine };
 
 struct Pipe {
-  double diameter = 0.0;  // outer diameter, m
+  double diameter = 0.0;            // outer diameter, m
   TemperatureSchedule temperature;  // the wall's (fixed) or the brine's (brine)
   PipeModel model = PipeModel::disc;
   PipeBoundary boundary = PipeBoundary::fixed;
@@ -162,13 +162,12 @@ struct Domain {
 enum class TimeUnit { s, h, d };
 
 struct TimeSettings {
-  double end = 0.0;                 // seconds
-  TimeUnit unit = TimeUnit::d;      // the unit the user wrote (for output)
-  std::vector<double> snapshots;    // seconds, ascending, each in (0, end]
-  double unit_seconds() const;      // 1, 3600 or 86400
-  const char* unit_name() const;    // "s", "h" or "d"
+  double end = 0.0;               // seconds
+  TimeUnit unit = TimeUnit::d;    // the unit the user wrote (for output)
+  std::vector<double> snapshots;  // seconds, ascending, each in (0, end]
+  double unit_seconds() const;    // 1, 3600 or 86400
+  const char* unit_name() const;  // "s", "h" or "d"
 };
-
 
 // One layer of the ground the shaft passes: a cross-section of
 // its own at its depth, with its soil, pressure and strength. The JSON of
@@ -213,9 +212,9 @@ struct Project {
   Design design;
   std::vector<Sensor> monitoring;
   Output output;
-  std::optional<Mechanics> mechanics;  // plain geometries: PD thermo-mechanics
+  std::optional<Mechanics> mechanics;      // plain geometries: PD thermo-mechanics
   std::optional<Groundwater> groundwater;  // shafts: water flowing through the ground (none: still water)
-  PoreFluid pore_fluid;                // what fills Rectangle::pores (default water/ice)
+  PoreFluid pore_fluid;                    // what fills Rectangle::pores (default water/ice)
   // Shafts through several layers: one run per layer (empty: one run).
   std::vector<Layer> layers;
   // "physics": "cfd-dem": grains and pore water; then only name,

@@ -13,8 +13,8 @@ double TemperatureSchedule::at(double t_seconds) const {
   if (t_seconds <= points.front().first) return points.front().second;
   if (t_seconds >= points.back().first) return points.back().second;
   // Strictly inside: `after` exists and lies later than `before`.
-  const auto after = std::upper_bound(points.begin(), points.end(), t_seconds,
-                                      [](double t, const auto& p) { return t < p.first; });
+  const auto after =
+      std::upper_bound(points.begin(), points.end(), t_seconds, [](double t, const auto& p) { return t < p.first; });
   const auto before = std::prev(after);
   const double w = (t_seconds - before->first) / (after->first - before->first);
   return before->second + w * (after->second - before->second);
@@ -29,8 +29,6 @@ double TimeSettings::unit_seconds() const {
   return 1.0;  // unreachable; keeps -Wreturn-type quiet
 }
 
-const char* TimeSettings::unit_name() const {
-  return unit == TimeUnit::s ? "s" : (unit == TimeUnit::h ? "h" : "d");
-}
+const char* TimeSettings::unit_name() const { return unit == TimeUnit::s ? "s" : (unit == TimeUnit::h ? "h" : "d"); }
 
 }  // namespace frostwall::project

@@ -12,27 +12,30 @@ PhaseProperties isotropic(double conductivity, double heat_capacity) {
 
 const std::pair<const char*, Soil> builtin_soils[] = {
     // Section 3, single ring.
-    {"sand", {.name = "medium-coarse sand",
-              .density = 2090,
-              .unfrozen = isotropic(1.86, 1465.1),
-              .frozen = isotropic(2.56, 1088.4),
-              .latent_heat = 52875.8,
-              .freezing_point = 0.0}},
+    {"sand",
+     {.name = "medium-coarse sand",
+      .density = 2090,
+      .unfrozen = isotropic(1.86, 1465.1),
+      .frozen = isotropic(2.56, 1088.4),
+      .latent_heat = 52875.8,
+      .freezing_point = 0.0}},
     // Section 3; the paper prints L = 530718, a slipped decimal point (more
     // than pure water's 334 kJ/kg).
-    {"clay", {.name = "clay",
-              .density = 2050,
-              .unfrozen = isotropic(1.51, 1548.8),
-              .frozen = isotropic(2.05, 1172.1),
-              .latent_heat = 53071.8,
-              .freezing_point = 0.0}},
+    {"clay",
+     {.name = "clay",
+      .density = 2050,
+      .unfrozen = isotropic(1.51, 1548.8),
+      .frozen = isotropic(2.05, 1172.1),
+      .latent_heat = 53071.8,
+      .freezing_point = 0.0}},
     // Section 2.2, the soil column.
-    {"silty_clay", {.name = "silty clay",
-                    .density = 1800,
-                    .unfrozen = isotropic(3.05, 2124.0),
-                    .frozen = isotropic(2.68, 2508.5),
-                    .latent_heat = 33500.0,
-                    .freezing_point = -0.25}},
+    {"silty_clay",
+     {.name = "silty clay",
+      .density = 1800,
+      .unfrozen = isotropic(3.05, 2124.0),
+      .frozen = isotropic(2.68, 2508.5),
+      .latent_heat = 33500.0,
+      .freezing_point = -0.25}},
 };
 
 }  // namespace

@@ -52,7 +52,8 @@ std::vector<double> CloudRaster::sample(const std::vector<double>& values) const
   const int n = window_.pixels;
   std::vector<double> out(std::size_t(n) * std::size_t(n), std::numeric_limits<double>::quiet_NaN());
   for (const auto& p : pixels_)
-    out[p.index] = p.weight[0] * values[p.corner[0]] + p.weight[1] * values[p.corner[1]] + p.weight[2] * values[p.corner[2]];
+    out[p.index] = p.weight[0] * values[p.corner[0]] + p.weight[1] * values[p.corner[1]] +
+                   p.weight[2] * values[p.corner[2]];
   return out;
 }
 

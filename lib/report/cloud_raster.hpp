@@ -33,7 +33,7 @@ class CloudRaster {
 
  private:
   struct Pixel {
-    std::size_t index;                  // in the raster
+    std::size_t index;  // in the raster
     std::array<std::uint32_t, 3> corner;
     std::array<double, 3> weight;
   };

@@ -46,7 +46,8 @@ std::array<std::uint8_t, 3> ColourScale::operator()(double T) const {
   const std::size_t i = std::min<std::size_t>(static_cast<std::size_t>(t), table.size() - 2);
   const double f = t - double(i);
   std::array<std::uint8_t, 3> c{};
-  for (int d = 0; d < 3; ++d) c[d] = static_cast<std::uint8_t>(std::lround(table[i][d] * (1 - f) + table[i + 1][d] * f));
+  for (int d = 0; d < 3; ++d)
+    c[d] = static_cast<std::uint8_t>(std::lround(table[i][d] * (1 - f) + table[i + 1][d] * f));
   return c;
 }
 
@@ -66,20 +67,23 @@ std::string ColourScale::colour_bar_svg(int width, const std::string& quantity) 
     const double T = value_at(s);
     o += fmt::format(R"(<stop offset="{}" stop-color="{}"/>)", svg::num((T - lo_) / (hi_ - lo_)), hex((*this)(T)));
   }
-  o += fmt::format(R"svg(</linearGradient></defs><rect x="{}" y="{}" width="{}" height="{}" fill="url(#{})" stroke="#222" stroke-width="0.8"/>)svg",
-                   left, bar_top, svg::num(w), bar_height, id);
+  o += fmt::format(
+      R"svg(</linearGradient></defs><rect x="{}" y="{}" width="{}" height="{}" fill="url(#{})" stroke="#222" stroke-width="0.8"/>)svg",
+      left, bar_top, svg::num(w), bar_height, id);
   const NiceScale ticks = ticks_within(lo_, hi_, 8);
   o += R"(<g stroke="#222">)";
   for (double T : ticks.ticks)
-    o += fmt::format(R"(<line x1="{0}" y1="{1}" x2="{0}" y2="{2}"/>)", svg::num(px(T)), bar_top + bar_height, bar_top + bar_height + 4);
+    o += fmt::format(R"(<line x1="{0}" y1="{1}" x2="{0}" y2="{2}"/>)", svg::num(px(T)), bar_top + bar_height,
+                     bar_top + bar_height + 4);
   o += "</g><g fill=\"#222\" text-anchor=\"middle\">";
   for (double T : ticks.ticks)
-    o += fmt::format(R"(<text x="{}" y="{}">{}</text>)", svg::num(px(T)), bar_top + bar_height + 16, tick_label(T, ticks.decimals));
+    o += fmt::format(R"(<text x="{}" y="{}">{}</text>)", svg::num(px(T)), bar_top + bar_height + 16,
+                     tick_label(T, ticks.decimals));
   o += fmt::format(R"(<text x="{}" y="54">{}</text></g>)", svg::num(left + w / 2), quantity);
   if (diverging_)
-    o += fmt::format(R"(<path d="M{0} {1} l-4 -6 h8 z" fill="#222"><title>{2} {3}</title></path>)", svg::num(px(pivot_)),
-                     bar_top, quantity.starts_with("temperature") ? "freezing point" : "middle of the scale",
-                     svg::num(pivot_));
+    o += fmt::format(R"(<path d="M{0} {1} l-4 -6 h8 z" fill="#222"><title>{2} {3}</title></path>)",
+                     svg::num(px(pivot_)), bar_top,
+                     quantity.starts_with("temperature") ? "freezing point" : "middle of the scale", svg::num(pivot_));
   o += "</svg>";
   return o;
 }

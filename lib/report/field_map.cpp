@@ -100,7 +100,8 @@ void snap_to_sides(post::Polyline& c, const WedgeSymmetry& w, double snap) {
 
 }  // namespace
 
-std::vector<post::Polyline> unfold(const std::vector<post::Polyline>& wedge_curves, const WedgeSymmetry& w, double snap) {
+std::vector<post::Polyline> unfold(const std::vector<post::Polyline>& wedge_curves, const WedgeSymmetry& w,
+                                   double snap) {
   std::vector<post::Polyline> curves = wedge_curves, out;
   for (auto& c : curves) snap_to_sides(c, w, snap);
   out.reserve(curves.size() * w.copies());
@@ -120,7 +121,7 @@ FieldMap::FieldMap(const FieldSnapshot& particles, const WedgeSymmetry& symmetry
   const bool wedge = field_is_wedge(particles, symmetry, spacing);
   symmetry_ = wedge ? symmetry : WedgeSymmetry{};
   probe_->kernel = sph::make_kernel<2>(kernel == "cubic_spline" ? project::KernelKind::cubic_spline
-                                                                 : project::KernelKind::wendland_c2);
+                                                                : project::KernelKind::wendland_c2);
   probe_->position = particles.position;
   const auto P = particle_set(particles, symmetry_, wedge, spacing);
   const post::FieldSampler sampler(P, *probe_->kernel, h);
@@ -207,14 +208,17 @@ std::string FieldMap::html(const std::vector<double>& temperature, const ColourS
 
 std::string FieldMap::html(const RgbaImage& image, const std::string& what, const std::vector<post::Polyline>& fronts,
                            bool fronts_whole, const MapOverlay& overlay, const std::string& title) const {
-  return map_html(image, window_, what, fronts_whole ? fronts : unfold(fronts, symmetry_, 1.5 * spacing_), overlay, title);
+  return map_html(image, window_, what, fronts_whole ? fronts : unfold(fronts, symmetry_, 1.5 * spacing_), overlay,
+                  title);
 }
 
 std::string map_html(const RgbaImage& image, const MapWindow& window, const std::string& what,
                      const std::vector<post::Polyline>& fronts, const MapOverlay& overlay, const std::string& title) {
   const int n = window.pixels;
   const double scale = n / window.size;  // px per metre
-  auto px = [&](const Vec2& x) { return std::pair{(x[0] - window.x0) * scale, (window.y0 + window.size - x[1]) * scale}; };
+  auto px = [&](const Vec2& x) {
+    return std::pair{(x[0] - window.x0) * scale, (window.y0 + window.size - x[1]) * scale};
+  };
   // The raster is an <img>; the vectors lie over it in an SVG of the same size.
   std::string o = fmt::format(R"(<div class="map"><img src="{}" width="{}" height="{}" alt="{} map, {}">)",
                               png_data_uri(image), n, n, svg::escape(what), svg::escape(title));
@@ -223,13 +227,14 @@ std::string map_html(const RgbaImage& image, const MapWindow& window, const std:
       n, svg::font_family, svg::escape(title));
   if (overlay.domain_radius > 0.0) {
     const auto [cx, cy] = px(Vec2::Zero());
-    o += fmt::format(R"(<circle cx="{}" cy="{}" r="{}" fill="none" stroke="#888" stroke-width="0.8"/>)", num(cx), num(cy),
-                     num(overlay.domain_radius * scale));
+    o += fmt::format(R"(<circle cx="{}" cy="{}" r="{}" fill="none" stroke="#888" stroke-width="0.8"/>)", num(cx),
+                     num(cy), num(overlay.domain_radius * scale));
   }
   if (overlay.excavation_radius > 0.0) {
     const auto [cx, cy] = px(Vec2::Zero());
-    o += fmt::format(R"(<circle cx="{}" cy="{}" r="{}" fill="none" stroke="#333" stroke-width="1" stroke-dasharray="5 3"/>)",
-                     num(cx), num(cy), num(overlay.excavation_radius * scale));
+    o += fmt::format(
+        R"(<circle cx="{}" cy="{}" r="{}" fill="none" stroke="#333" stroke-width="1" stroke-dasharray="5 3"/>)",
+        num(cx), num(cy), num(overlay.excavation_radius * scale));
   }
   // Frozen front: a white halo under a black line reads on blue and on red.
   std::string d;
@@ -254,9 +259,9 @@ std::string map_html(const RgbaImage& image, const MapWindow& window, const std:
       const double len = std::hypot(x1 - x0, y1 - y0);
       if (len < 1.0) continue;
       const double ux = (x1 - x0) / len, uy = (y1 - y0) / len, head = std::min(4.0, 0.4 * len);
-      a += fmt::format("M{} {}L{} {}M{} {}L{} {}L{} {}", num(x0), num(y0), num(x1), num(y1), num(x1 - head * (ux - 0.5 * uy)),
-                 num(y1 - head * (uy + 0.5 * ux)), num(x1), num(y1), num(x1 - head * (ux + 0.5 * uy)),
-                 num(y1 - head * (uy - 0.5 * ux)));
+      a += fmt::format("M{} {}L{} {}M{} {}L{} {}L{} {}", num(x0), num(y0), num(x1), num(y1),
+                       num(x1 - head * (ux - 0.5 * uy)), num(y1 - head * (uy + 0.5 * ux)), num(x1), num(y1),
+                       num(x1 - head * (ux + 0.5 * uy)), num(y1 - head * (uy - 0.5 * ux)));
     }
     o += fmt::format(R"(<path d="{0}" fill="none" stroke="#000" stroke-width="2.2" stroke-opacity="0.5"/>)"
                      R"(<path d="{0}" fill="none" stroke="#fff" stroke-width="1"/>)",
@@ -272,13 +277,14 @@ std::string map_html(const RgbaImage& image, const MapWindow& window, const std:
   // Title and a scale bar of a round length, about a fifth of the window.
   const NiceScale bar = nice_scale(0.0, window.size / 5.0, 1);
   const double metres = bar.step, len = metres * scale;
-  o += fmt::format(R"(<rect x="6" y="6" width="{}" height="20" fill="#fff" fill-opacity="0.85"/><text x="11" y="21">{}</text>)",
-                   num(svg::text_width(title, 13) + 12), svg::escape(title));
   o += fmt::format(
-      R"(<rect x="6" y="{0}" width="{1}" height="26" fill="#fff" fill-opacity="0.85"/>)"
-      R"(<path d="M12 {2} v5 h{3} v-5" fill="none" stroke="#111" stroke-width="1.5"/>)"
-      R"(<text x="{4}" y="{5}" text-anchor="middle" font-size="11">{6} m</text>)",
-      n - 32, num(len + 12), n - 12, num(len), num(12 + len / 2), n - 16, tick_label(metres, bar.decimals));
+      R"(<rect x="6" y="6" width="{}" height="20" fill="#fff" fill-opacity="0.85"/><text x="11" y="21">{}</text>)",
+      num(svg::text_width(title, 13) + 12), svg::escape(title));
+  o += fmt::format(R"(<rect x="6" y="{0}" width="{1}" height="26" fill="#fff" fill-opacity="0.85"/>)"
+                   R"(<path d="M12 {2} v5 h{3} v-5" fill="none" stroke="#111" stroke-width="1.5"/>)"
+                   R"(<text x="{4}" y="{5}" text-anchor="middle" font-size="11">{6} m</text>)",
+                   n - 32, num(len + 12), n - 12, num(len), num(12 + len / 2), n - 16,
+                   tick_label(metres, bar.decimals));
   o += fmt::format(R"(<rect x="0.5" y="0.5" width="{0}" height="{0}" fill="none" stroke="#222"/></svg></div>)", n - 1);
   return o;
 }

@@ -40,7 +40,7 @@ struct Arrow {
 // What is drawn on top of every map.
 struct MapOverlay {
   std::vector<Circle> pipes;
-  std::vector<Arrow> arrows;  // the groundwater's flow (white, thin)
+  std::vector<Arrow> arrows;       // the groundwater's flow (white, thin)
   double excavation_radius = 0.0;  // 0 = none
   double domain_radius = 0.0;      // pixels beyond are left blank; 0 = no limit
 };
@@ -67,8 +67,8 @@ class FieldMap {
   // symmetry unless `fronts_whole`: they cover the section already), a title
   // and a scale bar.
   std::string html(const std::vector<double>& temperature, const ColourScale& colours,
-                  const std::vector<post::Polyline>& fronts, bool fronts_whole, const MapOverlay& overlay,
-                  const std::string& title) const;
+                   const std::vector<post::Polyline>& fronts, bool fronts_whole, const MapOverlay& overlay,
+                   const std::string& title) const;
   // The same around a raster made elsewhere (window-sized, e.g.
   // nearest_raster's); `what` names the map in the image's alt text.
   std::string html(const RgbaImage& image, const std::string& what, const std::vector<post::Polyline>& fronts,

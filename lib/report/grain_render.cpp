@@ -13,7 +13,9 @@ namespace {
 using V3 = std::array<double, 3>;
 
 double dot(const V3& a, const V3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-V3 cross(const V3& a, const V3& b) { return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}; }
+V3 cross(const V3& a, const V3& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
 V3 unit(const V3& a) {
   const double n = std::sqrt(dot(a, a));
   return {a[0] / n, a[1] / n, a[2] / n};
@@ -59,7 +61,8 @@ RgbaImage render_grains(const std::vector<V3>& centre, const std::vector<double>
   const double ox = 0.5 * (view.width - scale * (x1 - x0)), oy = 0.5 * (view.height - scale * (y1 - y0));
 
   RgbaImage image(view.width, view.height);
-  std::vector<double> depth(std::size_t(view.width) * std::size_t(view.height), std::numeric_limits<double>::infinity());
+  std::vector<double> depth(std::size_t(view.width) * std::size_t(view.height),
+                            std::numeric_limits<double>::infinity());
   const V3 light = unit({-0.45, 0.6, 0.66});  // upper left, toward the viewer (camera frame)
   for (std::size_t i = 0; i < centre.size(); ++i) {
     const V3& p = centre[i];

@@ -16,9 +16,9 @@
 namespace frostwall::report {
 
 struct GrainView {
-  int up_axis = 2;               // the vertical (against gravity) on the picture
-  double azimuth_deg = -60.0;    // camera direction around the vertical, from the first horizontal axis
-  double elevation_deg = 25.0;   // camera height above the horizontal
+  int up_axis = 2;              // the vertical (against gravity) on the picture
+  double azimuth_deg = -60.0;   // camera direction around the vertical, from the first horizontal axis
+  double elevation_deg = 25.0;  // camera height above the horizontal
   int width = 560, height = 460;
   // A cut-away: only grains whose centre has coordinate `cut_axis` at least
   // `cut_at` are drawn (-1: no cut).

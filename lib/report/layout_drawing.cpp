@@ -29,7 +29,8 @@ std::string layout_svg(const LayoutDrawing& dw, int size) {
       size, svg::font_family);
   const double R = dw.section->outer_radius;
   if (R * scale < size / 2.0 * 1.4)
-    o += fmt::format(R"(<circle cx="{0}" cy="{0}" r="{1}" fill="none" stroke="#999" stroke-dasharray="2 3"/>)", num(c), num(R * scale));
+    o += fmt::format(R"(<circle cx="{0}" cy="{0}" r="{1}" fill="none" stroke="#999" stroke-dasharray="2 3"/>)", num(c),
+                     num(R * scale));
   if (excavation > 0)
     o += fmt::format(R"(<circle cx="{0}" cy="{0}" r="{1}" fill="#ece8e0" stroke="#333" stroke-width="1.2"/>)"
                      R"(<text x="{0}" y="{2}" text-anchor="middle" fill="#333">excavation</text>)"
@@ -40,15 +41,16 @@ std::string layout_svg(const LayoutDrawing& dw, int size) {
   // The simulated wedge, shaded, out to the drawing's edge.
   if (dw.wedge.mirror_lines > 0) {
     const double r = extent * 0.98, a0 = dw.wedge.start, a1 = dw.wedge.start + dw.wedge.angle;
-    o += fmt::format(R"(<path d="M{} {} L{} {} A{} {} 0 {} 0 {} {} Z" fill="#0072B2" fill-opacity="0.16" stroke="#0072B2" stroke-width="0.8"/>)",
-                     num(X(0)), num(Y(0)), num(X(r * std::cos(a0))), num(Y(r * std::sin(a0))), num(r * scale), num(r * scale),
-                     dw.wedge.angle > std::numbers::pi ? 1 : 0, num(X(r * std::cos(a1))), num(Y(r * std::sin(a1))));
+    o += fmt::format(
+        R"(<path d="M{} {} L{} {} A{} {} 0 {} 0 {} {} Z" fill="#0072B2" fill-opacity="0.16" stroke="#0072B2" stroke-width="0.8"/>)",
+        num(X(0)), num(Y(0)), num(X(r * std::cos(a0))), num(Y(r * std::sin(a0))), num(r * scale), num(r * scale),
+        dw.wedge.angle > std::numbers::pi ? 1 : 0, num(X(r * std::cos(a1))), num(Y(r * std::sin(a1))));
   }
   // OA and OB, labelled at their ends.
   const double ray = extent * 1.02;
   for (const auto& [angle, name] : {std::pair{dw.OA, "A"}, std::pair{dw.OB, "B"}}) {
-    o += fmt::format(R"(<line x1="{}" y1="{}" x2="{}" y2="{}" stroke="#D55E00" stroke-width="1.1"/>)", num(X(0)), num(Y(0)),
-                     num(X(0.97 * ray * std::cos(angle))), num(Y(0.97 * ray * std::sin(angle))));
+    o += fmt::format(R"(<line x1="{}" y1="{}" x2="{}" y2="{}" stroke="#D55E00" stroke-width="1.1"/>)", num(X(0)),
+                     num(Y(0)), num(X(0.97 * ray * std::cos(angle))), num(Y(0.97 * ray * std::sin(angle))));
     // Labels go beside the ray's end, pushed apart when OA and OB are close.
     const double side = name[0] == 'A' ? -1.0 : 1.0;
     const double nx = -std::sin(angle) * side * 9, ny = std::cos(angle) * side * 9;
@@ -63,8 +65,9 @@ std::string layout_svg(const LayoutDrawing& dw, int size) {
                      num(std::max(0.5 * dw.section->pipe.diameter * scale, 1.8)), escape(p.label));
   o += "</g>";
   for (const auto& s : dw.sensors)
-    o += fmt::format(R"(<path d="M{} {} l-4 6 h8 z" fill="#009E73"/><text x="{}" y="{}" fill="#006b4e" font-size="11">{}</text>)",
-                     num(X(s.x)), num(Y(s.y) - 3), num(X(s.x) + 6), num(Y(s.y) - 4), escape(s.name));
+    o += fmt::format(
+        R"(<path d="M{} {} l-4 6 h8 z" fill="#009E73"/><text x="{}" y="{}" fill="#006b4e" font-size="11">{}</text>)",
+        num(X(s.x)), num(Y(s.y) - 3), num(X(s.x) + 6), num(Y(s.y) - 4), escape(s.name));
   // Scale bar.
   const NiceScale bar = nice_scale(0.0, extent / 2.5, 1);
   const double len = bar.step * scale;
@@ -89,13 +92,17 @@ std::string rectangle_svg(const project::Rectangle& r, int width) {
       R"(<svg class="layout" viewBox="0 0 {0} {1}" width="{0}" height="{1}" role="img" font-family="{2}" font-size="12">)"
       "<title>plain geometry: rectangle</title>",
       width, num(H), svg::font_family);
-  o += fmt::format(R"(<rect x="{}" y="{}" width="{}" height="{}" fill="#f3efe6" stroke="#333"/>)", x0, y0, num(w), num(h));
-  o += fmt::format(R"(<text x="{}" y="{}" text-anchor="end">{}</text>)", x0 - 6, num(y0 + h / 2 + 4), escape(side(r.left)));
+  o += fmt::format(R"(<rect x="{}" y="{}" width="{}" height="{}" fill="#f3efe6" stroke="#333"/>)", x0, y0, num(w),
+                   num(h));
+  o += fmt::format(R"(<text x="{}" y="{}" text-anchor="end">{}</text>)", x0 - 6, num(y0 + h / 2 + 4),
+                   escape(side(r.left)));
   o += fmt::format(R"(<text x="{}" y="{}">{}</text>)", num(x0 + w + 6), num(y0 + h / 2 + 4), escape(side(r.right)));
-  o += fmt::format(R"(<text x="{}" y="{}" text-anchor="middle">{}</text>)", num(x0 + w / 2), y0 - 8, escape(side(r.top)));
-  o += fmt::format(R"(<text x="{}" y="{}" text-anchor="middle">{}</text>)", num(x0 + w / 2), num(y0 + h + 18), escape(side(r.bottom)));
-  o += fmt::format(R"(<text x="{}" y="{}" text-anchor="middle" fill="#555">{:g} m × {:g} m</text></svg>)", num(x0 + w / 2),
-                   num(y0 + h + 38), r.width, r.height);
+  o += fmt::format(R"(<text x="{}" y="{}" text-anchor="middle">{}</text>)", num(x0 + w / 2), y0 - 8,
+                   escape(side(r.top)));
+  o += fmt::format(R"(<text x="{}" y="{}" text-anchor="middle">{}</text>)", num(x0 + w / 2), num(y0 + h + 18),
+                   escape(side(r.bottom)));
+  o += fmt::format(R"(<text x="{}" y="{}" text-anchor="middle" fill="#555">{:g} m × {:g} m</text></svg>)",
+                   num(x0 + w / 2), num(y0 + h + 38), r.width, r.height);
   return o;
 }
 

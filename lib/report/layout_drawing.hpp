@@ -15,8 +15,8 @@ namespace frostwall::report {
 struct LayoutDrawing {
   const project::ShaftSection* section = nullptr;
   std::vector<geometry::Pipe2> pipes;
-  WedgeSymmetry wedge;       // mirror_lines 0: the full circle was simulated
-  double OA = 0.0, OB = 0.0; // rad
+  WedgeSymmetry wedge;        // mirror_lines 0: the full circle was simulated
+  double OA = 0.0, OB = 0.0;  // rad
   std::vector<project::Sensor> sensors;
 };
 

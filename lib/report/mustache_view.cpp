@@ -52,7 +52,8 @@ std::vector<std::string> template_names(std::string_view t) {
     pos = end + 2;
     while (!tag.empty() && tag.front() == ' ') tag.remove_prefix(1);
     if (!tag.empty() && (tag.front() == '#' || tag.front() == '^' || tag.front() == '&')) tag.remove_prefix(1);
-    else if (!tag.empty() && (tag.front() == '/' || tag.front() == '!' || tag.front() == '>' || tag.front() == '=')) continue;
+    else if (!tag.empty() && (tag.front() == '/' || tag.front() == '!' || tag.front() == '>' || tag.front() == '='))
+      continue;
     while (!tag.empty() && (tag.front() == ' ')) tag.remove_prefix(1);
     while (!tag.empty() && (tag.back() == ' ')) tag.remove_suffix(1);
     if (tag.empty() || tag == ".") continue;

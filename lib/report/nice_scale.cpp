@@ -36,7 +36,8 @@ NiceScale nice_scale(double lo, double hi, int target) {
   s.step = nice_number(nice_number(hi - lo, false) / std::max(1, target), true);
   s.lo = std::floor(lo / s.step + 1e-9) * s.step;
   s.hi = std::ceil(hi / s.step - 1e-9) * s.step;
-  for (double v = s.lo; v <= s.hi + 0.5 * s.step; v += s.step) s.ticks.push_back(std::abs(v) < 1e-12 * s.step ? 0.0 : v);
+  for (double v = s.lo; v <= s.hi + 0.5 * s.step; v += s.step)
+    s.ticks.push_back(std::abs(v) < 1e-12 * s.step ? 0.0 : v);
   s.decimals = decimals_for(s.step);
   return s;
 }
@@ -65,7 +66,8 @@ NiceScale ticks_within(double lo, double hi, int target) {
 
 std::string tick_label(double v, int decimals) {
   std::string text = fmt::format("{:.{}f}", v, decimals);
-  if (text.find_first_not_of("-0.") == std::string::npos) return decimals > 0 ? fmt::format("{:.{}f}", 0.0, decimals) : "0";
+  if (text.find_first_not_of("-0.") == std::string::npos)
+    return decimals > 0 ? fmt::format("{:.{}f}", 0.0, decimals) : "0";
   if (text[0] == '-') text = "\u2212" + text.substr(1);
   return text;
 }

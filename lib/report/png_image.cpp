@@ -27,7 +27,8 @@ std::string encode_png(const RgbaImage& image) {
   writer->Write();
   vtkUnsignedCharArray* bytes = writer->GetResult();
   if (!bytes || bytes->GetNumberOfValues() == 0) throw std::runtime_error("png: the writer produced nothing");
-  return std::string(reinterpret_cast<const char*>(bytes->GetPointer(0)), static_cast<std::size_t>(bytes->GetNumberOfValues()));
+  return std::string(reinterpret_cast<const char*>(bytes->GetPointer(0)),
+                     static_cast<std::size_t>(bytes->GetNumberOfValues()));
 }
 
 std::string png_data_uri(const RgbaImage& image) { return "data:image/png;base64," + base64(encode_png(image)); }

@@ -64,24 +64,27 @@ void add_headline(const RunRecord& run, json& view) {
   const auto& closure = s.value("closure_time_days", json());
   const auto& wall = s["wall"];
   const std::string end_day = wall.empty() ? "the end" : number(wall.back()["day"], 0);
-  view["closure_value"] = closure.is_number() ? "day " + with_error(closure, s.value("closure_time_days_error", json()), 1) : "not closed";
+  view["closure_value"] =
+      closure.is_number() ? "day " + with_error(closure, s.value("closure_time_days_error", json()), 1) : "not closed";
   view["closure_note"] = closure.is_number() ? "a fully frozen ring cuts the shaft off from the far field"
-                                              : "not within the run (to day " + end_day + ")";
+                                             : "not within the run (to day " + end_day + ")";
   // Older summaries have no front_contact_days: the card then says so.
   const auto& contact = s.value("front_contact_days", json());
-  view["contact_value"] = contact.is_number() ? "day " + with_error(contact, s.value("front_contact_days_error", json()), 1)
-                                              : (s.contains("front_contact_days") ? "not yet" : "–");
+  view["contact_value"] = contact.is_number()
+                              ? "day " + with_error(contact, s.value("front_contact_days_error", json()), 1)
+                              : (s.contains("front_contact_days") ? "not yet" : "–");
   view["contact_note"] = contact.is_number() ? "half-frozen columns touch; not yet a closed wall"
                                              : "the columns have not touched within the run";
   json rows = json::array();
   for (const auto& w : wall)
-    rows.push_back({{"day", fmt::format("{:g}", w["day"].get<double>())},
-                    {"min_thickness", with_error(w["min_thickness"], w.value("min_thickness_error", json()), 2)},
-                    {"OA_thickness", with_error(w["OA"]["thickness"], w["OA"].value("thickness_error", json()), 2)},
-                    {"OA_extent", extent(w["OA"])},
-                    {"OB_thickness", with_error(w["OB"]["thickness"], w["OB"].value("thickness_error", json()), 2)},
-                    {"OB_extent", extent(w["OB"])},
-                    {"mean_temperature", with_error(w["mean_temperature_OB"], w.value("mean_temperature_OB_error", json()), 2)}});
+    rows.push_back(
+        {{"day", fmt::format("{:g}", w["day"].get<double>())},
+         {"min_thickness", with_error(w["min_thickness"], w.value("min_thickness_error", json()), 2)},
+         {"OA_thickness", with_error(w["OA"]["thickness"], w["OA"].value("thickness_error", json()), 2)},
+         {"OA_extent", extent(w["OA"])},
+         {"OB_thickness", with_error(w["OB"]["thickness"], w["OB"].value("thickness_error", json()), 2)},
+         {"OB_extent", extent(w["OB"])},
+         {"mean_temperature", with_error(w["mean_temperature_OB"], w.value("mean_temperature_OB_error", json()), 2)}});
   view["snapshots"] = rows;
   if (!wall.empty()) {
     view["last_day"] = fmt::format("{:g}", wall.back()["day"].get<double>());
@@ -93,7 +96,8 @@ void add_headline(const RunRecord& run, json& view) {
             : "–";
   }
   const auto& d = s.value("design", json::object());
-  const bool has_target = d.value("required_thickness", json()).is_number() || d.value("max_mean_temperature", json()).is_number();
+  const bool has_target = d.value("required_thickness", json()).is_number() ||
+                          d.value("max_mean_temperature", json()).is_number();
   if (!has_target && d.contains("met_day")) {  // the wall check from pressure and strength
     const bool met = d["met_day"].is_number();
     view["design_value"] = met ? "PASS" : "FAIL";
@@ -113,7 +117,8 @@ void add_headline(const RunRecord& run, json& view) {
   const bool pass = d.value("pass", false);
   view["design_value"] = pass ? "PASS" : "FAIL";
   view["design_class"] = pass ? "pass" : "fail";
-  view["design_note"] = pass ? targets + ", met on day " + with_error(d["reached_day"], d.value("reached_day_error", json()), 1)
+  view["design_note"] = pass ? targets + ", met on day " +
+                                   with_error(d["reached_day"], d.value("reached_day_error", json()), 1)
                              : targets + ": not met by day " + end_day;
 }
 
@@ -130,7 +135,8 @@ void add_run_facts(const RunRecord& run, json& view) {
   const bool pd = r.value("method", std::string()) == "pd";
   fact("pairs", pd ? "thermal bonds (pairs)" : "particle pairs", integer);
   fact("steps", "time steps", integer);
-  fact("spacing", "particle spacing", [](const json& v) { return (v.is_number() ? metres(v.get<double>(), 4) : "–") + " m"; });
+  fact("spacing", "particle spacing",
+       [](const json& v) { return (v.is_number() ? metres(v.get<double>(), 4) : "–") + " m"; });
   if (!pd) {  // PD bonds have a horizon, no kernel
     fact("smoothing_length", "smoothing length h", [](const json& v) { return number(v, 4) + " m"; });
     fact("kernel", "kernel", text);
@@ -144,16 +150,18 @@ void add_run_facts(const RunRecord& run, json& view) {
     double from = 0.0;
     for (const auto& [name, q] : hb["from_boundaries"].items()) from += q.get<double>();
     const double stored = hb.value("stored_change", 0.0);
-    rows.push_back(row("heat balance", fmt::format("stored change {} MJ/m, from the boundaries {} MJ/m", number(stored / 1e6, 2),
-                                                   number(from / 1e6, 2))));
+    rows.push_back(row("heat balance", fmt::format("stored change {} MJ/m, from the boundaries {} MJ/m",
+                                                   number(stored / 1e6, 2), number(from / 1e6, 2))));
   }
   if (const auto& e = run.summary.value("error_estimate", json::object()); e.contains("status")) {
     if (e["status"] == "done") {
       std::string spacings;
-      for (const auto& h : e.value("spacings", json::array())) spacings += (spacings.empty() ? "" : ", ") + metres(h.get<double>(), 4);
-      rows.push_back(row("error estimate", fmt::format("from three coarser runs (spacings {} m; {} s): the ± values are the "
-                                                       "discretisation's error only, not the soil data's or the model's",
-                                                       spacings, number(e.value("coarse_seconds", json()), 1))));
+      for (const auto& h : e.value("spacings", json::array()))
+        spacings += (spacings.empty() ? "" : ", ") + metres(h.get<double>(), 4);
+      rows.push_back(
+          row("error estimate", fmt::format("from three coarser runs (spacings {} m; {} s): the ± values are the "
+                                            "discretisation's error only, not the soil data's or the model's",
+                                            spacings, number(e.value("coarse_seconds", json()), 1))));
     } else {
       rows.push_back(row("error estimate", "none: " + e.value("reason", std::string())));
     }
@@ -170,7 +178,8 @@ void add_run_facts(const RunRecord& run, json& view) {
       {"monitoring.csv", "sensor temperatures over time"},
       {"brine.csv", "brine pipes: pipe wall temperature and heat extracted per metre over time"},
       {"damage.csv", "broken bonds, largest damage and damaged area at every mechanical equilibrium"},
-      {"field.pvd", run.shaft() ? "ParaView: the wedge's particles at every snapshot" : "ParaView: the particles at every snapshot"},
+      {"field.pvd",
+       run.shaft() ? "ParaView: the wedge's particles at every snapshot" : "ParaView: the particles at every snapshot"},
       {"ring.pvd", "ParaView: the whole ring at every snapshot"},
   };
   json files = json::array();
@@ -179,7 +188,8 @@ void add_run_facts(const RunRecord& run, json& view) {
   std::vector<std::string> series;
   for (const auto& entry : fs::directory_iterator(run.dir)) {
     const std::string name = entry.path().filename().string();
-    if ((name.rfind("field_", 0) == 0 || name.rfind("ring_", 0) == 0) && entry.path().extension() == ".vtu") series.push_back(name);
+    if ((name.rfind("field_", 0) == 0 || name.rfind("ring_", 0) == 0) && entry.path().extension() == ".vtu")
+      series.push_back(name);
     if (name.rfind("interface", 0) == 0 && entry.path().extension() == ".vtp") series.push_back(name);
   }
   std::sort(series.begin(), series.end());
@@ -197,7 +207,8 @@ void add_run_facts(const RunRecord& run, json& view) {
 json report_view(const fs::path& dir) {
   detail::RunRecord run;
   run.dir = dir;
-  if (!fs::exists(dir / "summary.json")) throw std::runtime_error(dir.string() + ": no summary.json (not a frostwall output directory?)");
+  if (!fs::exists(dir / "summary.json"))
+    throw std::runtime_error(dir.string() + ": no summary.json (not a frostwall output directory?)");
   run.summary = read_json(dir / "summary.json");
   // A layered shaft: the maps, charts and files are the governing layer's.
   std::string layer_prefix;

@@ -53,7 +53,8 @@ json chart(const std::string& id, const Chart& c, const std::string& caption) {
 
 }  // namespace
 
-Chart line_chart(const std::string& title, const std::string& x_label, const std::string& y_label, std::vector<Series> series) {
+Chart line_chart(const std::string& title, const std::string& x_label, const std::string& y_label,
+                 std::vector<Series> series) {
   Chart c;
   c.title = title;
   c.x_label = x_label;
@@ -74,28 +75,33 @@ void add_cfd_dem(const RunRecord& run, json& view) {
   json snapshots = json::array();
   for (const auto& sn : s.value("snapshots", json::array())) {
     const auto& f = sn["mean_fluid_force_N"];
-    snapshots.push_back({{"time", number(sn["time"], 4)},
-                         {"grains", number(sn["grains_in_soil"], 0)},
-                         {"porosity", number(sn["porosity"], 4)},
-                         {"bed_length", number(sn["bed_length_m"].get<double>() * 1000.0, 2)},
-                         {"contacts", number(sn["contacts"], 0)},
-                         {"force", fmt::format("{:.3e}", std::hypot(f[0].get<double>(), f[1].get<double>(), f[2].get<double>()))},
-                         {"pressure_drop", number(sn["pressure_drop_Pa"], 2)}});
+    snapshots.push_back(
+        {{"time", number(sn["time"], 4)},
+         {"grains", number(sn["grains_in_soil"], 0)},
+         {"porosity", number(sn["porosity"], 4)},
+         {"bed_length", number(sn["bed_length_m"].get<double>() * 1000.0, 2)},
+         {"contacts", number(sn["contacts"], 0)},
+         {"force", fmt::format("{:.3e}", std::hypot(f[0].get<double>(), f[1].get<double>(), f[2].get<double>()))},
+         {"pressure_drop", number(sn["pressure_drop_Pa"], 2)}});
   }
   view["cfd_dem_snapshots"] = snapshots;
   json fluid_rows = json::array();
   if (const auto it = s.find("minimum_fluidisation"); it != s.end()) {
     const json& f = *it;
-    auto speed = [&](const char* key) { return f.contains(key) && f[key].is_number() ? number(f[key], 5) + " m/s" : std::string("not reached"); };
+    auto speed = [&](const char* key) {
+      return f.contains(key) && f[key].is_number() ? number(f[key], 5) + " m/s" : std::string("not reached");
+    };
     fluid_rows.push_back(row("minimum fluidisation velocity (pressure drop meets its plateau)", speed("velocity_m_s")));
     fluid_rows.push_back(row("Ergun's, for the bed as settled", speed("ergun_velocity_m_s")));
     fluid_rows.push_back(row("lift-off (bed 0.5 % longer)", speed("lift_velocity_m_s")));
-    fluid_rows.push_back(row("plateau pressure drop / buoyant weight", number(f.value("plateau_pressure_drop_Pa", NAN), 2) + " / " +
-                                                                           number(f["buoyant_weight_Pa"], 2) + " Pa"));
+    fluid_rows.push_back(
+        row("plateau pressure drop / buoyant weight",
+            number(f.value("plateau_pressure_drop_Pa", NAN), 2) + " / " + number(f["buoyant_weight_Pa"], 2) + " Pa"));
     fluid_rows.push_back(row("gradient at fluidisation / critical (G_s - 1)(1 - n)",
                              number(f.value("gradient", NAN), 3) + " / " + number(f["critical_gradient"], 3)));
-    fluid_rows.push_back(row("bed as settled: porosity, length", number(f["porosity"], 4) + ", " +
-                                                                     number(f["bed_length_m"].get<double>() * 1000.0, 2) + " mm"));
+    fluid_rows.push_back(
+        row("bed as settled: porosity, length",
+            number(f["porosity"], 4) + ", " + number(f["bed_length_m"].get<double>() * 1000.0, 2) + " mm"));
   }
   view["has_fluidisation"] = !fluid_rows.empty();
   view["fluidisation_rows"] = fluid_rows;
@@ -108,27 +114,32 @@ void add_cfd_dem(const RunRecord& run, json& view) {
   };
   const auto t = column("time_s");
   if (!t.empty()) {
-    Chart dp = line_chart("Pressure drop", "time (s)", "pressure drop (Pa)", {line("inflow to outflow face", t, column("pressure_drop_Pa"))});
+    Chart dp = line_chart("Pressure drop", "time (s)", "pressure drop (Pa)",
+                          {line("inflow to outflow face", t, column("pressure_drop_Pa"))});
     if (const auto it = s.find("minimum_fluidisation"); it != s.end())
       dp.guides.push_back(Guide{false, (*it)["buoyant_weight_Pa"].get<double>(), "buoyant weight"});
-    charts.push_back(chart("pressure_drop", dp, "The excess pressure at the inflow face less that at the outflow face."));
+    charts.push_back(
+        chart("pressure_drop", dp, "The excess pressure at the inflow face less that at the outflow face."));
     if (s.contains("ergun")) {
       Series points = line("", column("inflow_velocity_m_s"), column("pressure_drop_Pa"));
       points.markers = true;
-      Chart du = line_chart("Pressure drop against the Darcy velocity", "Darcy velocity (m/s)", "pressure drop (Pa)", {points});
+      Chart du = line_chart("Pressure drop against the Darcy velocity", "Darcy velocity (m/s)", "pressure drop (Pa)",
+                            {points});
       du.guides = dp.guides;
       du.x_include = {0.0};
       du.y_include = {0.0};
-      charts.push_back(chart("pressure_drop_velocity", du, "A fixed bed's pressure drop rises with the flow; a bed that fluidises holds its buoyant weight."));
+      charts.push_back(
+          chart("pressure_drop_velocity", du,
+                "A fixed bed's pressure drop rises with the flow; a bed that fluidises holds its buoyant weight."));
     }
     Chart bed = line_chart("Bed porosity", "time (s)", "porosity", {line("", t, column("porosity"))});
     charts.push_back(chart("porosity", bed, "One less the grains' volume over the bed's (area times length)."));
     Chart contacts = line_chart("Contacts", "time (s)", "grain-grain contacts", {line("", t, column("contacts"))});
     charts.push_back(chart("contacts", contacts, "Contacts between grains (walls not counted)."));
-    Chart force = line_chart("Mean fluid force per grain along the bed axis", "time (s)", "force (N)",
-                             {line("drag", t, column("mean_drag_N")),
-                              line("pressure gradient", t, column("mean_pressure_gradient_force_N")),
-                              line("buoyancy", t, column("mean_buoyancy_N"))});
+    Chart force = line_chart(
+        "Mean fluid force per grain along the bed axis", "time (s)", "force (N)",
+        {line("drag", t, column("mean_drag_N")), line("pressure gradient", t, column("mean_pressure_gradient_force_N")),
+         line("buoyancy", t, column("mean_buoyancy_N"))});
     charts.push_back(chart("fluid_force", force, "Signed along the bed axis, away from the face the grains rest on."));
     Chart settling = line_chart("Settling velocity", "time (s)", "mean velocity along gravity (m/s)",
                                 {line("", t, column("settling_velocity_m_s"))});
@@ -145,7 +156,8 @@ void add_cfd_dem(const RunRecord& run, json& view) {
   rows.push_back(row("wall time", number(s.value("wall_time_s", NAN), 1) + " s"));
   rows.push_back(row("coupling share of the wall time", number(100.0 * s.value("coupling_share", NAN), 1) + " %"));
   if (s.contains("packing"))
-    rows.push_back(row("packing", s["packing"].value("read_from_cache", false) ? "read from the cache" : "placed and settled here"));
+    rows.push_back(row(
+        "packing", s["packing"].value("read_from_cache", false) ? "read from the cache" : "placed and settled here"));
   rows.push_back(row("frostwall version", s.value("frostwall_version", "?")));
   view["run_rows"] = rows;
   const std::vector<std::pair<std::string, std::string>> known{

@@ -29,7 +29,8 @@ std::optional<double> closure_day(const json& summary) {
 }
 
 std::optional<double> design_value(const json& summary, const char* key) {
-  if (!summary.contains("design") || !summary["design"].contains(key) || !summary["design"][key].is_number()) return std::nullopt;
+  if (!summary.contains("design") || !summary["design"].contains(key) || !summary["design"][key].is_number())
+    return std::nullopt;
   return summary["design"][key].get<double>();
 }
 
@@ -51,8 +52,11 @@ std::vector<double> ring_radii(const RunRecord& run) {
 // Returns the largest error drawn (0: none).
 double add_thickness_error_bars(const json& summary, Chart& chart) {
   double largest = 0.0;
-  const struct { const char* parent; const char* key; const char* colour; } bars[] = {
-      {nullptr, "min_thickness", "#000000"}, {"OB", "thickness", "#E69F00"}};
+  const struct {
+    const char* parent;
+    const char* key;
+    const char* colour;
+  } bars[] = {{nullptr, "min_thickness", "#000000"}, {"OB", "thickness", "#E69F00"}};
   for (const auto& b : bars) {
     ErrorBars s;
     s.colour = b.colour;
@@ -86,27 +90,36 @@ void wall_charts(const RunRecord& run, json& charts) {
   t.x_include = {0.0};
   t.y_include = {0.0};
   // The thinnest ray is often OB itself: drawn last, thin, on top of a wide OB.
-  const struct { const char* column; const char* label; std::string colour; bool dashed; double width; } lines[] = {
+  const struct {
+    const char* column;
+    const char* label;
+    std::string colour;
+    bool dashed;
+    double width;
+  } lines[] = {
       {"OA_thickness_m", "OA (through a pipe)", "#0072B2", true, 1.6},
       {"OB_thickness_m", "OB (between pipes)", "#E69F00", false, 3.2},
       {"min_thickness_m", "thinnest ray", "#000000", false, 1.2},
   };
   for (const auto& l : lines)
-    if (const auto* c = wall.column(l.column)) t.series.push_back({l.label, *day, *c, l.colour, l.dashed, false, l.width});
+    if (const auto* c = wall.column(l.column))
+      t.series.push_back({l.label, *day, *c, l.colour, l.dashed, false, l.width});
   const double largest_error = add_thickness_error_bars(run.summary, t);
   t.guides = closure_guide;
   if (const auto req = design_value(run.summary, "required_thickness"))
     t.guides.push_back({false, *req, fmt::format("required {} m", number(*req, 2))});
   const std::string bars =
-      largest_error > 0.0 ? fmt::format(" The dots at the snapshot days carry the estimated numerical error of OB and of the "
-                                        "thinnest ray as bars (at most ± {} m here; smaller ones hide behind their dot).",
-                                        number(largest_error, 3))
-                          : std::string();
+      largest_error > 0.0
+          ? fmt::format(" The dots at the snapshot days carry the estimated numerical error of OB and of the "
+                        "thinnest ray as bars (at most ± {} m here; smaller ones hide behind their dot).",
+                        number(largest_error, 3))
+          : std::string();
   charts.push_back(figure("thickness", "Wall thickness", t,
                           "Longest frozen stretch (liquid fraction at most 0.5) containing a ring of pipes, on OA, "
                           "on OB and on the thinnest ray of the wedge. Until the columns touch only the ground around "
                           "the pipes is frozen, so OB and the thinnest ray read zero; closure (the line) follows when "
-                          "a fully frozen path has formed." + bars));
+                          "a fully frozen path has formed." +
+                              bars));
 
   if (const auto* T = wall.column("mean_temperature_OB_C")) {
     Chart m;
@@ -150,7 +163,8 @@ void profile_chart(const RunRecord& run, const std::string& ray, json& charts) {
       c.guides.push_back({true, *s->shaft.excavation_radius, "excavation"});
   const std::string where = ray == "OA" ? "through a pipe of the outer ring" : "halfway between two outer pipes";
   charts.push_back(figure("profile-" + ray, "Temperature along " + ray, c,
-                          "Temperature on the ray " + ray + " (" + where + ") at each snapshot; dashed verticals: pipe rings and excavation."));
+                          "Temperature on the ray " + ray + " (" + where +
+                              ") at each snapshot; dashed verticals: pipe rings and excavation."));
 }
 
 void sensor_chart(const RunRecord& run, json& charts) {
@@ -169,7 +183,8 @@ void sensor_chart(const RunRecord& run, json& charts) {
     c.x_include = {0.0};
     for (std::size_t k = 1; k < t.header.size(); ++k) {
       const std::string& name = t.header[k];
-      if (name.size() <= suffix.size() || name.compare(name.size() - suffix.size(), suffix.size(), suffix) != 0) continue;
+      if (name.size() <= suffix.size() || name.compare(name.size() - suffix.size(), suffix.size(), suffix) != 0)
+        continue;
       std::vector<double> y = t.columns[k];
       for (double& v : y) v *= scale;
       c.series.push_back({name.substr(0, name.size() - suffix.size()), *time, y, "", false, false});
@@ -178,13 +193,15 @@ void sensor_chart(const RunRecord& run, json& charts) {
   };
   Chart c = chart_of("_C", "sensor temperatures over time", "temperature (°C)", 1.0);
   if (run.phase_change()) c.guides.push_back({false, run.freezing_point(), "freezing point"});
-  charts.push_back(figure("sensors", "Sensors", c, "Temperature at the monitoring points (thermometer holes) of the project."));
+  charts.push_back(
+      figure("sensors", "Sensors", c, "Temperature at the monitoring points (thermometer holes) of the project."));
   if (t.column(t.header.size() > 1 ? t.header[1].substr(0, t.header[1].size() - 2) + "_ux_m" : "")) {
     for (const auto& [suffix, axis] : {std::pair{std::string("_ux_m"), "x"}, std::pair{std::string("_uy_m"), "y"}})
-      charts.push_back(figure("sensors-u" + std::string(axis), std::string("Sensors: displacement along ") + axis,
-                              chart_of(suffix, std::string("displacement along ") + axis + " over time",
-                                       std::string("u") + axis + " (µm)", 1e6),
-                              std::string("Displacement along ") + axis + " at the monitoring points (PD solid, linear MLS)."));
+      charts.push_back(
+          figure("sensors-u" + std::string(axis), std::string("Sensors: displacement along ") + axis,
+                 chart_of(suffix, std::string("displacement along ") + axis + " over time",
+                          std::string("u") + axis + " (µm)", 1e6),
+                 std::string("Displacement along ") + axis + " at the monitoring points (PD solid, linear MLS)."));
     charts.push_back(figure("sensors-damage", "Sensors: damage", chart_of("_damage", "damage over time", "damage", 1.0),
                             "Share of broken bonds at the monitoring points."));
   }
@@ -206,7 +223,8 @@ void front_chart(const RunRecord& run, json& charts) {
   c.x_include = {0.0};
   c.y_include = {0.0};
   c.series.push_back(s);
-  charts.push_back(figure("front", "Frozen front", c, "Position of the frozen front from the cooled face along the problem's main axis."));
+  charts.push_back(figure("front", "Frozen front", c,
+                          "Position of the frozen front from the cooled face along the problem's main axis."));
 }
 
 }  // namespace

@@ -41,12 +41,14 @@ std::string verdict(const json& summary, const std::string& where) {
   const json d = summary.value("design", json::object());
   const json wall = summary.value("wall", json::array());
   const std::string last_day = wall.empty() ? "the end" : number(wall.back()["day"], 0);
-  const std::string u =
-      wall.empty() ? "–" : with_error(wall.back().value("utilisation", json()), wall.back().value("utilisation_error", json()), 2);
+  const std::string u = wall.empty() ? "–"
+                                     : with_error(wall.back().value("utilisation", json()),
+                                                  wall.back().value("utilisation_error", json()), 2);
   // A wall that passes and later fails again (a pipe lost, a warm spell of brine) says so.
   const std::string again = d.value("stays_met", true) ? "" : " (but not for good: it fails again later)";
   const std::string met = d.value("met_day", json()).is_number()
-                              ? fmt::format("design met on day {}{}{}", with_error(d["met_day"], d.value("met_day_error", json()), 0), where, again)
+                              ? fmt::format("design met on day {}{}{}",
+                                            with_error(d["met_day"], d.value("met_day_error", json()), 0), where, again)
                               : fmt::format("design not met by day {}{}", last_day, where);
   return fmt::format("{}; utilisation {} on day {}", met, u, last_day);
 }
@@ -69,7 +71,8 @@ void add_design(const RunRecord& run, json& view) {
   const json& s = run.summary;
   const json d = s.value("design", json::object());
   view["has_wall_check"] = d.contains("met_day");
-  for (const char* key : {"wall_check_note", "wall_check_svg", "brine_svg", "brine_heat_svg", "brine_note"}) view[key] = "";
+  for (const char* key : {"wall_check_note", "wall_check_svg", "brine_svg", "brine_heat_svg", "brine_note"})
+    view[key] = "";
   view["formula_rows"] = json::array();
   view["layer_rows"] = json::array();
   view["has_layers"] = s.contains("layers");
@@ -79,18 +82,20 @@ void add_design(const RunRecord& run, json& view) {
     view["wall_check_note"] = fmt::format(
         "{}. The governing formula is {}; the lateral pressure {} MPa; the allowable strength is {} of the frozen soil's "
         "strength at the mean temperature of the wall on {}. Utilisation = required ÷ achieved thickness.",
-        design_verdict(s), formula_label(d.value("formula", "")), number(d["pressure_MPa"], 3), number(d["allowable_factor"], 2),
-        d.value("measured_on", std::string("the thinnest ray")));
+        design_verdict(s), formula_label(d.value("formula", "")), number(d["pressure_MPa"], 3),
+        number(d["allowable_factor"], 2), d.value("measured_on", std::string("the thinnest ray")));
     if (!wall.empty()) {
       const json last = wall.back();
       const std::string governing = d.value("formula", "");
       for (const auto& f : formulas) {
         const json E = last["required_by"].value(f.key, json());
-        const bool unset = std::string_view(f.key) == "plastic_mohr_coulomb" && !d.value("friction_angle", json()).is_number();
-        view["formula_rows"].push_back({{"formula", std::string(f.label) + (f.key == governing ? " (governing)" : "")},
-                                        {"required", E.is_number() ? number(E, 2) + " m"
-                                                                   : std::string(unset ? "– (no friction angle given)" : "invalid")},
-                                        {"valid_when", f.valid_when}});
+        const bool unset = std::string_view(f.key) == "plastic_mohr_coulomb" &&
+                           !d.value("friction_angle", json()).is_number();
+        view["formula_rows"].push_back(
+            {{"formula", std::string(f.label) + (f.key == governing ? " (governing)" : "")},
+             {"required",
+              E.is_number() ? number(E, 2) + " m" : std::string(unset ? "– (no friction angle given)" : "invalid")},
+             {"valid_when", f.valid_when}});
       }
     }
     // Required against achieved over time: each layer, or the one run.
@@ -100,7 +105,8 @@ void add_design(const RunRecord& run, json& view) {
       for (const auto& w : summary.value("wall", json::array())) {
         const double day = w["day"].get<double>();
         req.x.push_back(day), got.x.push_back(day);
-        req.y.push_back(w.value("required_thickness", json()).is_number() ? w["required_thickness"].get<double>() : NAN);
+        req.y.push_back(w.value("required_thickness", json()).is_number() ? w["required_thickness"].get<double>()
+                                                                          : NAN);
         got.y.push_back(achieved(w).is_number() ? achieved(w).get<double>() : NAN);
       }
       req.label = name + " required", got.label = name + " achieved";
@@ -124,20 +130,22 @@ void add_design(const RunRecord& run, json& view) {
     const json last = wall.empty() ? json::object() : wall.back();
     const json& layer = l["layer"];
     const json ld = l.value("design", json::object());
-    const json T = last.contains("isotherm_mean_temperature") ? last["isotherm_mean_temperature"] : last.value("mean_temperature_thinnest", json());
-    view["layer_rows"].push_back({{"name", layer.value("name", "")},
-                                  {"governing", layer.value("governing", false) ? "governs" : ""},
-                                  {"depth", number(layer["depth"], 0)},
-                                  {"soil", layer.value("soil", "")},
-                                  {"pressure", number(layer["pressure_MPa"], 2)},
-                                  {"closure", number(l.value("closure_time_days", json()), 1)},
-                                  {"thinnest", number(achieved(last), 2)},
-                                  {"mean_temperature", number(T, 1)},
-                                  {"required", number(last.value("required_thickness", json()), 2)},
-                                  {"utilisation", number(last.value("utilisation", json()), 2)},
-                                  {"met_day", ld.value("met_day", json()).is_number() ? number(ld["met_day"], 0) : std::string("not met")},
-                                  {"verdict", verdict(l, "")},
-                                  {"report", layer.value("directory", "") + "/report.html"}});
+    const json T = last.contains("isotherm_mean_temperature") ? last["isotherm_mean_temperature"]
+                                                              : last.value("mean_temperature_thinnest", json());
+    view["layer_rows"].push_back(
+        {{"name", layer.value("name", "")},
+         {"governing", layer.value("governing", false) ? "governs" : ""},
+         {"depth", number(layer["depth"], 0)},
+         {"soil", layer.value("soil", "")},
+         {"pressure", number(layer["pressure_MPa"], 2)},
+         {"closure", number(l.value("closure_time_days", json()), 1)},
+         {"thinnest", number(achieved(last), 2)},
+         {"mean_temperature", number(T, 1)},
+         {"required", number(last.value("required_thickness", json()), 2)},
+         {"utilisation", number(last.value("utilisation", json()), 2)},
+         {"met_day", ld.value("met_day", json()).is_number() ? number(ld["met_day"], 0) : std::string("not met")},
+         {"verdict", verdict(l, "")},
+         {"report", layer.value("directory", "") + "/report.html"}});
   }
   if (s.contains("brine")) {
     const json& b = s["brine"];

@@ -43,7 +43,8 @@ std::string short_number(double t) {
 }
 
 // Matrix, pore water, pore ice: apart in lightness too (mid, dark, light).
-constexpr std::array<std::array<std::uint8_t, 3>, 3> material_colour{{{189, 181, 166}, {31, 104, 180}, {196, 234, 247}}};
+constexpr std::array<std::array<std::uint8_t, 3>, 3> material_colour{
+    {{189, 181, 166}, {31, 104, 180}, {196, 234, 247}}};
 constexpr std::array<const char*, 3> material_name{"matrix", "pore water", "pore ice"};
 
 // The material map's legend, as tall as a colour bar.
@@ -55,9 +56,10 @@ std::string material_legend_svg() {
   double x = 24;
   for (std::size_t m = 0; m < material_name.size(); ++m) {
     const auto& c = material_colour[m];
-    o += fmt::format(R"(<rect x="{}" y="6" width="18" height="14" fill="#{:02x}{:02x}{:02x}" stroke="#222" stroke-width="0.8"/>)"
-                     R"(<text x="{}" y="17" fill="#222">{}</text>)",
-                     svg::num(x), c[0], c[1], c[2], svg::num(x + 24), material_name[m]);
+    o += fmt::format(
+        R"(<rect x="{}" y="6" width="18" height="14" fill="#{:02x}{:02x}{:02x}" stroke="#222" stroke-width="0.8"/>)"
+        R"(<text x="{}" y="17" fill="#222">{}</text>)",
+        svg::num(x), c[0], c[1], c[2], svg::num(x + 24), material_name[m]);
     x += 24 + svg::text_width(material_name[m], 11) + 18;
   }
   return o + R"(<text x="170" y="54" text-anchor="middle" fill="#222">material</text></svg>)";
@@ -68,7 +70,8 @@ std::string material_legend_svg() {
 std::string area_text(double a, const RunRecord& run) {
   if (!std::isfinite(a)) return "–";
   const double v = a < 1e-6 ? 1e12 * a : 1e6 * a;
-  std::string o = fmt::format("{} {}", v >= 1000 ? fmt::format("{:.0f}", v) : fmt::format("{:.3g}", v), a < 1e-6 ? "µm²" : "mm²");
+  std::string o =
+      fmt::format("{} {}", v >= 1000 ? fmt::format("{:.0f}", v) : fmt::format("{:.3g}", v), a < 1e-6 ? "µm²" : "mm²");
   if (run.project)
     if (const auto* r = std::get_if<project::Rectangle>(&run.project->geometry); r && r->width * r->height > 0)
       o += fmt::format(", {:.3g} % of the plate", 100.0 * a / (r->width * r->height));
@@ -85,7 +88,9 @@ DamageSeries damage_series(const RunRecord& run) {
   DamageSeries d;
   if (fs::exists(run.dir / "damage.csv")) {
     const CsvTable t = read_csv(run.dir / "damage.csv");
-    auto column = [&](const char* name) { return t.column(name) ? *t.column(name) : std::vector<double>(t.rows(), nan); };
+    auto column = [&](const char* name) {
+      return t.column(name) ? *t.column(name) : std::vector<double>(t.rows(), nan);
+    };
     d = {column("time"), column("broken_bond_share"), column("largest_damage"), column("damaged_area"), "damage.csv"};
     return d;
   }
@@ -112,8 +117,10 @@ void add_frost_maps(const RunRecord& run, const std::string& unit, json& view) {
     snapshots.emplace_back(e.time, std::move(s));
   }
   if (snapshots.empty()) {
-    view["frost_maps_note"] = run.mechanics() ? "No snapshots with the pores' material in this directory (output.vtk off?), so no maps."
-                                              : "No solid was modelled (no mechanics block): the temperature maps are above; there is no damage.";
+    view["frost_maps_note"] =
+        run.mechanics()
+            ? "No snapshots with the pores' material in this directory (output.vtk off?), so no maps."
+            : "No solid was modelled (no mechanics block): the temperature maps are above; there is no damage.";
     return;
   }
   const json facts = run.summary.value("run", json::object());
@@ -132,8 +139,9 @@ void add_frost_maps(const RunRecord& run, const std::string& unit, json& view) {
     for (int m : s.material) colours.push_back(material_colour[std::size_t(std::clamp(m, 0, 2))]);
     const std::string title = fmt::format("t = {:g} {}", t, unit);
     json maps = json::array();
-    maps.push_back({{"html", map_html(cloud.raster(s.temperature, temperature), window, "temperature", {}, MapOverlay{}, title)},
-                    {"caption", fmt::format("temperature (°C) at {:g} {}", t, unit)}});
+    maps.push_back(
+        {{"html", map_html(cloud.raster(s.temperature, temperature), window, "temperature", {}, MapOverlay{}, title)},
+         {"caption", fmt::format("temperature (°C) at {:g} {}", t, unit)}});
     maps.push_back({{"html", map.html(map.nearest_raster(colours), "material", {}, true, MapOverlay{}, title)},
                     {"caption", fmt::format("matrix, pore water and pore ice at {:g} {}", t, unit)}});
     maps.push_back({{"html", map_html(cloud.raster(s.damage, damage), window, "damage", {}, MapOverlay{}, title)},
@@ -208,8 +216,9 @@ void add_frost(const RunRecord& run, json& view) {
   view["frost_has_maps"] = false;
   view["has_crack_rows"] = false;
   for (const char* key : {"frost_snapshots", "frost_charts", "pore_rows", "crack_rows"}) view[key] = json::array();
-  for (const char* key : {"frost_note", "frost_maps_note", "frost_temperature_bar_svg", "frost_material_legend_svg",
-                          "frost_damage_bar_svg", "pore_bars_svg", "pore_bars_caption", "frost_time_unit", "crack_note"})
+  for (const char* key :
+       {"frost_note", "frost_maps_note", "frost_temperature_bar_svg", "frost_material_legend_svg",
+        "frost_damage_bar_svg", "pore_bars_svg", "pore_bars_caption", "frost_time_unit", "crack_note"})
     view[key] = "";
   if (!run.summary.contains("pores") || !run.summary["pores"].is_array()) return;
   view["has_frost"] = true;
@@ -243,15 +252,16 @@ void add_frost(const RunRecord& run, json& view) {
     bars.bars.push_back({"pore " + id, start, stop});
     started += std::isfinite(start), finished += std::isfinite(start) && std::isfinite(stop);
     if (std::isfinite(start)) first_start = std::isfinite(first_start) ? std::min(first_start, start) : start;
-    rows.push_back({{"pore", id},
-                    {"centre_x", number(1e6 * value_of(p.value("x", json())), 1)},
-                    {"centre_y", number(1e6 * value_of(p.value("y", json())), 1)},
-                    {"radius", number(1e6 * value_of(p.value("radius", json())), 1)},
-                    {"saturation", saturation_text(p)},
-                    {"freezing_start", short_number(start)},
-                    {"freezing_end", short_number(stop)},
-                    {"max_rim_damage", number(p.value("max_rim_damage", json()), 2)},
-                    {"crack_reach", number(value_of(p.value("crack_reach", json())) / value_of(p.value("radius", json())), 2)}});
+    rows.push_back(
+        {{"pore", id},
+         {"centre_x", number(1e6 * value_of(p.value("x", json())), 1)},
+         {"centre_y", number(1e6 * value_of(p.value("y", json())), 1)},
+         {"radius", number(1e6 * value_of(p.value("radius", json())), 1)},
+         {"saturation", saturation_text(p)},
+         {"freezing_start", short_number(start)},
+         {"freezing_end", short_number(stop)},
+         {"max_rim_damage", number(p.value("max_rim_damage", json()), 2)},
+         {"crack_reach", number(value_of(p.value("crack_reach", json())) / value_of(p.value("radius", json())), 2)}});
   }
   bars.width = 720;
   view["pore_rows"] = rows;
@@ -270,12 +280,15 @@ void add_frost(const RunRecord& run, json& view) {
   const std::string source = d.source == "damage.csv" ? "damage.csv, one point per mechanical equilibrium"
                                                       : "summary.json, one point per snapshot";
   if (!d.time.empty())
-    view["frost_charts"] = json::array(
-        {{{"id", "frost-broken-bonds"}, {"title", "Broken bonds"}, {"svg", render_svg(damage_chart(d, true, all_frozen, unit))},
-          {"caption", "Broken bonds as a share of all bonds of the plate (" + source + ")."}},
-         {{"id", "frost-largest-damage"}, {"title", "Largest damage"},
-          {"svg", render_svg(damage_chart(d, false, all_frozen, unit))},
-          {"caption", "The largest damage of any particle, its share of broken bonds (" + source + ")."}}});
+    view["frost_charts"] =
+        json::array({{{"id", "frost-broken-bonds"},
+                      {"title", "Broken bonds"},
+                      {"svg", render_svg(damage_chart(d, true, all_frozen, unit))},
+                      {"caption", "Broken bonds as a share of all bonds of the plate (" + source + ")."}},
+                     {{"id", "frost-largest-damage"},
+                      {"title", "Largest damage"},
+                      {"svg", render_svg(damage_chart(d, false, all_frozen, unit))},
+                      {"caption", "The largest damage of any particle, its share of broken bonds (" + source + ")."}}});
 
   std::string note = fmt::format("{} water-filled pores; ", pores.size());
   if (std::isfinite(all_frozen)) note += fmt::format("all frozen at {} {}", short_number(all_frozen), unit);
@@ -283,9 +296,10 @@ void add_frost(const RunRecord& run, json& view) {
   if (std::isfinite(first_start)) note += fmt::format(" (the first ice at {} {})", short_number(first_start), unit);
   note += ".";
   if (!d.time.empty())
-    note += fmt::format(" At {} {}: {:.3g} % of the bonds broken, largest damage {}, damaged area (damage above 0.4) {}.",
-                        short_number(d.time.back()), unit, 100.0 * d.broken_share.back(), number(d.largest.back(), 2),
-                        area_text(d.area.back(), run));
+    note +=
+        fmt::format(" At {} {}: {:.3g} % of the bonds broken, largest damage {}, damaged area (damage above 0.4) {}.",
+                    short_number(d.time.back()), unit, 100.0 * d.broken_share.back(), number(d.largest.back(), 2),
+                    area_text(d.area.back(), run));
   view["frost_note"] = note;
   add_crack_table(run, view);
   add_frost_maps(run, unit, view);

@@ -20,15 +20,16 @@ void add_groundwater(const RunRecord& run, json& view) {
   const json& g = run.summary["groundwater"];
   view["has_groundwater"] = true;
   const auto& q = g.value("darcy_flux_m_per_day", json::array({0.0, 0.0}));
-  view["groundwater_note"] = fmt::format(
-      "Regional Darcy flux ({}, {}) m/d; permeability {:.3g} m²; law {}; the flow was solved {} times. {}.",
-      number(q[0], 2), number(q[1], 2), g.value("permeability_m2", 0.0), g.value("permeability_law", ""),
-      g.value("flow_solves", 0), g.value("verdict", ""));
+  view["groundwater_note"] =
+      fmt::format("Regional Darcy flux ({}, {}) m/d; permeability {:.3g} m²; law {}; the flow was solved {} times. {}.",
+                  number(q[0], 2), number(q[1], 2), g.value("permeability_m2", 0.0), g.value("permeability_law", ""),
+                  g.value("flow_solves", 0), g.value("verdict", ""));
   std::vector<Series> series;
   for (const auto& gap : g.value("gaps", json::array())) {
-    view["groundwater_gaps"].push_back({{"between", gap.value("between", "")},
-                                        {"position", gap.value("position", "")},
-                                        {"closure_day", with_error(gap["closure_day"], gap.value("closure_day_error", json()), 2)}});
+    view["groundwater_gaps"].push_back(
+        {{"between", gap.value("between", "")},
+         {"position", gap.value("position", "")},
+         {"closure_day", with_error(gap["closure_day"], gap.value("closure_day_error", json()), 2)}});
     if (!gap.contains("flow")) continue;
     Series s;
     s.label = gap.value("between", "") + " (" + gap.value("position", "") + ")";

@@ -51,7 +51,8 @@ void sensor_temperature_cards(const RunRecord& run, const std::string& unit, jso
     const auto& last = series.back();
     const auto& errors = run.summary.value("monitoring_error", json::object()).value(name, json::array());
     const json error = !errors.empty() && errors.back().size() > 1 ? errors.back()[1] : json();
-    cards.push_back(card("Sensor " + name + ", " + at(value_of(last[0]), unit), with_error(last[1], error, 2) + " °C", "temperature"));
+    cards.push_back(card("Sensor " + name + ", " + at(value_of(last[0]), unit), with_error(last[1], error, 2) + " °C",
+                         "temperature"));
     ++shown;
   }
 }
@@ -84,15 +85,16 @@ void bond_cards(const RunRecord& run, const std::string& unit, json& cards) {
   cards.push_back(card("Broken bonds", bonds > 0 ? fmt::format("{:.3g} %", 100.0 * broken / bonds) : "–",
                        fmt::format("{:.0f} of {:.0f} bonds, at the end of the run", broken, bonds)));
   const auto& first = m.value("first_damage", json());
-  cards.push_back(first.is_object()
-                      ? card("First crack", at(value_of(first.value("time", json())), unit),
-                             fmt::format("first broken bonds near x = {}, y = {}", length(value_of(first.value("x", json()))),
-                                         length(value_of(first.value("y", json())))))
-                      : card("First crack", "none", "no bond broke within the run"));
+  cards.push_back(first.is_object() ? card("First crack", at(value_of(first.value("time", json())), unit),
+                                           fmt::format("first broken bonds near x = {}, y = {}",
+                                                       length(value_of(first.value("x", json()))),
+                                                       length(value_of(first.value("y", json())))))
+                                    : card("First crack", "none", "no bond broke within the run"));
   const auto& damage = run.summary.value("damage", json::array());
   if (!damage.empty() && damage.back().contains("crack_length"))
     cards.push_back(card("Crack length, " + at(value_of(damage.back().value("time", json())), unit),
-                         length(value_of(damage.back()["crack_length"])), "both faces of the cracks (damage above 0.4)"));
+                         length(value_of(damage.back()["crack_length"])),
+                         "both faces of the cracks (damage above 0.4)"));
   else if (m.contains("crack_length"))
     cards.push_back(card("Crack length", length(value_of(m["crack_length"])),
                          "at the end of the run; both faces of the cracks (damage above 0.4)"));
@@ -109,9 +111,10 @@ void pore_cards(const RunRecord& run, const std::string& unit, json& cards) {
     const double S = p.contains("saturation") ? value_of(p["saturation"]) : 1.0;
     if (std::isfinite(S)) lo = std::min(lo, S), hi = std::max(hi, S);
   }
-  cards.push_back(std::isfinite(all) ? card("All pores frozen by", at(all, unit), fmt::format("{} water-filled pores", pores.size()))
-                                     : card("Pores frozen", fmt::format("{} of {}", frozen, pores.size()),
-                                            "not all frozen within the run"));
+  cards.push_back(
+      std::isfinite(all)
+          ? card("All pores frozen by", at(all, unit), fmt::format("{} water-filled pores", pores.size()))
+          : card("Pores frozen", fmt::format("{} of {}", frozen, pores.size()), "not all frozen within the run"));
   if (told > 0 && run.mechanics())  // no solid, nothing to crack
     cards.push_back(card("Pores cracked", fmt::format("{} of {}", cracked, pores.size()),
                          "a broken bond within a horizon outside the rim"));

@@ -68,7 +68,8 @@ void add_maps(const RunRecord& run, json& view) {
     if (run.mechanics()) return;
     // A porous plate's frost section draws the temperature when the files hold its solid.
     if (run.frost())
-      if (const auto files = read_pvd(run.dir / "field.pvd"); !files.empty() && !read_solid(run.dir / files.front().file).damage.empty())
+      if (const auto files = read_pvd(run.dir / "field.pvd");
+          !files.empty() && !read_solid(run.dir / files.front().file).damage.empty())
         return;
     add_plain_maps(run, view);
     return;
@@ -93,7 +94,8 @@ void add_maps(const RunRecord& run, json& view) {
       overlay.domain_radius = s->outer_radius;
     }
   double ring = 0.0, inner = std::numeric_limits<double>::infinity();
-  for (const auto& p : pipes) ring = std::max(ring, std::hypot(p.x, p.y)), inner = std::min(inner, std::hypot(p.x, p.y));
+  for (const auto& p : pipes)
+    ring = std::max(ring, std::hypot(p.x, p.y)), inner = std::min(inner, std::hypot(p.x, p.y));
   if (ring == 0.0) {  // no project recorded: the wall's extent tells where to look
     for (const auto& w : run.summary["wall"])
       if (w["OA"]["outer"].is_number()) ring = std::max(ring, w["OA"]["outer"].get<double>());
@@ -141,9 +143,13 @@ void add_maps(const RunRecord& run, json& view) {
     const std::string title = fmt::format("day {:g}", snapshots[k].time);
     MapOverlay with_flow = overlay;
     with_flow.arrows = flow_arrows(fields[k], symmetry, window, overlay.domain_radius);
-    maps.push_back({{"html", map.html(fields[k].temperature, colours, curves, whole, with_flow, title)},
-                    {"caption", fmt::format("Temperature on day {:g}; black line: frozen front (liquid fraction 0.5){}.", snapshots[k].time,
-                                            with_flow.arrows.empty() ? "" : "; white arrows: the groundwater's Darcy flux (length to scale on this map)")}});
+    maps.push_back(
+        {{"html", map.html(fields[k].temperature, colours, curves, whole, with_flow, title)},
+         {"caption",
+          fmt::format("Temperature on day {:g}; black line: frozen front (liquid fraction 0.5){}.", snapshots[k].time,
+                      with_flow.arrows.empty()
+                          ? ""
+                          : "; white arrows: the groundwater's Darcy flux (length to scale on this map)")}});
   }
   view["maps"] = maps;
   view["has_maps"] = true;

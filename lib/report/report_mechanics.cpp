@@ -49,7 +49,8 @@ void add_mechanics(const RunRecord& run, json& view) {
   view["has_mechanics"] = false;
   view["has_damage_maps"] = false;
   view["mechanics_snapshots"] = json::array();
-  for (const char* key : {"mechanics_note", "mechanics_maps_note", "displacement_bar_svg", "damage_bar_svg"}) view[key] = "";
+  for (const char* key : {"mechanics_note", "mechanics_maps_note", "displacement_bar_svg", "damage_bar_svg"})
+    view[key] = "";
   view["mechanics_temperature_bar_svg"] = false;  // a section: false when there is none
   view["mechanics_grid"] = "maps";
   view["mechanics_heading"] = "Displacement";
@@ -62,17 +63,20 @@ void add_mechanics(const RunRecord& run, json& view) {
       m.value("equilibrium", "") == "direct"
           ? fmt::format("{} equilibria solved directly ({} factorizations, {} conjugate-gradient iterations)",
                         m.value("direct_solves", 0), m.value("factorizations", 0), m.value("relaxation_iterations", 0))
-          : fmt::format("{} relaxations ({} iterations of adaptive dynamic relaxation, {} unconverged)", m.value("relaxations", 0),
-                        m.value("relaxation_iterations", 0), m.value("unconverged_relaxations", 0));
-  view["mechanics_note"] = fmt::format("Bond-based peridynamics: {} bonds, horizon {} mm; {}; {} bonds broken; largest displacement {} µm.",
-                                       m.value("bonds", 0), number(1e3 * m.value("horizon", 0.0), 3), solver,
-                                       m.value("broken_bonds", 0), number(1e6 * m.value("largest_displacement", 0.0), 3));
+          : fmt::format("{} relaxations ({} iterations of adaptive dynamic relaxation, {} unconverged)",
+                        m.value("relaxations", 0), m.value("relaxation_iterations", 0),
+                        m.value("unconverged_relaxations", 0));
+  view["mechanics_note"] =
+      fmt::format("Bond-based peridynamics: {} bonds, horizon {} mm; {}; {} bonds broken; largest displacement {} µm.",
+                  m.value("bonds", 0), number(1e3 * m.value("horizon", 0.0), 3), solver, m.value("broken_bonds", 0),
+                  number(1e6 * m.value("largest_displacement", 0.0), 3));
   const SolidSeries solids = read_solids(run);
   if (solids.snapshot.empty()) {
     view["mechanics_maps_note"] = "No snapshots of the solid in this directory (output.vtk is off), so no maps.";
     return;
   }
-  const bool with_temperature = !run.frost() && solids.snapshot.front().temperature.size() == solids.snapshot.front().damage.size();
+  const bool with_temperature = !run.frost() &&
+                                solids.snapshot.front().temperature.size() == solids.snapshot.front().damage.size();
   const bool with_damage = !run.frost() && breakable && solids.largest_damage > 0.0;
   const auto& points = solids.snapshot.front().particles.position;
   const MapWindow window = window_over(points, facts.value("spacing", 0.0), 300);
@@ -90,7 +94,8 @@ void add_mechanics(const RunRecord& run, json& view) {
     const auto& s = solids.snapshot[k];
     const double t = solids.time[k];
     const std::string title = fmt::format("t = {:g} {}", t, unit);
-    auto map = [&](const std::vector<double>& v, const ColourScale& c, const std::string& what, const std::string& caption) {
+    auto map = [&](const std::vector<double>& v, const ColourScale& c, const std::string& what,
+                   const std::string& caption) {
       return json{{"html", map_html(cloud.raster(v, c), window, what, {}, MapOverlay{}, title)},
                   {"caption", fmt::format("{} at {:g} {}", caption, t, unit)}};
     };
@@ -109,13 +114,15 @@ void add_mechanics(const RunRecord& run, json& view) {
   }
   view["mechanics_snapshots"] = rows;
   view["has_damage_maps"] = with_damage;
-  view["mechanics_heading"] = with_temperature ? (with_damage ? "Temperature, displacement and damage" : "Temperature and displacement")
-                                               : (with_damage ? "Displacement and damage" : "Displacement");
+  view["mechanics_heading"] =
+      with_temperature ? (with_damage ? "Temperature, displacement and damage" : "Temperature and displacement")
+                       : (with_damage ? "Displacement and damage" : "Displacement");
   view["mechanics_grid"] = with_temperature == with_damage ? "maps3" : "maps";
   if (with_temperature) view["mechanics_temperature_bar_svg"] = temperature.colour_bar_svg(340);
   view["displacement_bar_svg"] = displacement.colour_bar_svg(340, "|displacement| (µm)");
   if (with_damage) view["damage_bar_svg"] = damage.colour_bar_svg(340, "damage (share of broken bonds)");
-  std::string note = "Each snapshot drawn on the particles' triangles, linear within each (as ParaView draws the VTK cells).";
+  std::string note =
+      "Each snapshot drawn on the particles' triangles, linear within each (as ParaView draws the VTK cells).";
   if (run.frost()) note += " The temperature and the damage of the plate are in the frost damage section.";
   else if (!breakable) note += " No damage maps: the bonds cannot break (the material has no fracture energy).";
   else if (!with_damage) note += " No damage maps: no bond broke within the run.";

@@ -72,9 +72,10 @@ void add_plain_maps(const RunRecord& run, json& view) {
     if (k < fronts.size() && fronts[k].contains("file") && fs::exists(run.dir / fronts[k]["file"].get<std::string>()))
       curves = read_polylines(run.dir / fronts[k]["file"].get<std::string>());
     const std::string title = fmt::format("t = {:g} {}", times[k], unit);
-    maps.push_back({{"html", map_html(cloud.raster(T[k], colours), window, "temperature", curves, MapOverlay{}, title)},
-                    {"caption", fmt::format("Temperature at {:g} {}{}.", times[k], unit,
-                                            curves.empty() ? "" : "; black line: frozen front (liquid fraction 0.5)")}});
+    maps.push_back(
+        {{"html", map_html(cloud.raster(T[k], colours), window, "temperature", curves, MapOverlay{}, title)},
+         {"caption", fmt::format("Temperature at {:g} {}{}.", times[k], unit,
+                                 curves.empty() ? "" : "; black line: frozen front (liquid fraction 0.5)")}});
   }
   view["maps"] = maps;
   view["has_maps"] = !maps.empty();
@@ -84,8 +85,9 @@ void add_plain_maps(const RunRecord& run, json& view) {
   view["maps_note"] = fmt::format(
       "The temperature of each snapshot on the particles' triangles, linear within each (as ParaView draws the VTK "
       "cells), on one colour scale{}.",
-      Tf > colours.lo() && Tf < colours.hi() ? fmt::format(" turning from blue to red at the freezing point ({} °C)", number(Tf, 1))
-                                             : std::string());
+      Tf > colours.lo() && Tf < colours.hi()
+          ? fmt::format(" turning from blue to red at the freezing point ({} °C)", number(Tf, 1))
+          : std::string());
 }
 
 }  // namespace frostwall::report::detail

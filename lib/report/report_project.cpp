@@ -62,8 +62,9 @@ void add_layout(const RunRecord& run, const project::ShaftSection& section, json
     }
   } else if (L.pattern == project::Pattern::rings) {
     for (std::size_t k = 0; k < L.rings.size(); ++k)
-      rows.push_back(row(fmt::format("ring {}", k), fmt::format("{} pipes on r = {} m, first at {}°", L.rings[k].count,
-                                                                 number(L.rings[k].radius, 2), number(L.rings[k].offset_deg, 1))));
+      rows.push_back(
+          row(fmt::format("ring {}", k), fmt::format("{} pipes on r = {} m, first at {}°", L.rings[k].count,
+                                                     number(L.rings[k].radius, 2), number(L.rings[k].offset_deg, 1))));
   }
   rows.push_back(row("pipes", fmt::format("{} in all, outer diameter {} mm ({} model)", pipes.size(),
                                           number(section.pipe.diameter * 1000, 1),
@@ -98,10 +99,22 @@ void add_soil(const project::Soil& s, json& view) {
   const auto alpha = [&](const project::PhaseProperties& p) { return p.conductivity[0] / vol(p) * 1e6; };
   view["soil_name"] = s.name;
   view["soil_rows"] = json::array({
-      {{"property", "thermal conductivity"}, {"unfrozen", conductivity(s.unfrozen)}, {"frozen", conductivity(s.frozen)}, {"unit", "W/(m K)"}},
-      {{"property", "specific heat capacity"}, {"unfrozen", number(s.unfrozen.heat_capacity, 1)}, {"frozen", number(s.frozen.heat_capacity, 1)}, {"unit", "J/(kg K)"}},
-      {{"property", "volumetric heat capacity"}, {"unfrozen", number(vol(s.unfrozen) / 1e6, 3)}, {"frozen", number(vol(s.frozen) / 1e6, 3)}, {"unit", "MJ/(m³ K)"}},
-      {{"property", "thermal diffusivity"}, {"unfrozen", number(alpha(s.unfrozen), 3)}, {"frozen", number(alpha(s.frozen), 3)}, {"unit", "10⁻⁶ m²/s"}},
+      {{"property", "thermal conductivity"},
+       {"unfrozen", conductivity(s.unfrozen)},
+       {"frozen", conductivity(s.frozen)},
+       {"unit", "W/(m K)"}},
+      {{"property", "specific heat capacity"},
+       {"unfrozen", number(s.unfrozen.heat_capacity, 1)},
+       {"frozen", number(s.frozen.heat_capacity, 1)},
+       {"unit", "J/(kg K)"}},
+      {{"property", "volumetric heat capacity"},
+       {"unfrozen", number(vol(s.unfrozen) / 1e6, 3)},
+       {"frozen", number(vol(s.frozen) / 1e6, 3)},
+       {"unit", "MJ/(m³ K)"}},
+      {{"property", "thermal diffusivity"},
+       {"unfrozen", number(alpha(s.unfrozen), 3)},
+       {"frozen", number(alpha(s.frozen), 3)},
+       {"unit", "10⁻⁶ m²/s"}},
   });
   view["soil_common"] = json::array({
       row("density", number(s.density, 0) + " kg/m³"),
@@ -114,10 +127,12 @@ void add_soil(const project::Soil& s, json& view) {
 
 void add_schedule(const project::Project& p, const project::TemperatureSchedule& schedule, json& view) {
   json rows = json::array();
-  for (const auto& [t, T] : schedule.points) rows.push_back({{"day", number(t / day, 1)}, {"temperature", number(T, 1)}});
+  for (const auto& [t, T] : schedule.points)
+    rows.push_back({{"day", number(t / day, 1)}, {"temperature", number(T, 1)}});
   view["schedule_rows"] = rows;
-  view["schedule_note"] = schedule.constant() ? "Constant over the run."
-                                              : "Linear between the points, held at the first and last value outside them.";
+  view["schedule_note"] = schedule.constant()
+                              ? "Constant over the run."
+                              : "Linear between the points, held at the first and last value outside them.";
   view["schedule_svg"] = false;
   if (schedule.constant()) return;
   Chart chart;
@@ -135,22 +150,33 @@ void add_schedule(const project::Project& p, const project::TemperatureSchedule&
   view["schedule_svg"] = render_svg(chart);
 }
 
-std::string time_unit(project::TimeUnit u) { return u == project::TimeUnit::d ? "d" : (u == project::TimeUnit::h ? "h" : "s"); }
+std::string time_unit(project::TimeUnit u) {
+  return u == project::TimeUnit::d ? "d" : (u == project::TimeUnit::h ? "h" : "s");
+}
 
 std::string integration(const project::Numerics& n, bool latent_heat) {
-  if (n.integrator == project::IntegratorKind::explicit_euler) return fmt::format("explicit (forward Euler), β = {}", number(n.beta, 3));
-  const std::string name = n.integrator == project::IntegratorKind::rkl2 ? "RKL2 super-time-stepping" : "implicit (backward Euler)";
-  return latent_heat ? fmt::format("{}, step: at most {} of the latent heat per particle", name, number(n.step_change, 3)) : name;
+  if (n.integrator == project::IntegratorKind::explicit_euler)
+    return fmt::format("explicit (forward Euler), β = {}", number(n.beta, 3));
+  const std::string name = n.integrator == project::IntegratorKind::rkl2 ? "RKL2 super-time-stepping"
+                                                                         : "implicit (backward Euler)";
+  return latent_heat
+             ? fmt::format("{}, step: at most {} of the latent heat per particle", name, number(n.step_change, 3))
+             : name;
 }
 
 // What the SPH heat conduction used: kernel, Laplacian, pair conductivity, symmetry.
 void add_sph_numerics(const project::Project& p, json& rows) {
   const auto& n = p.numerics;
-  rows.push_back(row("kernel", fmt::format("{}, h = {} × spacing", n.kernel == project::KernelKind::cubic_spline ? "cubic spline" : "Wendland C2",
-                                           number(n.smoothing_ratio, 2))));
+  rows.push_back(
+      row("kernel", fmt::format("{}, h = {} × spacing",
+                                n.kernel == project::KernelKind::cubic_spline ? "cubic spline" : "Wendland C2",
+                                number(n.smoothing_ratio, 2))));
   rows.push_back(row("time integration", integration(n, p.soil.latent_heat > 0.0)));
-  rows.push_back(row("Laplacian", n.laplacian == project::LaplacianForm::renormalised ? "renormalised" : "plain (the paper's)"));
-  rows.push_back(row("conductivity between particles", n.conductivity_mean == project::ConductivityMean::harmonic ? "harmonic mean" : "arithmetic (k_i + k_j)"));
+  rows.push_back(
+      row("Laplacian", n.laplacian == project::LaplacianForm::renormalised ? "renormalised" : "plain (the paper's)"));
+  rows.push_back(row("conductivity between particles", n.conductivity_mean == project::ConductivityMean::harmonic
+                                                           ? "harmonic mean"
+                                                           : "arithmetic (k_i + k_j)"));
   if (std::holds_alternative<project::ShaftSection>(p.geometry))
     rows.push_back(row("symmetry", n.use_symmetry ? "smallest mirror wedge" : "off: full ring"));
 }
@@ -168,17 +194,22 @@ void add_pd_numerics(const RunRecord& run, json& rows) {
   if (!p.mechanics) return;
   const auto& mech = *p.mechanics;
   const bool breaks = m.value("critical_stretch", json()).is_number();
-  rows.push_back(row("bond law", breaks ? fmt::format("prototype microelastic brittle: micromodulus {:.4g} N/m⁶, breaks at stretch {:.4g}",
-                                                       m.value("micromodulus", 0.0), m["critical_stretch"].get<double>())
-                                        : fmt::format("linear elastic, micromodulus {:.4g} N/m⁶; bonds never break (no fracture energy)",
-                                                      m.value("micromodulus", 0.0))));
-  rows.push_back(row("kinematics", mech.linear_kinematics ? "linear (stretch linearised in the displacement)" : "nonlinear (exact stretch)"));
+  rows.push_back(
+      row("bond law",
+          breaks ? fmt::format("prototype microelastic brittle: micromodulus {:.4g} N/m⁶, breaks at stretch {:.4g}",
+                               m.value("micromodulus", 0.0), m["critical_stretch"].get<double>())
+                 : fmt::format("linear elastic, micromodulus {:.4g} N/m⁶; bonds never break (no fracture energy)",
+                               m.value("micromodulus", 0.0))));
+  rows.push_back(row("kinematics", mech.linear_kinematics ? "linear (stretch linearised in the displacement)"
+                                                          : "nonlinear (exact stretch)"));
   rows.push_back(row("equilibrium", mech.equilibrium == project::Mechanics::Equilibrium::direct
                                         ? "direct: sparse Cholesky factor preconditioning conjugate gradients"
                                         : fmt::format("adaptive dynamic relaxation, tolerance {:g}", mech.tolerance)));
-  rows.push_back(row("re-equilibrated", mech.temperature_change
-                                            ? fmt::format("when a particle's temperature moved {} K, and at every snapshot", number(*mech.temperature_change, 2))
-                                            : "when a temperature moved 10 % of the largest change so far, and at every snapshot"));
+  rows.push_back(row("re-equilibrated",
+                     mech.temperature_change
+                         ? fmt::format("when a particle's temperature moved {} K, and at every snapshot",
+                                       number(*mech.temperature_change, 2))
+                         : "when a temperature moved 10 % of the largest change so far, and at every snapshot"));
 }
 
 void add_numerics(const RunRecord& run, json& view) {
@@ -214,10 +245,14 @@ void add_solid(const project::Mechanics& m, json& view) {
   const auto& mat = m.material;
   view["solid_rows"] = json::array({
       row("elastic modulus", number(mat.elastic_modulus / 1e9, 2) + " GPa"),
-      row("Poisson's ratio", number(mat.poisson_ratio, 3) + (m.plane == project::Plane::strain ? " (plane strain)" : " (plane stress)")),
-      row("thermal expansion", fmt::format("{:g} /K, stress-free at {} °C", mat.thermal_expansion, number(mat.reference_temperature, 1))),
-      row("fracture energy", mat.fracture_energy ? number(*mat.fracture_energy, 2) + " J/m²" : std::string("none: bonds never break")),
-      row("supports", fmt::format("left {}, right {}, bottom {}, top {}", support(m.left), support(m.right), support(m.bottom), support(m.top))),
+      row("Poisson's ratio",
+          number(mat.poisson_ratio, 3) + (m.plane == project::Plane::strain ? " (plane strain)" : " (plane stress)")),
+      row("thermal expansion",
+          fmt::format("{:g} /K, stress-free at {} °C", mat.thermal_expansion, number(mat.reference_temperature, 1))),
+      row("fracture energy",
+          mat.fracture_energy ? number(*mat.fracture_energy, 2) + " J/m²" : std::string("none: bonds never break")),
+      row("supports", fmt::format("left {}, right {}, bottom {}, top {}", support(m.left), support(m.right),
+                                  support(m.bottom), support(m.top))),
   });
   view["has_solid_rows"] = true;
 }
@@ -227,21 +262,30 @@ void add_design_and_sensors(const project::Project& p, json& view) {
   // A plain geometry has no wall to design: its targets only when given.
   const bool shaft = std::holds_alternative<project::ShaftSection>(p.geometry);
   if (shaft || p.design.required_thickness)
-    rows.push_back(row("required wall thickness", p.design.required_thickness ? number(*p.design.required_thickness, 2) + " m (weakest ray)" : "none"));
+    rows.push_back(row("required wall thickness", p.design.required_thickness
+                                                      ? number(*p.design.required_thickness, 2) + " m (weakest ray)"
+                                                      : "none"));
   if (shaft || p.design.max_mean_temperature)
-    rows.push_back(row("max. mean wall temperature", p.design.max_mean_temperature ? number(*p.design.max_mean_temperature, 1) + " °C (on OB)" : "none"));
+    rows.push_back(row("max. mean wall temperature", p.design.max_mean_temperature
+                                                         ? number(*p.design.max_mean_temperature, 1) + " °C (on OB)"
+                                                         : "none"));
   if (p.design.checks_strength()) {
     std::string where = p.design.depth ? " at " + number(*p.design.depth, 1) + " m depth" : "";
-    rows.push_back(row("wall check", fmt::format("{} with the lateral pressure {} MPa{}, allowable {} of the frozen soil's strength at "
-                                                 "the thinnest wall's mean temperature",
-                                                 project::name(p.design.formula), number(*p.design.pressure, 3), where,
-                                                 number(p.design.allowable_factor, 2))));
+    rows.push_back(
+        row("wall check",
+            fmt::format("{} with the lateral pressure {} MPa{}, allowable {} of the frozen soil's strength at "
+                        "the thinnest wall's mean temperature",
+                        project::name(p.design.formula), number(*p.design.pressure, 3), where,
+                        number(p.design.allowable_factor, 2))));
   }
   view["design_rows"] = rows;
   view["has_design_rows"] = !rows.empty();
   json sensors = json::array();
   for (const auto& s : p.monitoring)
-    sensors.push_back({{"name", s.name}, {"x", metres(s.x, 3)}, {"y", metres(s.y, 3)}, {"r", metres(std::hypot(s.x, s.y), 3)},
+    sensors.push_back({{"name", s.name},
+                       {"x", metres(s.x, 3)},
+                       {"y", metres(s.y, 3)},
+                       {"r", metres(std::hypot(s.x, s.y), 3)},
                        {"theta", number(std::atan2(s.y, s.x) * 180 / std::numbers::pi, 3)}});
   view["has_sensors"] = !sensors.empty();
   view["sensors"] = sensors;
@@ -252,11 +296,13 @@ void add_design_and_sensors(const project::Project& p, json& view) {
 
 void add_project(const RunRecord& run, json& view) {
   // Every key the template names, so nothing renders from a missing value.
-  for (const char* key : {"layout_rows", "domain_rows", "soil_rows", "soil_common", "schedule_rows", "numerics_rows", "design_rows", "sensors"})
+  for (const char* key : {"layout_rows", "domain_rows", "soil_rows", "soil_common", "schedule_rows", "numerics_rows",
+                          "design_rows", "sensors"})
     view[key] = json::array();
   for (const char* key : {"layout_svg", "layout_caption", "soil_name", "schedule_note"}) view[key] = "";
   view["schedule_svg"] = false;
-  for (const char* key : {"has_sensors", "has_design_rows", "has_design_or_sensors", "has_solid_rows"}) view[key] = false;
+  for (const char* key : {"has_sensors", "has_design_rows", "has_design_or_sensors", "has_solid_rows"})
+    view[key] = false;
   view["solid_rows"] = json::array();
   view["soil_heading"] = run.mechanics() || run.frost() ? "Material" : "Soil";
   view["has_project"] = run.project.has_value();
@@ -264,11 +310,14 @@ void add_project(const RunRecord& run, json& view) {
   const auto& p = *run.project;
 
   const bool shaft = std::holds_alternative<project::ShaftSection>(p.geometry);
-  json domain = json::array({row(shaft ? "initial ground temperature" : "initial temperature", number(p.domain.initial_temperature, 1) + " °C")});
+  json domain = json::array({row(shaft ? "initial ground temperature" : "initial temperature",
+                                 number(p.domain.initial_temperature, 1) + " °C")});
   if (const auto* section = std::get_if<project::ShaftSection>(&p.geometry)) {
     add_layout(run, *section, view);
-    domain.push_back(row("far field", (p.domain.far_field_temperature ? number(*p.domain.far_field_temperature, 1) + " °C" : std::string("adiabatic")) +
-                                          " at r = " + number(section->outer_radius, 1) + " m"));
+    domain.push_back(
+        row("far field", (p.domain.far_field_temperature ? number(*p.domain.far_field_temperature, 1) + " °C"
+                                                         : std::string("adiabatic")) +
+                             " at r = " + number(section->outer_radius, 1) + " m"));
     add_schedule(p, section->pipe.temperature, view);
   } else {
     const auto& r = std::get<project::Rectangle>(p.geometry);

@@ -54,24 +54,26 @@ struct XAxis {
   double px(double x) const { return left + (x - scale.lo) / (scale.hi - scale.lo) * pw; }
   std::string grid() const {
     std::string o;
-    for (double v : scale.ticks) o += fmt::format(R"(<line x1="{0}" y1="{1}" x2="{0}" y2="{2}"/>)", num(px(v)), num(top), num(top + ph));
+    for (double v : scale.ticks)
+      o += fmt::format(R"(<line x1="{0}" y1="{1}" x2="{0}" y2="{2}"/>)", num(px(v)), num(top), num(top + ph));
     return o;
   }
   std::string ticks() const {
     std::string o;
     for (double v : scale.ticks)
-      o += fmt::format(R"(<line x1="{0}" y1="{1}" x2="{0}" y2="{2}"/>)", num(px(v)), num(top + ph), num(top + ph + tick_length));
+      o += fmt::format(R"(<line x1="{0}" y1="{1}" x2="{0}" y2="{2}"/>)", num(px(v)), num(top + ph),
+                       num(top + ph + tick_length));
     return o;
   }
   std::string frame() const {
-    return fmt::format(R"(<polyline fill="none" points="{0},{1} {0},{2} {3},{2}"/>)", num(left), num(top), num(top + ph),
-                       num(left + pw));
+    return fmt::format(R"(<polyline fill="none" points="{0},{1} {0},{2} {3},{2}"/>)", num(left), num(top),
+                       num(top + ph), num(left + pw));
   }
   std::string labels() const {
     std::string o;
     for (double v : scale.ticks)
-      o += fmt::format(R"(<text x="{}" y="{}" text-anchor="middle">{}</text>)", num(px(v)), num(top + ph + tick_length + 13),
-                       tick_label(v, scale.decimals));
+      o += fmt::format(R"(<text x="{}" y="{}" text-anchor="middle">{}</text>)", num(px(v)),
+                       num(top + ph + tick_length + 13), tick_label(v, scale.decimals));
     return o;
   }
 };
@@ -89,16 +91,20 @@ std::string guides_svg(const Chart& chart, const Px& px, const Py& py, const Plo
   std::string o;
   o += fmt::format(R"svg(<g clip-path="url(#{})" stroke="#555" stroke-width="1" stroke-dasharray="5 3">)svg", clip);
   for (const auto& g : chart.guides) {
-    if (g.vertical) o += fmt::format(R"(<line x1="{0}" y1="{1}" x2="{0}" y2="{2}"/>)", num(px(g.value)), num(top), num(top + ph));
-    else o += fmt::format(R"(<line x1="{1}" y1="{0}" x2="{2}" y2="{0}"/>)", num(py(g.value)), num(left), num(left + pw));
+    if (g.vertical)
+      o += fmt::format(R"(<line x1="{0}" y1="{1}" x2="{0}" y2="{2}"/>)", num(px(g.value)), num(top), num(top + ph));
+    else
+      o += fmt::format(R"(<line x1="{1}" y1="{0}" x2="{2}" y2="{0}"/>)", num(py(g.value)), num(left), num(left + pw));
   }
   // Labels with a white halo, readable where a curve passes under them.
   o += fmt::format(R"(</g>
-<g fill="#444" stroke="#fff" stroke-width="3" paint-order="stroke" font-size="{}">)", num(small_font));
+<g fill="#444" stroke="#fff" stroke-width="3" paint-order="stroke" font-size="{}">)",
+                   num(small_font));
   for (const auto& g : chart.guides) {
     if (g.label.empty()) continue;
     if (g.vertical && px(g.value) > left + 0.7 * pw)  // near the right edge: label to the left of the line
-      o += fmt::format(R"(<text x="{}" y="{}" text-anchor="end">{}</text>)", num(px(g.value) - 3), num(top + 11), escape(g.label));
+      o += fmt::format(R"(<text x="{}" y="{}" text-anchor="end">{}</text>)", num(px(g.value) - 3), num(top + 11),
+                       escape(g.label));
     else if (g.vertical)
       o += fmt::format(R"(<text x="{}" y="{}">{}</text>)", num(px(g.value) + 3), num(top + 11), escape(g.label));
     else
@@ -119,7 +125,8 @@ std::string legend_svg(const Chart& chart, const std::vector<std::string>& colou
     const double y = top + 8 + legend_row * static_cast<double>(row++);
     o += fmt::format(R"(<line x1="{0}" y1="{2}" x2="{1}" y2="{2}" stroke="{3}" stroke-width="2"{4}/>)", num(lx),
                      num(lx + legend_swatch), num(y), colour_of[k], s.dashed ? R"( stroke-dasharray="6 3")" : "");
-    o += fmt::format(R"(<text x="{}" y="{}" fill="#222">{}</text>)", num(lx + legend_swatch + 6), num(y + 4), escape(s.label));
+    o += fmt::format(R"(<text x="{}" y="{}" fill="#222">{}</text>)", num(lx + legend_swatch + 6), num(y + 4),
+                     escape(s.label));
   }
   o += "</g>\n";
   return o;
@@ -157,9 +164,10 @@ std::string error_bars_svg(const ErrorBars& b, Px&& px, Py&& py) {
   for (std::size_t i = 0; i < n; ++i) {
     if (!std::isfinite(b.x[i]) || !std::isfinite(b.y[i]) || !std::isfinite(b.error[i])) continue;
     const double x = px(b.x[i]), lo = py(b.y[i] - b.error[i]), hi = py(b.y[i] + b.error[i]);
-    o += fmt::format(R"(<path class="error-bar" stroke="{0}" stroke-width="1.2" fill="none" d="M{1},{2}V{3}M{4},{2}h7M{4},{3}h7"/>)"
-                     R"(<circle cx="{1}" cy="{5}" r="2.2" fill="{0}" stroke="none"/>)",
-                     b.colour, num(x), num(lo), num(hi), num(x - 3.5), num(py(b.y[i])));
+    o += fmt::format(
+        R"(<path class="error-bar" stroke="{0}" stroke-width="1.2" fill="none" d="M{1},{2}V{3}M{4},{2}h7M{4},{3}h7"/>)"
+        R"(<circle cx="{1}" cy="{5}" r="2.2" fill="{0}" stroke="none"/>)",
+        b.colour, num(x), num(lo), num(hi), num(x - 3.5), num(py(b.y[i])));
   }
   return o;
 }
@@ -201,11 +209,13 @@ std::string render_svg(const Chart& chart) {
       R"(<svg class="chart" viewBox="0 0 {} {}" width="{}" height="{}" role="img" font-family="{}" font-size="{}">)"
       "\n<title>{}</title>\n",
       W, H, W, H, svg::font_family, num(font), escape(chart.title));
-  o += fmt::format(R"(<defs><clipPath id="{}"><rect x="{}" y="{}" width="{}" height="{}"/></clipPath></defs>)" "\n", clip,
-                   num(left), num(top), num(pw), num(ph));
+  o += fmt::format(R"(<defs><clipPath id="{}"><rect x="{}" y="{}" width="{}" height="{}"/></clipPath></defs>)"
+                   "\n",
+                   clip, num(left), num(top), num(pw), num(ph));
   // Grid and ticks.
   o += R"(<g stroke="#e4e4e4" stroke-width="1">)" + x_axis.grid();
-  for (double v : ys.ticks) o += fmt::format(R"(<line x1="{1}" y1="{0}" x2="{2}" y2="{0}"/>)", num(py(v)), num(left), num(left + pw));
+  for (double v : ys.ticks)
+    o += fmt::format(R"(<line x1="{1}" y1="{0}" x2="{2}" y2="{0}"/>)", num(py(v)), num(left), num(left + pw));
   o += "</g>\n<g stroke=\"#222\" stroke-width=\"1\">" + x_axis.ticks();
   for (double v : ys.ticks)
     o += fmt::format(R"(<line x1="{1}" y1="{0}" x2="{2}" y2="{0}"/>)", num(py(v)), num(left - tick_length), num(left));
@@ -213,7 +223,8 @@ std::string render_svg(const Chart& chart) {
   for (double v : ys.ticks)
     o += fmt::format(R"(<text x="{}" y="{}" text-anchor="end">{}</text>)", num(left - tick_length - 3), num(py(v) + 4),
                      tick_label(v, ys.decimals));
-  o += fmt::format(R"(<text x="{}" y="{}" text-anchor="middle">{}</text>)", num(left + pw / 2), num(H - 6), escape(chart.x_label));
+  o += fmt::format(R"(<text x="{}" y="{}" text-anchor="middle">{}</text>)", num(left + pw / 2), num(H - 6),
+                   escape(chart.x_label));
   o += fmt::format(R"svg(<text transform="translate({},{}) rotate(-90)" text-anchor="middle">{}</text>)svg", num(13),
                    num(top + ph / 2), escape(chart.y_label));
   o += "</g>\n";
@@ -224,21 +235,21 @@ std::string render_svg(const Chart& chart) {
   std::size_t next_colour = 0;
   std::vector<std::string> colour_of(chart.series.size());
   for (std::size_t k = 0; k < chart.series.size(); ++k)
-    colour_of[k] = chart.series[k].colour.empty()
-                       ? categorical_colours()[next_colour++ % categorical_colours().size()]
-                       : chart.series[k].colour;
+    colour_of[k] = chart.series[k].colour.empty() ? categorical_colours()[next_colour++ % categorical_colours().size()]
+                                                  : chart.series[k].colour;
   o += fmt::format(R"svg(<g clip-path="url(#{})" fill="none" stroke-linejoin="round">)svg", clip);
   for (std::size_t k = 0; k < chart.series.size(); ++k) {
     const auto& s = chart.series[k];
     const std::string dash = s.dashed ? R"( stroke-dasharray="6 3")" : "";
     for (const auto& points : pieces(s, [&](double x, double y) { return std::pair{px(x), py(y)}; }))
-      o += fmt::format(R"(<polyline stroke="{}" stroke-width="{}"{} points="{}"/>)", colour_of[k], num(s.width), dash, points);
+      o += fmt::format(R"(<polyline stroke="{}" stroke-width="{}"{} points="{}"/>)", colour_of[k], num(s.width), dash,
+                       points);
     if (s.markers) {
       const std::size_t n = std::min(s.x.size(), s.y.size());
       for (std::size_t i = 0; i < n; ++i)
         if (std::isfinite(s.x[i]) && std::isfinite(s.y[i]))
-          o += fmt::format(R"(<circle cx="{}" cy="{}" r="2.6" fill="{}" stroke="none"/>)", num(px(s.x[i])), num(py(s.y[i])),
-                           colour_of[k]);
+          o += fmt::format(R"(<circle cx="{}" cy="{}" r="2.6" fill="{}" stroke="none"/>)", num(px(s.x[i])),
+                           num(py(s.y[i])), colour_of[k]);
     }
   }
   for (const auto& b : chart.error_bars) o += error_bars_svg(b, px, py);
@@ -276,19 +287,21 @@ std::string render_svg(const BarChart& chart) {
       R"(<svg class="chart bars" viewBox="0 0 {} {}" width="{}" height="{}" role="img" font-family="{}" font-size="{}">)"
       "\n<title>{}</title>\n",
       W, num(H), W, num(H), svg::font_family, num(font), escape(chart.title));
-  o += fmt::format(R"(<defs><clipPath id="{}"><rect x="{}" y="{}" width="{}" height="{}"/></clipPath>)", clip, num(left),
-                   num(top), num(pw), num(ph));
+  o += fmt::format(R"(<defs><clipPath id="{}"><rect x="{}" y="{}" width="{}" height="{}"/></clipPath>)", clip,
+                   num(left), num(top), num(pw), num(ph));
   o += fmt::format(R"(<linearGradient id="{0}" x1="0" x2="1" y1="0" y2="0"><stop offset="0" stop-color="{1}"/>)"
-                   R"(<stop offset="1" stop-color="{1}" stop-opacity="0.1"/></linearGradient></defs>)" "\n",
+                   R"(<stop offset="1" stop-color="{1}" stop-opacity="0.1"/></linearGradient></defs>)"
+                   "\n",
                    fade, chart.colour);
   // Grid, axes, ticks and labels.
   o += R"(<g stroke="#e4e4e4" stroke-width="1">)" + x_axis.grid();
   o += "</g>\n<g stroke=\"#222\" stroke-width=\"1\">" + x_axis.ticks() + x_axis.frame();
   o += "</g>\n<g fill=\"#222\">" + x_axis.labels();
   for (std::size_t k = 0; k < chart.bars.size(); ++k)
-    o += fmt::format(R"(<text x="{}" y="{}" text-anchor="end">{}</text>)", num(left - tick_length - 2), num(row_y(k) + 4),
-                     escape(chart.bars[k].label));
-  o += fmt::format(R"(<text x="{}" y="{}" text-anchor="middle">{}</text>)", num(left + pw / 2), num(H - 6), escape(chart.x_label));
+    o += fmt::format(R"(<text x="{}" y="{}" text-anchor="end">{}</text>)", num(left - tick_length - 2),
+                     num(row_y(k) + 4), escape(chart.bars[k].label));
+  o += fmt::format(R"(<text x="{}" y="{}" text-anchor="middle">{}</text>)", num(left + pw / 2), num(H - 6),
+                   escape(chart.x_label));
   o += "</g>\n";
 
   // The bars; an unended one fades out towards open_end and has no right edge.
@@ -298,17 +311,19 @@ std::string render_svg(const BarChart& chart) {
     const Bar& b = chart.bars[k];
     const double y0 = row_y(k) - thick / 2;
     if (!std::isfinite(b.start)) {
-      o += fmt::format(R"(<g class="bar never"><text x="{}" y="{}" fill="#777" font-size="{}">{}</text></g>)", num(left + 4),
-                       num(row_y(k) + 4), num(small_font), escape(chart.never_started));
+      o += fmt::format(R"(<g class="bar never"><text x="{}" y="{}" fill="#777" font-size="{}">{}</text></g>)",
+                       num(left + 4), num(row_y(k) + 4), num(small_font), escape(chart.never_started));
       continue;
     }
     const bool open = !std::isfinite(b.end);
     const double x0 = px(b.start), x1 = std::max(px(open ? open_end : b.end), x0 + 1.0);
-    const std::string tip = fmt::format("{}: {:g} to {}", b.label, b.start, open ? "not finished" : fmt::format("{:g}", b.end));
+    const std::string tip =
+        fmt::format("{}: {:g} to {}", b.label, b.start, open ? "not finished" : fmt::format("{:g}", b.end));
     if (open)
-      o += fmt::format(R"svg(<g class="bar open"><title>{0}</title><rect x="{1}" y="{2}" width="{3}" height="{4}" fill="url(#{5})"/>)svg"
-                       R"(<path d="M{6} {2}H{1}V{7}H{6}" fill="none" stroke="{8}" stroke-width="1"/></g>)",
-                       escape(tip), num(x0), num(y0), num(x1 - x0), num(thick), fade, num(x1), num(y0 + thick), chart.colour);
+      o += fmt::format(
+          R"svg(<g class="bar open"><title>{0}</title><rect x="{1}" y="{2}" width="{3}" height="{4}" fill="url(#{5})"/>)svg"
+          R"(<path d="M{6} {2}H{1}V{7}H{6}" fill="none" stroke="{8}" stroke-width="1"/></g>)",
+          escape(tip), num(x0), num(y0), num(x1 - x0), num(thick), fade, num(x1), num(y0 + thick), chart.colour);
     else
       o += fmt::format(R"(<g class="bar"><title>{}</title><rect x="{}" y="{}" width="{}" height="{}" fill="{}"/></g>)",
                        escape(tip), num(x0), num(y0), num(x1 - x0), num(thick), chart.colour);
@@ -317,16 +332,20 @@ std::string render_svg(const BarChart& chart) {
   // Reference lines over the bars, labelled above the plot.
   o += R"(<g stroke="#555" stroke-width="1" stroke-dasharray="5 3">)";
   for (const auto& g : chart.guides)
-    if (g.vertical) o += fmt::format(R"(<line x1="{0}" y1="{1}" x2="{0}" y2="{2}"/>)", num(px(g.value)), num(top - 4), num(top + ph));
+    if (g.vertical)
+      o += fmt::format(R"(<line x1="{0}" y1="{1}" x2="{0}" y2="{2}"/>)", num(px(g.value)), num(top - 4), num(top + ph));
   o += fmt::format(R"(</g><g fill="#444" font-size="{}">)", num(small_font));
   for (const auto& g : chart.guides)
     if (g.vertical && !g.label.empty())
       o += fmt::format(R"(<text x="{}" y="{}" text-anchor="{}">{}</text>)", num(px(g.value)), num(top - 7),
-                       px(g.value) > left + 0.7 * pw ? "end" : px(g.value) < left + 0.3 * pw ? "start" : "middle",
+                       px(g.value) > left + 0.7 * pw   ? "end"
+                       : px(g.value) < left + 0.3 * pw ? "start"
+                                                       : "middle",
                        escape(g.label));
   o += "</g>\n";
   if (chart.bars.empty())
-    o += fmt::format(R"(<text x="{}" y="{}" text-anchor="middle" fill="#777">no bars</text>)", num(left + pw / 2), num(row_y(0) + 4));
+    o += fmt::format(R"(<text x="{}" y="{}" text-anchor="middle" fill="#777">no bars</text>)", num(left + pw / 2),
+                     num(row_y(0) + 4));
   o += "</svg>";
   return o;
 }

@@ -14,8 +14,8 @@ struct Series {
   std::vector<double> x, y;  // a NaN in either breaks the line there
   std::string colour;        // CSS colour; empty = the next categorical colour
   bool dashed = false;
-  bool markers = false;      // a dot at every point (sparse data, single points)
-  double width = 1.6;        // stroke width in px
+  bool markers = false;  // a dot at every point (sparse data, single points)
+  double width = 1.6;    // stroke width in px
 };
 
 // Error bars: y +- error at each x, with a dot at y and caps at the ends;
@@ -33,8 +33,8 @@ struct Guide {
 };
 
 struct Chart {
-  std::string title;            // the figure's accessible name (<title>)
-  std::string x_label, y_label; // with units, e.g. "time (d)"
+  std::string title;             // the figure's accessible name (<title>)
+  std::string x_label, y_label;  // with units, e.g. "time (d)"
   std::vector<Series> series;
   std::vector<Guide> guides;
   std::vector<ErrorBars> error_bars;
@@ -55,12 +55,12 @@ struct Bar {
 };
 
 struct BarChart {
-  std::string title;     // the figure's accessible name (<title>)
-  std::string x_label;   // with units
-  std::vector<Bar> bars; // top to bottom
+  std::string title;          // the figure's accessible name (<title>)
+  std::string x_label;        // with units
+  std::vector<Bar> bars;      // top to bottom
   std::vector<Guide> guides;  // vertical ones only
   std::vector<double> x_include;
-  double open_end = 0.0;      // where unended bars stop (the end of the run)
+  double open_end = 0.0;  // where unended bars stop (the end of the run)
   std::string colour = "#0072B2";
   std::string never_started = "not started";
   int width = 540, row_height = 18;

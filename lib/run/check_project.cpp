@@ -53,7 +53,8 @@ std::string duration(double seconds) {
 }
 
 std::string estimate(double seconds, const std::string& basis) {
-  return fmt::format("run time: about {} (an estimate for a 2-core machine like bench/README.md's, {})", duration(seconds), basis);
+  return fmt::format("run time: about {} (an estimate for a 2-core machine like bench/README.md's, {})",
+                     duration(seconds), basis);
 }
 
 std::string unit_of_time(const project::TimeSettings& t) {
@@ -72,34 +73,43 @@ std::vector<std::string> check_heat(const project::Project& p, Engine engine) {
   if (rect && !rect->pores.empty()) what += " and frost in pores";
   lines.push_back("engine: " + what + (rect ? " on a rectangle" : " on a shaft section"));
   lines.push_back(fmt::format("particles: {} free, {} on boundaries", P.n_free, P.size() - P.n_free));
-  lines.push_back(fmt::format("memory: at most about {:.0f} MB", static_cast<double>(P.n_free) * freezing::bytes_per_particle / 1e6));
+  lines.push_back(fmt::format("memory: at most about {:.0f} MB",
+                              static_cast<double>(P.n_free) * freezing::bytes_per_particle / 1e6));
   std::string spacing = fmt::format("spacing: {:.4g} m", m.spacing);
   if (P.graded()) spacing += " (finest; graded coarser away from the pipes and fronts)";
   if (m.rectangle && (m.rectangle->spacing[0] != m.spacing || m.rectangle->spacing[1] != m.spacing))
-    spacing += fmt::format(" asked; {:.6g} m along x and {:.6g} m along y to fit the rectangle", m.rectangle->spacing[0], m.rectangle->spacing[1]);
+    spacing += fmt::format(" asked; {:.6g} m along x and {:.6g} m along y to fit the rectangle",
+                           m.rectangle->spacing[0], m.rectangle->spacing[1]);
   lines.push_back(spacing);
   double diffusivity = thermal::PhaseChangeLaw(p.soil).max_diffusivity();
-  if (rect && !rect->pores.empty()) diffusivity = std::max(diffusivity, thermal::pore_water_law(p.pore_fluid).max_diffusivity());
+  if (rect && !rect->pores.empty())
+    diffusivity = std::max(diffusivity, thermal::pore_water_law(p.pore_fluid).max_diffusivity());
   const double dt = p.numerics.beta * m.h * m.h / diffusivity;  // as freezing::build_model's explicit step
   const double explicit_steps = p.time.end / dt;
   const double t_unit = p.time.unit_seconds();
   const std::string end = fmt::format("{:g} {}", p.time.end / t_unit, unit_of_time(p.time));
   const double work = static_cast<double>(P.n_free) * std::sqrt(explicit_steps);
   if (p.numerics.integrator == project::IntegratorKind::explicit_euler) {
-    lines.push_back(fmt::format("time step: {:.3g} s (explicit), {:.0f} steps to {}", dt, std::ceil(explicit_steps), end));
+    lines.push_back(
+        fmt::format("time step: {:.3g} s (explicit), {:.0f} steps to {}", dt, std::ceil(explicit_steps), end));
     lines.push_back(estimate(static_cast<double>(P.n_free) * std::ceil(explicit_steps) / sph_explicit_rate,
                              "at the explicit single ring's particle-steps per second"));
     return lines;
   }
   const char* integrator = p.numerics.integrator == project::IntegratorKind::rkl2 ? "rkl2" : "implicit";
-  lines.push_back(fmt::format("time step: adaptive ({}) to {}; the explicit limit would be {:.3g} s ({:.3g} steps)", integrator,
-                              end, dt, explicit_steps));
+  lines.push_back(fmt::format("time step: adaptive ({}) to {}; the explicit limit would be {:.3g} s ({:.3g} steps)",
+                              integrator, end, dt, explicit_steps));
   if (p.numerics.integrator == project::IntegratorKind::implicit)  // no rate measured to scale from
-    return lines.push_back("run time: not estimated for implicit steps (bench/README.md: the shipped seepage reference, "
-                           "implicit under flow, ran more than an hour on a 2-core machine)"), lines;
-  if (!pd) return lines.push_back(estimate(work / sph_adaptive_rate, "scaled from the single ring's default run")), lines;
+    return lines.push_back(
+               "run time: not estimated for implicit steps (bench/README.md: the shipped seepage reference, "
+               "implicit under flow, ran more than an hour on a 2-core machine)"),
+           lines;
+  if (!pd)
+    return lines.push_back(estimate(work / sph_adaptive_rate, "scaled from the single ring's default run")), lines;
   if (rect && !rect->pores.empty())
-    return lines.push_back(estimate(work / pd_frost_rate, "scaled from the mortar plate's; crack cascades can take far longer")), lines;
+    return lines.push_back(
+               estimate(work / pd_frost_rate, "scaled from the mortar plate's; crack cascades can take far longer")),
+           lines;
   lines.push_back(estimate(work / pd_plate_rate, "scaled from the PD paper's plate"));
   return lines;
 }
@@ -114,20 +124,28 @@ std::vector<std::string> check_grains(const project::Project& p) {
   const long steps = std::max(1L, std::lround(p.time.end / dt));
   const long settle_steps = std::lround(c.grains.settle_time / dt);
   const double cells = static_cast<double>(c.fluid.cells[0]) * c.fluid.cells[1] * c.fluid.cells[2];
-  const bool cached = settle_steps > 0 && std::filesystem::exists(dem::packing_cache_file(c, dt, cfd_dem::coupling_interval(c, dt, false)));
+  const bool cached = settle_steps > 0 &&
+                      std::filesystem::exists(dem::packing_cache_file(c, dt, cfd_dem::coupling_interval(c, dt, false)));
   std::vector<std::string> lines;
   lines.push_back("engine: CFD-DEM (grains in LAMMPS, pore water on a coarse grid)");
-  lines.push_back(fmt::format("grains: {} of {:.3g} to {:.3g} m", grains.size(), c.grains.diameter_min, c.grains.diameter_max));
+  lines.push_back(
+      fmt::format("grains: {} of {:.3g} to {:.3g} m", grains.size(), c.grains.diameter_min, c.grains.diameter_max));
   lines.push_back(fmt::format("fluid cells: {} x {} x {}", c.fluid.cells[0], c.fluid.cells[1], c.fluid.cells[2]));
-  lines.push_back(fmt::format("memory: about {:.0f} MB",
-                              (static_cast<double>(grains.size()) * cfd_dem::bytes_per_grain + cells * cfd_dem::bytes_per_cell) / 1e6));
-  lines.push_back(fmt::format("time step: {:.3g} s ({:.2f} of the smallest grain's Rayleigh time), fluid every {} steps", dt,
-                              dt / project::rayleigh_time(c.grains), interval));
-  std::string settle = settle_steps == 0 ? "no settling" : fmt::format("{} settling steps ({:g} s){}", settle_steps, c.grains.settle_time,
-                                                                      cached ? ", skipped: the settled packing is cached" : "");
+  lines.push_back(fmt::format(
+      "memory: about {:.0f} MB",
+      (static_cast<double>(grains.size()) * cfd_dem::bytes_per_grain + cells * cfd_dem::bytes_per_cell) / 1e6));
+  lines.push_back(
+      fmt::format("time step: {:.3g} s ({:.2f} of the smallest grain's Rayleigh time), fluid every {} steps", dt,
+                  dt / project::rayleigh_time(c.grains), interval));
+  std::string settle = settle_steps == 0
+                           ? "no settling"
+                           : fmt::format("{} settling steps ({:g} s){}", settle_steps, c.grains.settle_time,
+                                         cached ? ", skipped: the settled packing is cached" : "");
   lines.push_back(fmt::format("steps: {} to {:g} s, {}", steps, p.time.end, settle));
-  const double grain_steps = static_cast<double>(grains.size()) * static_cast<double>(steps + (cached ? 0 : settle_steps));
-  lines.push_back(estimate(grain_steps / dem_rate, "on one rank at the leak case's grain-steps per second; about half with mpirun -np 2"));
+  const double grain_steps = static_cast<double>(grains.size()) *
+                             static_cast<double>(steps + (cached ? 0 : settle_steps));
+  lines.push_back(estimate(grain_steps / dem_rate,
+                           "on one rank at the leak case's grain-steps per second; about half with mpirun -np 2"));
   return lines;
 }
 
@@ -142,7 +160,8 @@ std::vector<std::string> check_project(const project::Project& p) {
   // The twins' particles add up to about 1.4 times the run's, with fewer
   // steps: 0.91 of the main job's CPU time (bench/README.md).
   if (p.numerics.error_estimate)
-    lines.push_back("error estimate: three coarser runs after it (1.35, 1.5 and 1.65 times the spacing), about as long again");
+    lines.push_back(
+        "error estimate: three coarser runs after it (1.35, 1.5 and 1.65 times the spacing), about as long again");
   return lines;
 }
 

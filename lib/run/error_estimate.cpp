@@ -142,7 +142,8 @@ void gap_entries(ordered_json& summary, const Twins& twins) {
         if (g.value("between", json()) == json(gap["between"])) c = number(g.value("closure_day", json()));
       coarse.push_back(c);
     }
-    put_after(gap, "closure_day", "closure_day_error", or_null(number_error(number(gap["closure_day"]), coarse, twins.ratio)));
+    put_after(gap, "closure_day", "closure_day_error",
+              or_null(number_error(number(gap["closure_day"]), coarse, twins.ratio)));
   };
   auto& g = summary["groundwater"];
   if (g.contains("gaps"))
@@ -161,10 +162,15 @@ void add_summary_errors(ordered_json& summary, const std::vector<json>& twin_sum
   if (summary.contains("wall") && summary["wall"].is_array()) {
     std::vector<const json*> twin_walls;
     for (const auto* s : twins.summaries) twin_walls.push_back(&at(*s, {"wall"}));
-    for (const auto& path : std::vector<std::vector<std::string>>{
-             {"OA", "thickness"}, {"OB", "thickness"}, {"min_thickness"}, {"mean_temperature_OB"},
-             {"isotherm_thickness"}, {"isotherm_mean_temperature"}, {"utilisation"},
-             {"min_thickness_upstream"}, {"min_thickness_downstream"}})
+    for (const auto& path : std::vector<std::vector<std::string>>{{"OA", "thickness"},
+                                                                  {"OB", "thickness"},
+                                                                  {"min_thickness"},
+                                                                  {"mean_temperature_OB"},
+                                                                  {"isotherm_thickness"},
+                                                                  {"isotherm_mean_temperature"},
+                                                                  {"utilisation"},
+                                                                  {"min_thickness_upstream"},
+                                                                  {"min_thickness_downstream"}})
       wall_entry(summary["wall"], twin_walls, twins.ratio, path);
   }
   number_entry(summary, twins, {"design", "reached_day"});
@@ -276,14 +282,13 @@ void add_error_estimate(const project::Project& p, const project::RunOptions& op
       spacings.push_back(number(at(t, {"run", "spacing"})));
       days.push_back(number(t.value("closure_time_days", json())));
     }
-    summary["error_estimate"] = {
-        {"status", "done"},
-        {"covers", "the discretisation only (spacing and the time steps that follow it)"},
-        {"ratios", coarse_ratios},
-        {"spacings", spacings},
-        {"order", method_order},
-        {"coarse_seconds", seconds},
-        {"run_seconds", number(at(summary, {"run", "wall_seconds"}))}};
+    summary["error_estimate"] = {{"status", "done"},
+                                 {"covers", "the discretisation only (spacing and the time steps that follow it)"},
+                                 {"ratios", coarse_ratios},
+                                 {"spacings", spacings},
+                                 {"order", method_order},
+                                 {"coarse_seconds", seconds},
+                                 {"run_seconds", number(at(summary, {"run", "wall_seconds"}))}};
     if (summary.contains("closure_time_days")) summary["error_estimate"]["coarse_closure_days"] = days;
     for (const char* table : {"wall.csv", "monitoring.csv"}) {
       std::vector<fs::path> files;

@@ -1,6 +1,5 @@
 #include "sph/laplacian.hpp"
 
-
 #include <Eigen/Dense>
 #include <deque>
 #include <stdexcept>
@@ -20,15 +19,14 @@ using particles::for_each_particle;
 using particles::mirror_images;
 using particles::MirrorImages;
 
-
 namespace {
 
 // The moment correction of the renormalised pairs, each pair seen from i
 // (x_j an image or the particle itself, with the map to that image).
 template <int Dim>
-void correct_moments_on_images(LaplacianPairs& pairs, const ParticleSet<Dim>& particles, const MirrorImages<Dim>& images,
-                               const std::vector<Vec<Dim>>& points, const std::vector<std::uint32_t>& entry_point,
-                               const SmoothingLengths& h) {
+void correct_moments_on_images(LaplacianPairs& pairs, const ParticleSet<Dim>& particles,
+                               const MirrorImages<Dim>& images, const std::vector<Vec<Dim>>& points,
+                               const std::vector<std::uint32_t>& entry_point, const SmoothingLengths& h) {
   const std::size_t n = particles.n_free, nnz = pairs.column.size();
   std::vector<Vec<Dim>> pair_vector(nnz);  // x_j - x_i, j as the pair sees it (an image or the particle)
   std::vector<Eigen::Matrix<double, Dim, Dim>> to_image(nnz, Eigen::Matrix<double, Dim, Dim>::Identity());
@@ -40,7 +38,8 @@ void correct_moments_on_images(LaplacianPairs& pairs, const ParticleSet<Dim>& pa
     }
   std::vector<double> scale(n);
   for (std::size_t i = 0; i < n; ++i) scale[i] = h.of(i);
-  const auto report = correct_pair_moments<Dim>(pairs, particles.position, particles.volume, pair_vector, to_image, scale);
+  const auto report =
+      correct_pair_moments<Dim>(pairs, particles.position, particles.volume, pair_vector, to_image, scale);
   pairs.moments_corrected = report.corrected;
   pairs.smallest_weight_factor = report.smallest_factor;
   pairs.largest_weight_factor = report.largest_factor;
@@ -132,7 +131,9 @@ LaplacianPairs build_laplacian_pairs(const ParticleSet<Dim>& particles, const Ke
     }
   });
   for (std::size_t i = 0; i < n; ++i)
-    if (lonely[i]) throw std::runtime_error("a particle has no neighbour within the kernel support (other than its own mirror images)");
+    if (lonely[i])
+      throw std::runtime_error(
+          "a particle has no neighbour within the kernel support (other than its own mirror images)");
 
   pairs.row_start.assign(n + 1, 0);
   for (std::size_t i = 0; i < n; ++i) pairs.row_start[i + 1] = pairs.row_start[i] + count[i];
@@ -172,7 +173,6 @@ LaplacianPairs build_laplacian_pairs(const ParticleSet<Dim>& particles, const Ke
   return pairs;
 }
 
-template LaplacianPairs build_laplacian_pairs<2>(const ParticleSet<2>&, const Kernel&,
-                                                 const LaplacianOptions&);
+template LaplacianPairs build_laplacian_pairs<2>(const ParticleSet<2>&, const Kernel&, const LaplacianOptions&);
 
 }  // namespace frostwall::sph

@@ -151,7 +151,6 @@ MomentSystem<Dim> moment_system(const LaplacianPairs& pairs, const std::vector<V
   for (std::size_t r = 0; r < K.rows(); ++r) largest = std::max(largest, K.block[K.row_start[r]].diagonal().maxCoeff());
   for (std::size_t r = 0; r < K.rows(); ++r) K.block[K.row_start[r]].diagonal().array() += 1e-12 * largest;
   return system;
-
 }
 
 // K is symmetric positive definite. Conjugate gradients with the two-level
@@ -171,8 +170,7 @@ Eigen::VectorXd solve_moment_system(const MomentSystem<Dim>& system, TwoLevelRep
 
 template <int Dim>
 MomentCorrectionReport correct_pair_moments(LaplacianPairs& pairs, const std::vector<Vec<Dim>>& position,
-                                            const std::vector<double>& volume,
-                                            const std::vector<Vec<Dim>>& pair_vector,
+                                            const std::vector<double>& volume, const std::vector<Vec<Dim>>& pair_vector,
                                             const std::vector<Eigen::Matrix<double, Dim, Dim>>& to_image,
                                             const std::vector<double>& length_scale) {
   constexpr int P = unknowns<Dim>;
@@ -218,8 +216,7 @@ template MomentSystem<2> moment_system<2>(const LaplacianPairs&, const std::vect
                                           const std::vector<double>&);
 template Eigen::VectorXd solve_moment_system<2>(const MomentSystem<2>&, TwoLevelReport*);
 template MomentCorrectionReport correct_pair_moments<2>(LaplacianPairs&, const std::vector<Vec<2>>&,
-                                                        const std::vector<double>&,
-                                                        const std::vector<Vec<2>>&,
+                                                        const std::vector<double>&, const std::vector<Vec<2>>&,
                                                         const std::vector<Eigen::Matrix<double, 2, 2>>&,
                                                         const std::vector<double>&);
 

@@ -61,7 +61,7 @@ struct MomentCorrectionReport {
   std::size_t corrected = 0;     // free particles whose moments were set
   double smallest_factor = 1.0;  // min over pairs of the new weight / the old
   double largest_factor = 1.0;
-  double residual = 0.0;         // largest moment error left, relative
+  double residual = 0.0;  // largest moment error left, relative
 };
 
 // position: the free particles' (their first n_free entries are used);
@@ -71,8 +71,7 @@ struct MomentCorrectionReport {
 // (its h), for conditioning.
 template <int Dim>
 MomentCorrectionReport correct_pair_moments(LaplacianPairs& pairs, const std::vector<Vec<Dim>>& position,
-                                            const std::vector<double>& volume,
-                                            const std::vector<Vec<Dim>>& pair_vector,
+                                            const std::vector<double>& volume, const std::vector<Vec<Dim>>& pair_vector,
                                             const std::vector<Eigen::Matrix<double, Dim, Dim>>& to_image,
                                             const std::vector<double>& length_scale);
 

@@ -15,7 +15,8 @@ void BlockMatrix<B>::multiply(const Eigen::VectorXd& x, Eigen::VectorXd& y) cons
   y.resize(x.size());
   for_each_particle(rows(), [&](std::size_t r) {
     Eigen::Matrix<double, B, 1> sum = Eigen::Matrix<double, B, 1>::Zero();
-    for (std::size_t e = row_start[r]; e < row_start[r + 1]; ++e) sum += block[e] * x.template segment<B>(B * column[e]);
+    for (std::size_t e = row_start[r]; e < row_start[r + 1]; ++e)
+      sum += block[e] * x.template segment<B>(B * column[e]);
     y.template segment<B>(B * r) = sum;
   });
 }
@@ -101,8 +102,7 @@ class TwoLevelCycle {
       qr.setThreshold(1e-10);
       rank[a] = static_cast<int>(qr.rank());
       const Eigen::MatrixXd Q = qr.householderQ() * Eigen::MatrixXd::Identity(stacked.rows(), M);
-      for (std::size_t k = 0; k < m.size(); ++k)
-        basis_[m[k]].leftCols(rank[a]) = Q.block(B * k, 0, B, rank[a]);
+      for (std::size_t k = 0; k < m.size(); ++k) basis_[m[k]].leftCols(rank[a]) = Q.block(B * k, 0, B, rank[a]);
     }
 
     // Coarse matrix P^T K P, block (a, c) = sum over i in a, j in c of

@@ -1,6 +1,5 @@
 #include "sph/wall_extrapolation.hpp"
 
-
 #include <Eigen/Dense>
 
 #include "particles/mirror_images.hpp"

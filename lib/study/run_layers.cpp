@@ -15,8 +15,7 @@ using nlohmann::json;
 
 std::string layer_folder(const std::string& name) {
   std::string folder;
-  for (char c : name)
-    folder += variant_name_character(c) ? c : '_';
+  for (char c : name) folder += variant_name_character(c) ? c : '_';
   if (folder.empty() || folder.front() == '.') folder.insert(folder.begin(), 'L');
   return folder;
 }
@@ -78,7 +77,8 @@ StudyRun run_layers(const project::Project& p, const std::string& project_text, 
   for (std::size_t k = 0; k < run.variants.size(); ++k) {
     const auto& v = run.variants[k];
     if (!v.ok)
-      throw std::runtime_error(fmt::format("layer '{}': {}", p.layers[k].name, v.errors.empty() ? "failed" : v.errors.front()));
+      throw std::runtime_error(
+          fmt::format("layer '{}': {}", p.layers[k].name, v.errors.empty() ? "failed" : v.errors.front()));
     summaries.push_back(v.summary);
   }
   // The layered summary: the governing layer's, with every layer's beside it.

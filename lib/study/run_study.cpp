@@ -18,7 +18,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-VariantOutcome run_variant(const Variant& v, bool estimate_errors, const std::function<void(const std::string&)>& note) {
+VariantOutcome run_variant(const Variant& v, bool estimate_errors,
+                           const std::function<void(const std::string&)>& note) {
   const auto start = std::chrono::steady_clock::now();
   VariantOutcome out;
   out.name = v.name;
@@ -46,8 +47,9 @@ VariantOutcome run_variant(const Variant& v, bool estimate_errors, const std::fu
     out.errors = {std::string("run failed: ") + e.what()};
   }
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  if (note) note(out.ok ? fmt::format("{}: done in {:.1f} s", v.name, out.seconds)
-                        : fmt::format("{}: FAILED: {}", v.name, out.errors.empty() ? "" : out.errors.front()));
+  if (note)
+    note(out.ok ? fmt::format("{}: done in {:.1f} s", v.name, out.seconds)
+                : fmt::format("{}: FAILED: {}", v.name, out.errors.empty() ? "" : out.errors.front()));
   return out;
 }
 

@@ -24,8 +24,8 @@ struct VariantOutcome {
 };
 
 struct StudyOptions {
-  int jobs = 0;     // variants at once; 0 = one per core (at most the variant count)
-  int threads = 0;  // OpenMP threads per variant; 0 = all cores when jobs = 1, else 1
+  int jobs = 0;                                  // variants at once; 0 = one per core (at most the variant count)
+  int threads = 0;                               // OpenMP threads per variant; 0 = all cores when jobs = 1, else 1
   std::function<void(const std::string&)> note;  // progress lines (thread-safe calls)
 };
 

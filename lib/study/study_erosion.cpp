@@ -15,7 +15,9 @@ using nlohmann::json;
 namespace {
 
 std::string number(double v, int decimals) { return std::isfinite(v) ? report::tick_label(v, decimals) : "–"; }
-double get(const json& j, const char* key) { return j.contains(key) && j[key].is_number() ? j[key].get<double>() : NAN; }
+double get(const json& j, const char* key) {
+  return j.contains(key) && j[key].is_number() ? j[key].get<double>() : NAN;
+}
 const json& soil(const VariantOutcome& v) { return v.summary["soil"]; }
 
 // Lost grains over the count at the start, per second of the run.
@@ -85,9 +87,14 @@ void add_erosion(const StudyRun& run, json& view) {
   view["erosion_rows"] = rows;
   view["seed_rows"] = seed_spread(run);
   view["has_seed_spread"] = !view["seed_rows"].empty();
-  view["erosion_charts"] = json::array({{{"svg", report::render_svg(lost)}, {"caption", "Grains that left the soil: fell into the cavity (kept there, or taken away where the cavity drains) or were washed out through the outflow face."}},
-                                        {{"svg", report::render_svg(zone)}, {"caption", "The cylinder over the cavity's crown to the surface; 1 when it is empty."}},
-                                        {{"svg", report::render_svg(settled)}, {"caption", "The deepest settlement of the surface along the line through the cavity."}}});
+  view["erosion_charts"] = json::array(
+      {{{"svg", report::render_svg(lost)},
+        {"caption",
+         "Grains that left the soil: fell into the cavity (kept there, or taken away where the cavity drains) or were washed out through the outflow face."}},
+       {{"svg", report::render_svg(zone)},
+        {"caption", "The cylinder over the cavity's crown to the surface; 1 when it is empty."}},
+       {{"svg", report::render_svg(settled)},
+        {"caption", "The deepest settlement of the surface along the line through the cavity."}}});
 }
 
 namespace {
@@ -144,24 +151,30 @@ json seed_spread(const StudyRun& run) {
     if (g.names.size() < 2) continue;
     std::string names;
     for (const auto& n : g.names) names += (names.empty() ? "" : ", ") + n;
-    rows.push_back({{"changes", key}, {"variants", names}, {"seeds", g.names.size()}, {"lost", spread(g.lost, 1.0)},
-                    {"crater_depth", spread(g.crater, 1e3)}, {"settlement", spread(g.settlement, 1e3)}});
+    rows.push_back({{"changes", key},
+                    {"variants", names},
+                    {"seeds", g.names.size()},
+                    {"lost", spread(g.lost, 1.0)},
+                    {"crater_depth", spread(g.crater, 1e3)},
+                    {"settlement", spread(g.settlement, 1e3)}});
   }
   return rows;
 }
 
 void write_erosion_csv(const std::filesystem::path& file, const StudyRun& run) {
-  std::string text = "variant,darcy_velocity_m_s,above_fluidisation,lost_to_cavity,washed_out,mean_loss_rate_per_s,"
-                     "settlement_max_m,settlement_width_m,cone_angle_deg,run_s,crater_depth_m,crater_slope_deg,slip_surface_angle_deg\n";
+  std::string text =
+      "variant,darcy_velocity_m_s,above_fluidisation,lost_to_cavity,washed_out,mean_loss_rate_per_s,"
+      "settlement_max_m,settlement_width_m,cone_angle_deg,run_s,crater_depth_m,crater_slope_deg,slip_surface_angle_deg\n";
   for (const auto& v : run.variants) {
     if (!v.ok || !v.summary.contains("soil")) continue;
     const json& s = soil(v);
     const json& regime = s.value("regime", json::object());
     const auto& last = s["series"].empty() ? json::object() : s["series"].back();
     text += fmt::format("{},{},{},{},{},{:.6g},{:.6g},{:.6g},{:.6g},{:.1f},{:.6g},{:.6g},{:.6g}\n", v.name,
-                        get(regime, "darcy_velocity_m_s"), regime.value("above_fluidisation", false), get(s, "lost_to_cavity"),
-                        get(s, "washed_out"), mean_loss_rate(s), get(last, "settlement_max_m"), get(last, "settlement_width_m"),
-                        get(last, "cone_angle_deg"), v.seconds, get(last, "crater_depth_m"), get(last, "crater_slope_deg"),
+                        get(regime, "darcy_velocity_m_s"), regime.value("above_fluidisation", false),
+                        get(s, "lost_to_cavity"), get(s, "washed_out"), mean_loss_rate(s),
+                        get(last, "settlement_max_m"), get(last, "settlement_width_m"), get(last, "cone_angle_deg"),
+                        v.seconds, get(last, "crater_depth_m"), get(last, "crater_slope_deg"),
                         get(last, "slip_surface_angle_deg"));
   }
   io::write_text_file(file, text);

@@ -73,10 +73,12 @@ std::vector<Override> read_overrides(const Node& n) {
     Override o;
     const auto name = v["name"].required().string();
     if (name && !valid_variant_name(*name))
-      v["name"].problem("'" + *name + "' cannot name a folder (use letters, digits and . _ - + =, not starting with '.')");
+      v["name"].problem("'" + *name +
+                        "' cannot name a folder (use letters, digits and . _ - + =, not starting with '.')");
     o.name = name.value_or("");
     const Node patch = v["patch"].required();
-    if (patch.given() && !patch.json().is_object()) patch.problem("must be an object (a JSON merge patch of the project), got " + patch.type());
+    if (patch.given() && !patch.json().is_object())
+      patch.problem("must be an object (a JSON merge patch of the project), got " + patch.type());
     else if (patch.given()) o.patch = patch.json();
     const auto description = v["description"].string();
     o.changes = description ? *description : (o.patch.is_object() ? o.patch.dump() : "");
@@ -114,10 +116,13 @@ std::vector<Parameter> read_product(const Node& n) {
     if (labels.given()) {
       if (const auto count = labels.array()) {
         if (*count != q.values.size())
-          labels.problem(fmt::format("must have one label per value ({}), got {}", q.values.size(), *count)), ok = false;
+          labels.problem(fmt::format("must have one label per value ({}), got {}", q.values.size(), *count)),
+              ok = false;
         for (std::size_t k = 0; k < *count; ++k)
           if (const auto label = labels[k].string()) {
-            if (!valid_variant_name(*label)) labels[k].problem("'" + *label + "' cannot be part of a folder name (use letters, digits and . _ - + =)"), ok = false;
+            if (!valid_variant_name(*label))
+              labels[k].problem("'" + *label + "' cannot be part of a folder name (use letters, digits and . _ - + =)"),
+                  ok = false;
             q.labels.push_back(*label);
           } else {
             ok = false;
@@ -147,7 +152,8 @@ std::vector<Parameter> read_product(const Node& n) {
 
 }  // namespace
 
-StudyError::StudyError(std::vector<std::string> problems) : std::runtime_error(join(problems)), problems_(std::move(problems)) {}
+StudyError::StudyError(std::vector<std::string> problems)
+    : std::runtime_error(join(problems)), problems_(std::move(problems)) {}
 
 bool variant_name_character(char c) {
   return std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '_' || c == '-' || c == '+' || c == '=';
@@ -172,7 +178,8 @@ json read_base(const Node& base_node, const fs::path& directory, Study& study) {
     if (const auto base_text = read_file(study.base, error)) {
       try {
         base = json::parse(*base_text);
-        if (!base.is_object()) base_node.problem("the base project " + study.base.string() + " is not a JSON object"), base = json();
+        if (!base.is_object())
+          base_node.problem("the base project " + study.base.string() + " is not a JSON object"), base = json();
       } catch (const json::exception&) {
         base_node.problem("the base project " + study.base.string() + " is not valid JSON");
       }
@@ -201,7 +208,8 @@ Study parse_study(const std::string& text, const fs::path& directory, const std:
   const auto parsed = project::detail::parse_document(text, source, parse_problems);
   if (!parsed) throw StudyError(parse_problems);
   const json& document = *parsed;
-  if (!document.is_object()) throw StudyError({source + ": must be a JSON object, got " + std::string(document.type_name())});
+  if (!document.is_object())
+    throw StudyError({source + ": must be a JSON object, got " + std::string(document.type_name())});
 
   std::vector<std::string> problems;
   const Node root(&document, "", problems);
@@ -216,7 +224,8 @@ Study parse_study(const std::string& text, const fs::path& directory, const std:
   if (output.object({"directory"}))
     if (const auto dir = output["directory"].required().string()) study.output_directory = *dir;
   const Node study_patch = root["patch"];
-  if (study_patch.given() && !study_patch.json().is_object()) study_patch.problem("must be an object (a JSON merge patch of the base project), got " + study_patch.type());
+  if (study_patch.given() && !study_patch.json().is_object())
+    study_patch.problem("must be an object (a JSON merge patch of the base project), got " + study_patch.type());
   else if (study_patch.given() && base.is_object()) base.merge_patch(study_patch.json());
 
   const Node rank = root["rank"];
@@ -227,7 +236,8 @@ Study parse_study(const std::string& text, const fs::path& directory, const std:
   std::vector<Override> overrides = read_overrides(variants_node);
   const std::vector<Parameter> product = read_product(product_node);
   if (!variants_node.present() && !product_node.present())
-    problems.push_back(source + ": a study needs \"variants\" (named merge patches), \"product\" (parameter lists), or both");
+    problems.push_back(source +
+                       ": a study needs \"variants\" (named merge patches), \"product\" (parameter lists), or both");
   if (!problems.empty() || !base.is_object()) {
     if (problems.empty()) problems.push_back("base: the base project could not be read");
     throw StudyError(std::move(problems));
@@ -242,7 +252,8 @@ Study parse_study(const std::string& text, const fs::path& directory, const std:
   std::size_t combinations = 1;
   for (const auto& p : product) combinations *= p.values.size();
   if (overrides.size() * combinations > max_variants)
-    throw StudyError({fmt::format("product: {} variants; a study runs at most {}", overrides.size() * combinations, max_variants)});
+    throw StudyError(
+        {fmt::format("product: {} variants; a study runs at most {}", overrides.size() * combinations, max_variants)});
   const std::string base_name = base.value("name", std::string("project"));
   std::map<std::string, std::string> seen;  // name -> where it came from
   for (std::size_t o = 0; o < overrides.size(); ++o) {
@@ -255,7 +266,8 @@ Study parse_study(const std::string& text, const fs::path& directory, const std:
       if (!overrides[o].changes.empty()) changes.push_back(overrides[o].changes);
       std::size_t rest = c;
       std::vector<std::size_t> pick(product.size());
-      for (std::size_t k = product.size(); k-- > 0;) pick[k] = rest % product[k].values.size(), rest /= product[k].values.size();
+      for (std::size_t k = product.size(); k-- > 0;)
+        pick[k] = rest % product[k].values.size(), rest /= product[k].values.size();
       for (std::size_t k = 0; k < product.size(); ++k) {
         const auto& p = product[k];
         try {

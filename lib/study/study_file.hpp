@@ -25,17 +25,17 @@
 namespace frostwall::study {
 
 struct Variant {
-  std::string name;          // also its output folder
-  std::string changes;       // what differs from the base, one line
-  nlohmann::json project;    // the project file of this run (output redirected, report on)
+  std::string name;        // also its output folder
+  std::string changes;     // what differs from the base, one line
+  nlohmann::json project;  // the project file of this run (output redirected, report on)
 };
 
 struct Study {
   std::string name;
   std::string description;
-  std::filesystem::path base;              // the base project file as resolved
+  std::filesystem::path base;  // the base project file as resolved
   std::filesystem::path output_directory;
-  double thickness_day = 0.0;              // thickness ranking day (default: the base's last snapshot)
+  double thickness_day = 0.0;  // thickness ranking day (default: the base's last snapshot)
   std::vector<Variant> variants;
   // A study ranks with error bars: numerics.error_estimate is on in every
   // variant that does not set it. The layers of a layered project (run as

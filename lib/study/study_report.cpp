@@ -57,7 +57,8 @@ std::vector<Standing> rank_variants(const StudyRun& run, double thickness_day) {
     if (v.ok) {
       const auto& c = v.summary.value("closure_time_days", json());
       if (c.is_number()) st.closure_day = c.get<double>();
-      if (const auto& e = v.summary.value("closure_time_days_error", json()); e.is_number()) st.closure_error = e.get<double>();
+      if (const auto& e = v.summary.value("closure_time_days_error", json()); e.is_number())
+        st.closure_error = e.get<double>();
       if (fs::exists(v.directory / "wall.csv")) {
         const auto wall = report::read_csv(v.directory / "wall.csv");
         st.thickness = at_day(wall, "min_thickness_m", thickness_day);
@@ -70,7 +71,8 @@ std::vector<Standing> rank_variants(const StudyRun& run, double thickness_day) {
   std::vector<Standing*> by_thickness;
   for (auto& st : s)
     if (st.variant->ok && std::isfinite(st.thickness)) by_thickness.push_back(&st);
-  std::stable_sort(by_thickness.begin(), by_thickness.end(), [](auto* a, auto* b) { return a->thickness > b->thickness; });
+  std::stable_sort(by_thickness.begin(), by_thickness.end(),
+                   [](auto* a, auto* b) { return a->thickness > b->thickness; });
   for (std::size_t k = 0; k < by_thickness.size(); ++k) by_thickness[k]->thickness_rank = static_cast<int>(k + 1);
   auto key = [](const Standing& st) {
     // (group, value): closed by day, open by thickness (thicker first), failed last.
@@ -100,17 +102,19 @@ void write_study_csv(const fs::path& file, const std::vector<Standing>& standing
     const auto& v = *st.variant;
     const json design = v.ok ? v.summary.value("design", json::object()) : json::object();
     const json facts = v.ok ? v.summary.value("run", json::object()) : json::object();
-    auto integer = [&](const char* key) { return facts.contains(key) ? fmt::format("{}", facts[key].get<long long>()) : std::string(); };
-    text += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n", st.closure_rank ? std::to_string(st.closure_rank) : "",
-                        csv_text(v.name), v.ok ? "ok" : "failed", st.closure_day ? csv_number(*st.closure_day) : "",
-                        csv_number(st.closure_error), st.closure_tied ? "true" : "false",
-                        st.thickness_rank ? std::to_string(st.thickness_rank) : "", csv_number(thickness_day),
-                        csv_number(st.thickness), csv_number(st.mean_temperature),
-                        design.contains("pass") ? (design["pass"].get<bool>() ? "true" : "false") : "",
-                        design.value("reached_day", json()).is_number() ? csv_number(design["reached_day"].get<double>()) : "",
-                        integer("particles"), integer("steps"), csv_number(v.seconds),
-                        v.ok ? csv_text(v.name + "/report.html") : "", csv_text(v.changes),
-                        csv_text(v.errors.empty() ? "" : v.errors.front()));
+    auto integer = [&](const char* key) {
+      return facts.contains(key) ? fmt::format("{}", facts[key].get<long long>()) : std::string();
+    };
+    text += fmt::format(
+        "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n",
+        st.closure_rank ? std::to_string(st.closure_rank) : "", csv_text(v.name), v.ok ? "ok" : "failed",
+        st.closure_day ? csv_number(*st.closure_day) : "", csv_number(st.closure_error),
+        st.closure_tied ? "true" : "false", st.thickness_rank ? std::to_string(st.thickness_rank) : "",
+        csv_number(thickness_day), csv_number(st.thickness), csv_number(st.mean_temperature),
+        design.contains("pass") ? (design["pass"].get<bool>() ? "true" : "false") : "",
+        design.value("reached_day", json()).is_number() ? csv_number(design["reached_day"].get<double>()) : "",
+        integer("particles"), integer("steps"), csv_number(v.seconds), v.ok ? csv_text(v.name + "/report.html") : "",
+        csv_text(v.changes), csv_text(v.errors.empty() ? "" : v.errors.front()));
   }
   io::write_text_file(file, text);
 }
@@ -126,9 +130,12 @@ json study_view(const Study& study, const StudyRun& run, const std::vector<Stand
   for (const auto& v : run.variants) failed += !v.ok;
   view["facts"] = json::array({
       {{"label", "base project"}, {"value", study.base.string()}},
-      {{"label", "variants"}, {"value", fmt::format("{} ({} finished, {} failed)", run.variants.size(), run.variants.size() - failed, failed)}},
-      {{"label", "how they ran"}, {"value", run.jobs > 1 ? fmt::format("{} at a time, {} OpenMP thread(s) each", run.jobs, run.threads)
-                                                         : fmt::format("one after another, {} OpenMP thread(s) each", run.threads)}},
+      {{"label", "variants"},
+       {"value",
+        fmt::format("{} ({} finished, {} failed)", run.variants.size(), run.variants.size() - failed, failed)}},
+      {{"label", "how they ran"},
+       {"value", run.jobs > 1 ? fmt::format("{} at a time, {} OpenMP thread(s) each", run.jobs, run.threads)
+                              : fmt::format("one after another, {} OpenMP thread(s) each", run.threads)}},
       {{"label", "wall time"}, {"value", fmt::format("{:.1f} s", run.seconds)}},
   });
 
@@ -137,23 +144,30 @@ json study_view(const Study& study, const StudyRun& run, const std::vector<Stand
   auto row = [&](const Standing& st, int rank, bool closure_table) {
     const auto& v = *st.variant;
     const json design = v.summary.value("design", json::object());
-    const bool has_design = design.value("required_thickness", json()).is_number() || design.value("max_mean_temperature", json()).is_number();
+    const bool has_design = design.value("required_thickness", json()).is_number() ||
+                            design.value("max_mean_temperature", json()).is_number();
     const bool pass = design.value("pass", false);
     std::string closure = "not closed";
     if (st.closure_day)
       closure = std::isfinite(st.closure_error) ? report::with_error(*st.closure_day, st.closure_error, 1)
                                                 : number(*st.closure_day, 1);
     const bool shared = closure_table && closure_ranks[rank] > 1;
-    return json{{"rank", shared ? fmt::format("{}=", rank) : std::to_string(rank)},
-                {"name", v.name},
-                {"href", v.name + "/report.html"},
-                {"closure", closure + (closure_table && shared ? " (tied)" : "")},
-                {"thickness", number(st.thickness, 2)},
-                {"mean_temperature", number(st.mean_temperature, 1)},
-                {"design", !has_design ? "–" : (pass ? "pass, day " + number(design["reached_day"].is_number() ? design["reached_day"].get<double>() : nan, 1) : "fail")},
-                {"design_class", !has_design ? "" : (pass ? "pass" : "fail")},
-                {"seconds", fmt::format("{:.1f}", v.seconds)},
-                {"changes", v.changes}};
+    return json{
+        {"rank", shared ? fmt::format("{}=", rank) : std::to_string(rank)},
+        {"name", v.name},
+        {"href", v.name + "/report.html"},
+        {"closure", closure + (closure_table && shared ? " (tied)" : "")},
+        {"thickness", number(st.thickness, 2)},
+        {"mean_temperature", number(st.mean_temperature, 1)},
+        {"design",
+         !has_design
+             ? "–"
+             : (pass ? "pass, day " +
+                           number(design["reached_day"].is_number() ? design["reached_day"].get<double>() : nan, 1)
+                     : "fail")},
+        {"design_class", !has_design ? "" : (pass ? "pass" : "fail")},
+        {"seconds", fmt::format("{:.1f}", v.seconds)},
+        {"changes", v.changes}};
   };
   json by_closure = json::array(), by_thickness = json::array(), failures = json::array();
   for (const auto& st : standings)
@@ -204,7 +218,8 @@ json study_view(const Study& study, const StudyRun& run, const std::vector<Stand
   return view;
 }
 
-void write_study_html(const fs::path& file, const Study& study, const StudyRun& run, const std::vector<Standing>& standings) {
+void write_study_html(const fs::path& file, const Study& study, const StudyRun& run,
+                      const std::vector<Standing>& standings) {
   io::write_text_file(file, report::render_template(report::templates::study_html, study_view(study, run, standings)));
 }
 

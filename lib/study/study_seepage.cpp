@@ -13,7 +13,9 @@ using nlohmann::json;
 namespace {
 
 std::string number(double v, int decimals) { return std::isfinite(v) ? report::tick_label(v, decimals) : "–"; }
-double get(const json& j, const char* key) { return j.contains(key) && j[key].is_number() ? j[key].get<double>() : NAN; }
+double get(const json& j, const char* key) {
+  return j.contains(key) && j[key].is_number() ? j[key].get<double>() : NAN;
+}
 
 // |q| in m/d; 0 for still water.
 double seepage(const json& summary) {
@@ -47,15 +49,17 @@ void add_seepage(const StudyRun& run, json& view) {
     else open.x.push_back(q), open.y.push_back(get(last_wall, "day"));
     const json g = v.summary.value("groundwater", json::object());
     const json gap = g.value("last_gap", json(nullptr));
-    rows.push_back({{"name", v.name},
-                    {"href", v.name + "/report.html"},
-                    {"flux", number(q, 2)},
-                    {"closure", number(closure, 2)},
-                    {"last_gap", gap.is_object() ? fmt::format("{} ({})", gap.value("between", ""), gap.value("position", "")) : "–"},
-                    {"upstream", number(get(last_wall, "min_thickness_upstream"), 2)},
-                    {"downstream", number(get(last_wall, "min_thickness_downstream"), 2)},
-                    {"day", number(get(last_wall, "day"), 1)},
-                    {"verdict", g.value("verdict", std::string("still water"))}});
+    rows.push_back(
+        {{"name", v.name},
+         {"href", v.name + "/report.html"},
+         {"flux", number(q, 2)},
+         {"closure", number(closure, 2)},
+         {"last_gap",
+          gap.is_object() ? fmt::format("{} ({})", gap.value("between", ""), gap.value("position", "")) : "–"},
+         {"upstream", number(get(last_wall, "min_thickness_upstream"), 2)},
+         {"downstream", number(get(last_wall, "min_thickness_downstream"), 2)},
+         {"day", number(get(last_wall, "day"), 1)},
+         {"verdict", g.value("verdict", std::string("still water"))}});
   }
   report::Chart chart;
   chart.title = "closure against the regional seepage";

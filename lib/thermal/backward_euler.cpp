@@ -79,8 +79,8 @@ struct BackwardEuler::LinearSystem {
   // Writes the matrix for the current coefficients; slope[i] = dT/dH
   // (0: pinned). With water, its upwind part: a particle's outflows on its
   // diagonal, its inflows from free particles off it (w = rho_w c_w).
-  void assemble(const ThermalModel& model, const std::vector<double>& a, const std::vector<double>& slope,
-                double dt, const HeatAdvection* water) {
+  void assemble(const ThermalModel& model, const std::vector<double>& a, const std::vector<double>& slope, double dt,
+                const HeatAdvection* water) {
     const std::vector<double>* flux = water ? &water->pair_flux() : nullptr;
     const double w = water ? water->water_heat_capacity() : 0.0;
     const auto& V = model.volume();
@@ -98,7 +98,8 @@ struct BackwardEuler::LinearSystem {
         diag += a[e];
         if (pair_entry[e] >= 0) value[pair_entry[e]] -= a[e];
       }
-      for (std::size_t k = wall_start[i]; k < wall_start[i + 1]; ++k) value[wall_entry[k]] += a[wall_pair[k]] * wall_weight[k];
+      for (std::size_t k = wall_start[i]; k < wall_start[i + 1]; ++k)
+        value[wall_entry[k]] += a[wall_pair[k]] * wall_weight[k];
       if (flux)
         for (std::size_t e = P.row_start[i]; e < P.row_start[i + 1]; ++e) {
           const double Q = (*flux)[e];
@@ -200,7 +201,8 @@ bool BackwardEuler::try_step(ThermalModel& model, double t, double dt) {
           double dTj = 0.0;
           if (j < n) dTj = x[j];
           else if (!W.row_start.empty())
-            for (std::size_t m = W.row_start[j - n]; m < W.row_start[j - n + 1]; ++m) dTj -= W.weight[m] * x[W.column[m]];
+            for (std::size_t m = W.row_start[j - n]; m < W.row_start[j - n + 1]; ++m)
+              dTj -= W.weight[m] * x[W.column[m]];
           inflow += a_[e] * dTj;
           if (water_ && j < n && j != i && water_->pair_flux()[e] < 0.0)
             inflow -= water_->water_heat_capacity() * water_->pair_flux()[e] * dTj / V[i];

@@ -34,11 +34,11 @@
 namespace frostwall::thermal {
 
 struct BackwardEulerSettings {
-  double step_change = 0.25;     // target max |dH| per step / latent heat
-  double first_step = 0.0;       // s; 0: a few explicit steps' worth
-  double growth = 1.5;           // largest step increase per step
+  double step_change = 0.25;        // target max |dH| per step / latent heat
+  double first_step = 0.0;          // s; 0: a few explicit steps' worth
+  double growth = 1.5;              // largest step increase per step
   double max_steps_explicit = 1e4;  // longest step, in explicit steps
-  double newton_tolerance = 1e-7;  // max |residual| dt / latent heat
+  double newton_tolerance = 1e-7;   // max |residual| dt / latent heat
   int max_newton = 40;
   // With water: after this many Newton iterations of a step (0: never) the
   // step's hook runs (the flow solved again for the iterate's ice) and the

@@ -21,19 +21,22 @@ double HeatAdvection::stable_step(const ThermalModel& model) const {
   for (std::size_t i = 0; i < P.n_free; ++i) {
     double inflow = 0.0;
     for (std::size_t e = P.row_start[i]; e < P.row_start[i + 1]; ++e) inflow += std::max(0.0, -flux_[e]);
-    if (inflow > 0.0) step = std::min(step, model.volume()[i] * model.law_of(i).smallest_heat_capacity() / (rho_c_w_ * inflow));
+    if (inflow > 0.0)
+      step = std::min(step, model.volume()[i] * model.law_of(i).smallest_heat_capacity() / (rho_c_w_ * inflow));
   }
   stable_ = scheme_ == AdvectionScheme::limited ? 0.5 * step : step;
   return stable_;
 }
 
-double HeatAdvection::limited_correction(const particles::PairWeights& P, std::size_t u, std::size_t e, double jump) const {
+double HeatAdvection::limited_correction(const particles::PairWeights& P, std::size_t u, std::size_t e,
+                                         double jump) const {
   if (jump == 0.0) return 0.0;
   const double r = 2.0 * (gradient_[2 * u] * P.vector[2 * e] + gradient_[2 * u + 1] * P.vector[2 * e + 1]) / jump - 1.0;
   return 0.5 * (r + std::abs(r)) / (1.0 + std::abs(r)) * jump;  // van Leer's phi(r) (T_d - T_u) / 2
 }
 
-void HeatAdvection::rate(const ThermalModel& model, double t, std::vector<double>& rate, std::vector<double>& boundary_heat) const {
+void HeatAdvection::rate(const ThermalModel& model, double t, std::vector<double>& rate,
+                         std::vector<double>& boundary_heat) const {
   const auto& P = model.pairs();
   if (flux_.size() != P.pairs()) throw std::logic_error("HeatAdvection: one flux per pair expected");
   // The implicit scheme steps its own faces; the coupled one leaves across

@@ -10,7 +10,6 @@
 #include <cmath>
 #include <stdexcept>
 
-
 #include "thermal/heat_advection.hpp"
 
 namespace frostwall::thermal {
@@ -121,7 +120,8 @@ std::vector<double> HeatAdvection::advance_implicit(ThermalModel& model, double 
       rate_[i] = T[i];
       continue;
     }
-    rate_[i] = law.temperature(solve_particle(law, V[i], w * out * theta, V[i] * H[i] + w * (in - (1.0 - theta) * out * T[i])));
+    rate_[i] = law.temperature(
+        solve_particle(law, V[i], w * out * theta, V[i] * H[i] + w * (in - (1.0 - theta) * out * T[i])));
     // The enthalpy from the balance with the temperature the particle
     // passes on, so the heat is conserved to round-off, not to the root's.
     start_[i] = H[i] + w * (in - out * (theta * rate_[i] + (1.0 - theta) * T[i])) / V[i];

@@ -21,12 +21,18 @@ class IncompleteLU0 {
 
   IncompleteLU0() = default;
   template <class Matrix>
-  explicit IncompleteLU0(const Matrix& A) { compute(A); }
+  explicit IncompleteLU0(const Matrix& A) {
+    compute(A);
+  }
 
   template <class Matrix>
-  IncompleteLU0& analyzePattern(const Matrix&) { return *this; }
+  IncompleteLU0& analyzePattern(const Matrix&) {
+    return *this;
+  }
   template <class Matrix>
-  IncompleteLU0& factorize(const Matrix& A) { return compute(A); }
+  IncompleteLU0& factorize(const Matrix& A) {
+    return compute(A);
+  }
 
   template <class Matrix>
   IncompleteLU0& compute(const Matrix& A) {

@@ -39,9 +39,7 @@ T* find_integrator(Integrator* integrator) {
 class ExplicitEuler final : public Integrator {
  public:
   ExplicitEuler(double beta, double h) : beta_(beta), h_(h) {}
-  double preferred_step(const ThermalModel& model) const override {
-    return beta_ * h_ * h_ / model.max_diffusivity();
-  }
+  double preferred_step(const ThermalModel& model) const override { return beta_ * h_ * h_ / model.max_diffusivity(); }
   std::vector<double> advance(ThermalModel& model, double t, double dt) override;
   const char* name() const override { return "explicit"; }
 

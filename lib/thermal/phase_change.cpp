@@ -47,9 +47,7 @@ double PhaseChangeLaw::temperature_slope(double H, double direction) const {
   return mushy;
 }
 
-bool PhaseChangeLaw::anisotropic() const {
-  return k_frozen_[0] != k_frozen_[1] || k_unfrozen_[0] != k_unfrozen_[1];
-}
+bool PhaseChangeLaw::anisotropic() const { return k_frozen_[0] != k_frozen_[1] || k_unfrozen_[0] != k_unfrozen_[1]; }
 
 double PhaseChangeLaw::max_diffusivity() const {
   double a = 0.0;

@@ -37,9 +37,7 @@ class PhaseChangeLaw {
   // Conductivity along axis d: linear in liquid fraction between the frozen
   // and the unfrozen value (a freezing particle is a frozen and an unfrozen
   // share side by side).
-  double conductivity(double f, int axis) const {
-    return k_frozen_[axis] + f * (k_unfrozen_[axis] - k_frozen_[axis]);
-  }
+  double conductivity(double f, int axis) const { return k_frozen_[axis] + f * (k_unfrozen_[axis] - k_frozen_[axis]); }
   bool anisotropic() const;
   double max_diffusivity() const;  // m2/s, over both phases and axes
   double freezing_point() const { return Tf_; }

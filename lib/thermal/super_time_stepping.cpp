@@ -8,11 +8,12 @@
 namespace frostwall::thermal {
 
 namespace {
-constexpr double safety = 0.8;  // of the Gershgorin limit: k rises as particles freeze within a step
+constexpr double safety = 0.8;           // of the Gershgorin limit: k rises as particles freeze within a step
 constexpr double spectral_safety = 0.9;  // of the eigenvalue's limit: the power iteration's estimate is from below
 
 double smallest_capacity(const PhaseChangeLaw& law) {
-  return 1.0 / std::max(law.temperature_slope(-1.0, -1.0), law.temperature_slope(2.0 * law.latent_enthalpy() + 1.0, 1.0));
+  return 1.0 /
+         std::max(law.temperature_slope(-1.0, -1.0), law.temperature_slope(2.0 * law.latent_enthalpy() + 1.0, 1.0));
 }
 
 // Largest |eigenvalue| of dT/dt = J T for the model's coefficients now and
@@ -86,7 +87,6 @@ double SuperTimeStepping::forward_euler_limit(const ThermalModel& model) {
   });
   return worst > 0.0 ? safety * 2.0 * C_min / worst : 1e300;
 }
-
 
 double SuperTimeStepping::spectral_limit(const ThermalModel& model) {
   double lambda = 0.0;

@@ -4,10 +4,9 @@
 
 namespace frostwall::thermal {
 
-ThermalModel::ThermalModel(std::vector<double> volume, std::vector<int> boundary_id,
-                           particles::PairWeights pairs, PhaseChangeLaw law,
-                           std::vector<FixedTemperatureBoundary> boundaries, ConductionOptions options,
-                           double initial_temperature, sph::WallExtrapolation beyond_wall)
+ThermalModel::ThermalModel(std::vector<double> volume, std::vector<int> boundary_id, particles::PairWeights pairs,
+                           PhaseChangeLaw law, std::vector<FixedTemperatureBoundary> boundaries,
+                           ConductionOptions options, double initial_temperature, sph::WallExtrapolation beyond_wall)
     : volume_(std::move(volume)),
       boundary_id_(std::move(boundary_id)),
       pairs_(std::move(pairs)),
@@ -115,7 +114,8 @@ const std::vector<double>& ThermalModel::pair_coefficients() const {
   if (all_changed_) {
     coefficient_.resize(P.pairs());
     particles::for_each_particle(P.n_free, [&](std::size_t i) {
-      for (std::size_t e = P.row_start[i]; e < P.row_start[i + 1]; ++e) coefficient_[e] = coefficient(i, P.column[e], e);
+      for (std::size_t e = P.row_start[i]; e < P.row_start[i + 1]; ++e)
+        coefficient_[e] = coefficient(i, P.column[e], e);
     });
     all_changed_ = false;
     std::fill(k_changed_.begin(), k_changed_.end(), 0);
@@ -125,7 +125,8 @@ const std::vector<double>& ThermalModel::pair_coefficients() const {
     if (!k_changed_[p]) continue;
     k_changed_[p] = 0;
     if (p < P.n_free)
-      for (std::size_t e = P.row_start[p]; e < P.row_start[p + 1]; ++e) coefficient_[e] = coefficient(p, P.column[e], e);
+      for (std::size_t e = P.row_start[p]; e < P.row_start[p + 1]; ++e)
+        coefficient_[e] = coefficient(p, P.column[e], e);
     for (std::size_t s = incoming_start_[p]; s < incoming_start_[p + 1]; ++s)
       coefficient_[incoming_pair_[s]] = coefficient(incoming_row_[s], p, incoming_pair_[s]);
   }

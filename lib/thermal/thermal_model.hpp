@@ -54,8 +54,8 @@ class ThermalModel {
   // `beyond_wall` gives the fixed particles' antisymmetric extension; when
   // empty every fixed particle holds its wall's temperature.
   ThermalModel(std::vector<double> volume, std::vector<int> boundary_id, particles::PairWeights pairs,
-               PhaseChangeLaw law, std::vector<FixedTemperatureBoundary> boundaries,
-               ConductionOptions options, double initial_temperature, sph::WallExtrapolation beyond_wall = {});
+               PhaseChangeLaw law, std::vector<FixedTemperatureBoundary> boundaries, ConductionOptions options,
+               double initial_temperature, sph::WallExtrapolation beyond_wall = {});
 
   std::size_t size() const { return volume_.size(); }
   std::size_t free_count() const { return pairs_.n_free; }

@@ -12,9 +12,9 @@
 namespace frostwall::thermal {
 
 struct TimeLoopObservers {
-  std::function<void(const ThermalModel&, double t)> after_step;             // optional
+  std::function<void(const ThermalModel&, double t)> after_step;               // optional
   std::function<void(const ThermalModel&, double t, std::size_t k)> snapshot;  // optional
-  std::function<void(double t, double t_end)> progress;                       // optional
+  std::function<void(double t, double t_end)> progress;                        // optional
   std::function<bool()> finished;  // optional: ends the run early when it returns true
 };
 
