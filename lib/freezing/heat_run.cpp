@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <future>
 #include <memory>
 #include <omp.h>
 #include <optional>
@@ -79,10 +78,6 @@ class HeatRun {
   std::size_t next_sample_ = 0;
   double t_before_ = 0.0;
   std::vector<double> f_before_, T_before_, f_at_, T_at_;
-  // The whole ring's file of the last snapshot, written on a thread of its
-  // own while the time loop goes on; waited for before the next and at the
-  // end. Last member: it uses the ring's triangles of results_.
-  std::future<void> ring_writer_;
 };
 
 HeatRun::HeatRun(const Project& p, Model& built, const project::RunOptions& options, RunExtension* extension)
@@ -212,12 +207,9 @@ void HeatRun::write_snapshot(const thermal::ThermalModel& m, double t, const std
     // for the ring's front curves, over the same copies of the particles.
     const auto* triangles = results_->ring_triangles();
     if (!triangles) throw std::logic_error("ring files without the ring's triangles");
-    if (ring_writer_.valid()) ring_writer_.get();  // one ring file at a time; its failure ends the run
-    ring_writer_ = std::async(std::launch::async, [this, frame, triangles, file = out_ / ring_file] {
-      auto ring = full_ring(frame, built_.particles().mirrors, built_.shaft->far_field_radius);
-      ring.triangles = *triangles;
-      io::write_vtu(file, ring);
-    });
+    auto ring = full_ring(frame, built_.particles().mirrors, built_.shaft->far_field_radius);
+    ring.triangles = *triangles;
+    io::write_vtu(out_ / ring_file, ring);
     ring_pvd_.push_back({t / unit_, ring_file});
   }
 }
@@ -237,7 +229,6 @@ void HeatRun::note_for_paraview(const io::PointCloudFrame& frame) {
 
 void HeatRun::finish(const thermal::TimeLoopResult& loop) {
   if (p_.output.vtk) io::write_pvd(out_ / "field.pvd", pvd_);
-  if (ring_writer_.valid()) ring_writer_.get();
   if (write_ring_) io::write_pvd(out_ / "ring.pvd", ring_pvd_);
   if (p_.output.vtk && !pvd_.empty()) {
     using Kind = io::ParaviewSeries::Kind;

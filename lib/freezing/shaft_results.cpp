@@ -99,15 +99,6 @@ ShaftResults::ShaftResults(const project::Project& p, const Model& m)
           ring_points_.push_back(g(P.position[i]));
           ring_source_.push_back(i);
         }
-  if (!ring_points_.empty())
-    ring_triangulation_ = std::async(std::launch::async, [this, &P] {
-      // The ring files' triangles (output_frames.hpp): three local spacings,
-      // none across a pipe disc.
-      std::vector<double> limit(ring_source_.size()), boundary(ring_source_.size());
-      for (std::size_t k = 0; k < limit.size(); ++k)
-        limit[k] = 3.0 * P.spacing_of(ring_source_[k]), boundary[k] = P.boundary[ring_source_[k]];
-      return ground_triangles(ring_points_, limit, boundary, true);
-    });
 }
 
 ShaftResults::~ShaftResults() = default;
@@ -187,7 +178,14 @@ void ShaftResults::snapshot(double t, const thermal::ThermalModel& model, const 
   json entry = {{"day", t / day}, {"file", file}};
   if (!ring_points_.empty()) {
     const std::string ring_file = "interface_ring" + stem.substr(5) + ".vtp";
-    if (!ring_mesh_) ring_mesh_ = std::make_unique<post::IsolineMesh>(ring_points_, ring_triangulation_.get());
+    if (!ring_mesh_) {
+      // The ring files' triangles (output_frames.hpp): three local spacings,
+      // none across a pipe disc.
+      std::vector<double> limit(ring_source_.size()), boundary(ring_source_.size());
+      for (std::size_t k = 0; k < limit.size(); ++k)
+        limit[k] = 3.0 * P.spacing_of(ring_source_[k]), boundary[k] = P.boundary[ring_source_[k]];
+      ring_mesh_ = std::make_unique<post::IsolineMesh>(ring_points_, ground_triangles(ring_points_, limit, boundary, true));
+    }
     io::write_vtp(out / ring_file, ring_mesh_->isolines(values(ring_source_), 0.5), io::file_labels(project_));
     entry["full_ring_file"] = ring_file;
   }

@@ -8,7 +8,6 @@
 #include "post/isoline.hpp"
 
 #include <filesystem>
-#include <future>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -80,14 +79,11 @@ class ShaftResults {
   nlohmann::json interface_ = nlohmann::json::array();
   // Points for the front curves: the particles and their mirror images
   // (wedge), and the copies of the particles the files show around the ring
-  // (full ring), with the source index. The ring is triangulated on a
-  // thread of its own from set-up on (ring_triangulation_), while the time
-  // loop runs; the wedge at the first snapshot. Both are reused for every
-  // later snapshot.
+  // (full ring), with the source index. Triangulated at the first snapshot,
+  // reused for every later one.
   std::vector<particles::Vec<2>> curve_points_, ring_points_;
   std::vector<std::uint32_t> curve_source_, ring_source_;
   std::unique_ptr<post::IsolineMesh> curve_mesh_, ring_mesh_;
-  std::future<std::vector<geometry::Triangle>> ring_triangulation_;
 };
 
 }  // namespace frostwall::freezing
