@@ -184,7 +184,8 @@ void ShaftResults::snapshot(double t, const thermal::ThermalModel& model, const 
       std::vector<double> limit(ring_source_.size()), boundary(ring_source_.size());
       for (std::size_t k = 0; k < limit.size(); ++k)
         limit[k] = 3.0 * P.spacing_of(ring_source_[k]), boundary[k] = P.boundary[ring_source_[k]];
-      ring_mesh_ = std::make_unique<post::IsolineMesh>(ring_points_, ground_triangles(ring_points_, limit, boundary, true));
+      ring_mesh_ =
+          std::make_unique<post::IsolineMesh>(ring_points_, ground_triangles(ring_points_, limit, boundary, true));
     }
     io::write_vtp(out / ring_file, ring_mesh_->isolines(values(ring_source_), 0.5), io::file_labels(project_));
     entry["full_ring_file"] = ring_file;
