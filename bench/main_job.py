@@ -8,7 +8,7 @@ wall and CPU seconds and the median of the pairwise ratios B/A; the
 summary.json of both is compared, the timing fields left out.
 
   python3 bench/main_job.py                          # build/app/frostwall, 5 runs
-  python3 bench/main_job.py /tmp/frostwall-base      # against another build
+  python3 bench/main_job.py OLD/frostwall            # against another build (a copy of an earlier one)
   python3 bench/main_job.py --repeats 9 --threads 1 OTHER
 """
 import argparse, json, os, shutil, statistics, subprocess, sys, tempfile, time
