@@ -1,8 +1,6 @@
 #include "io/point_cloud_vtk.hpp"
 
-#include <algorithm>
 #include <stdexcept>
-#include <type_traits>
 
 #include <fmt/format.h>
 #include <vtkCellArray.h>
@@ -67,20 +65,6 @@ void set_cells(vtkUnstructuredGrid& grid, const PointCloudFrame& frame) {
   grid.SetCells(types, array);
 }
 
-// A VTK array (vtkFloatArray or vtkDoubleArray) of `tuples` tuples filled
-// from `values` straight into its storage, not value by value through
-// virtual calls.
-template <class Array>
-vtkSmartPointer<vtkDataArray> filled(const std::vector<double>& values, int components, vtkIdType tuples) {
-  auto array = vtkSmartPointer<Array>::New();
-  array->SetNumberOfComponents(components);
-  array->SetNumberOfTuples(tuples);
-  auto* out = array->GetPointer(0);
-  using Value = std::remove_pointer_t<decltype(out)>;
-  for (std::size_t k = 0; k < values.size(); ++k) out[k] = static_cast<Value>(values[k]);
-  return array;
-}
-
 }  // namespace
 
 PointCloudFrame subset(const PointCloudFrame& frame, const std::vector<std::size_t>& keep) {
@@ -116,11 +100,11 @@ void write_vtu(const fs::path& file, const PointCloudFrame& frame) {
       throw std::invalid_argument(
           fmt::format("write_vtu: vector '{}' has {} values for {} points", name, values.size(), n));
 
-  std::vector<double> xyz(3 * frame.points.size());
-  for (std::size_t i = 0; i < frame.points.size(); ++i)
-    std::copy(frame.points[i].begin(), frame.points[i].end(), &xyz[3 * i]);
   vtkNew<vtkPoints> points;
-  points->SetData(frame.single_precision ? filled<vtkFloatArray>(xyz, 3, n) : filled<vtkDoubleArray>(xyz, 3, n));
+  if (frame.single_precision) points->SetDataTypeToFloat();
+  else points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(n);
+  for (vtkIdType i = 0; i < n; ++i) points->SetPoint(i, frame.points[i].data());
 
   vtkNew<vtkUnstructuredGrid> grid;
   grid->SetPoints(points);
@@ -128,9 +112,14 @@ void write_vtu(const fs::path& file, const PointCloudFrame& frame) {
   add_labels(*grid->GetFieldData(), frame.labels);
 
   auto add = [&](const std::string& name, const std::vector<double>& values, int components) {
-    auto array = frame.single_precision ? filled<vtkFloatArray>(values, components, n)
-                                        : filled<vtkDoubleArray>(values, components, n);
+    vtkSmartPointer<vtkDataArray> array;
+    if (frame.single_precision) array = vtkSmartPointer<vtkFloatArray>::New();
+    else array = vtkSmartPointer<vtkDoubleArray>::New();
     array->SetName(name.c_str());
+    array->SetNumberOfComponents(components);
+    array->SetNumberOfTuples(n);
+    for (vtkIdType i = 0; i < n; ++i)
+      for (int c = 0; c < components; ++c) array->SetComponent(i, c, values[i * components + c]);
     grid->GetPointData()->AddArray(array);
   };
   for (const auto& [name, values] : frame.fields) add(name, values, 1);
