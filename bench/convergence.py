@@ -8,9 +8,7 @@ Each project runs to its own end (120 days) with only numerics.spacing
 changed, without VTK, report or error estimate, on all cores. Prints one
 markdown table per project (closure day, OB thickness at 60 days, free
 particles, wall seconds) and the observed order of the closure day from
-each three successive spacings (p = ln(|d1| / |d2|) / ln(r) for the two
-differences d1, d2 and a constant ratio r; '-' where the ratio changes or
-the differences change sign).
+each three successive spacings ('-' where the two differences change sign).
 """
 import argparse
 import json
@@ -52,15 +50,31 @@ def run(name, spacing, work, threads, exe=EXE):
 
 
 def observed_order(h, c):
-    """Orders from each three successive spacings with a constant ratio."""
+    """The order p from each three successive spacings h1 > h2 > h3: the p with
+    (c1 - c2) / (c2 - c3) = (h1^p - h2^p) / (h2^p - h3^p) (bisection on
+    0.05..8); None where the differences change sign or no p fits."""
     orders = []
     for k in range(len(c) - 2):
-        r1, r2 = h[k] / h[k + 1], h[k + 1] / h[k + 2]
         d1, d2 = c[k] - c[k + 1], c[k + 1] - c[k + 2]
-        if abs(r1 - r2) > 1e-9 * r1 or d1 * d2 <= 0:
+        if d1 * d2 <= 0:
             orders.append(None)
-        else:
-            orders.append(math.log(abs(d1) / abs(d2)) / math.log(r1))
+            continue
+        target = d1 / d2
+
+        def ratio(p):
+            return (h[k] ** p - h[k + 1] ** p) / (h[k + 1] ** p - h[k + 2] ** p)
+
+        lo, hi = 0.05, 8.0
+        if not (ratio(lo) - target) * (ratio(hi) - target) < 0:
+            orders.append(None)
+            continue
+        for _ in range(60):
+            mid = 0.5 * (lo + hi)
+            if (ratio(lo) - target) * (ratio(mid) - target) <= 0:
+                hi = mid
+            else:
+                lo = mid
+        orders.append(0.5 * (lo + hi))
     return orders
 
 
