@@ -35,12 +35,14 @@ constexpr double sph_explicit_rate = 21738.0 * 110472.0 / 46.5;
 //   explicit steps) in 1.47 s ("Paper mode against default mode");
 // - PD heat with mechanics: the PD paper's plate, 10 000 particles to 400 s
 //   (5.79e4 explicit steps) in 8.4 s ("PD: the plate at the paper's resolution");
-// - PD with pores (frost damage, crack cascades): the mortar plate at 1 um,
-//   90 000 particles to 0.12 s (5.49e5 explicit steps) in 343.7 s ("Frost
-//   damage: the mortar plate").
+// - PD with pores (frost damage, converged crack cascades): the shipped
+//   mortar plate at 3 um, 9 801 particles to 0.12 s (6.09e4 explicit
+//   steps) in 1 139.5 s beside a main job of 7.6 s on a loaded machine,
+//   so about 416 s where the main job takes its 2.77 s ("Frost damage: the
+//   mortar plate").
 const double sph_adaptive_rate = 6707.0 * std::sqrt(1.74e5) / 1.47;
 const double pd_plate_rate = 10000.0 * std::sqrt(5.79e4) / 8.4;
-const double pd_frost_rate = 90000.0 * std::sqrt(5.49e5) / 343.7;
+const double pd_frost_rate = 9801.0 * std::sqrt(6.09e4) / 416.0;
 // CFD-DEM: grain-steps per second on one core, the paper's leak case at
 // full size (settled packing, 116 000 grains; "CFD-DEM: the paper's leak
 // case at full size": 2.5e6 per core on 2 ranks).
