@@ -123,6 +123,8 @@ nlohmann::json gap_json(const post::Gap& gap, const std::array<double, 2>& q) {
   for (const auto& [t, through] : gap.flow) days.push_back(t / 86400.0), flow.push_back(through * 86400.0);
   return {{"between", gap.between},
           {"closure_day", gap.closed ? nlohmann::json(*gap.closed / 86400.0) : nlohmann::json(nullptr)},
+          {"bridge_closure_day",
+           gap.bridge_closed ? nlohmann::json(*gap.bridge_closed / 86400.0) : nlohmann::json(nullptr)},
           {"position", side_of(gap.middle, q)},
           {"middle", {gap.middle[0], gap.middle[1]}},
           {"flow", {{"days", days}, {"m3_per_day_per_m", flow}}}};

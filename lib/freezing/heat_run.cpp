@@ -105,7 +105,8 @@ HeatRun::HeatRun(const Project& p, Model& built, const project::RunOptions& opti
   // Flowing groundwater: the conduction integrator wrapped with the flow
   // and the heat it carries.
   if (p.groundwater) {
-    gaps_.emplace(built.particles(), geometry::pipe_positions(std::get<project::ShaftSection>(p.geometry).layout));
+    gaps_.emplace(built.particles(), geometry::pipe_positions(std::get<project::ShaftSection>(p.geometry).layout),
+                  built.shaft->pipe_radius);
     auto wrapped = std::make_unique<GroundwaterFlow>(*p.groundwater, built);
     flow_ = wrapped.get();
     built.integrator = std::move(wrapped);

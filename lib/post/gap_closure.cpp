@@ -1,11 +1,68 @@
 #include "post/gap_closure.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <map>
+#include <numeric>
+
+#include "geometry/delaunay.hpp"
 
 namespace frostwall::post {
 
-GapClosure::GapClosure(const particles::ParticleSet<2>& P, const std::vector<geometry::Pipe2>& pipes) {
+namespace {
+
+double cross(const particles::Vec<2>& u, const particles::Vec<2>& v) { return u[0] * v[1] - u[1] * v[0]; }
+
+// The gap's sector (free particles between the rays from the ring's centre,
+// the origin, through its two pipes, radially within a gap's width of
+// them), which wall each touches, and their Delaunay links no longer than
+// three local spacings (so none crosses a pipe hole).
+void find_sector(Gap& gap, const particles::ParticleSet<2>& P, double pipe_radius) {
+  particles::Vec<2> a = gap.from, b = gap.to;
+  if (cross(a, b) < 0.0) std::swap(a, b);
+  const double width = (gap.to - gap.from).norm();
+  const double r_lo = std::min(a.norm(), b.norm()) - width, r_hi = std::max(a.norm(), b.norm()) + width;
+  // A mirror line through the gap stands in for the wall beyond it.
+  const particles::MirrorPlane<2>* cut = nullptr;
+  for (const auto& m : P.mirrors)
+    if ((gap.from - m.point).dot(m.normal) * (gap.to - m.point).dot(m.normal) < 0.0) cut = &m;
+  std::vector<std::pair<geometry::Kernel2::Point_2, std::size_t>> points;
+  for (std::size_t i = 0; i < P.n_free; ++i) {
+    const particles::Vec<2>& x = P.position[i];
+    const double r = x.norm();
+    if (r < r_lo || r > r_hi || cross(a, x) < 0.0 || cross(x, b) < 0.0) continue;
+    const double near = pipe_radius + P.spacing_of(i);
+    char touch = 0;
+    if ((x - gap.from).norm() <= near) touch |= 1;
+    if ((x - gap.to).norm() <= near) touch |= 2;
+    if (cut && std::abs((x - cut->point).dot(cut->normal)) <= 0.75 * P.spacing_of(i))
+      touch |= (gap.inside_from == gap.from) ? 2 : 1;
+    points.emplace_back(geometry::Kernel2::Point_2(x[0], x[1]), gap.sector.size());
+    gap.sector.push_back(std::uint32_t(i));
+    gap.touches.push_back(touch);
+  }
+  const geometry::IndexedDelaunay dt(points.begin(), points.end());
+  std::vector<std::vector<std::uint32_t>> near(gap.sector.size());
+  for (auto e = dt.finite_edges_begin(); e != dt.finite_edges_end(); ++e) {
+    const std::size_t u = e->first->vertex(dt.cw(e->second))->info();
+    const std::size_t v = e->first->vertex(dt.ccw(e->second))->info();
+    const std::uint32_t i = gap.sector[u], j = gap.sector[v];
+    if ((P.position[i] - P.position[j]).norm() > 3.0 * std::max(P.spacing_of(i), P.spacing_of(j))) continue;
+    near[u].push_back(std::uint32_t(v));
+    near[v].push_back(std::uint32_t(u));
+  }
+  gap.link_start.assign(1, 0);
+  for (const auto& n : near) {
+    gap.link.insert(gap.link.end(), n.begin(), n.end());
+    gap.link_start.push_back(std::uint32_t(gap.link.size()));
+  }
+}
+
+}  // namespace
+
+GapClosure::GapClosure(const particles::ParticleSet<2>& P, const std::vector<geometry::Pipe2>& pipes,
+                       double pipe_radius) {
   // Neighbours: consecutive pipes of each ring, the last back to the first.
   std::map<int, std::vector<const geometry::Pipe2*>> rings;
   for (const auto& pipe : pipes)
@@ -26,18 +83,53 @@ GapClosure::GapClosure(const particles::ParticleSet<2>& P, const std::vector<geo
       // part inside the section; the water through the other is its image.
       for (const auto& m : P.mirrors) {
         const double sa = (pa - m.point).dot(m.normal), sb = (pb - m.point).dot(m.normal);
-        if ((sa < 0.0) == (sb < 0.0)) continue;
+        if (sa * sb >= 0.0) continue;  // not cut (a pipe on the line is not cut)
         const particles::Vec<2> cut = pa + sa / (sa - sb) * d;
-        (sa < 0.0 ? gap.inside_from : gap.inside_to) = cut;
+        const double inside = (P.position.front() - m.point).dot(m.normal);  // the section's side
+        (sa * inside < 0.0 ? gap.inside_from : gap.inside_to) = cut;
         gap.copies = 2.0;
       }
       for (std::size_t i = 0; i < P.n_free; ++i) {
         const double s = std::clamp((P.position[i] - pa).dot(d) / d.squaredNorm(), 0.0, 1.0);
         if ((P.position[i] - (pa + s * d)).norm() <= 0.75 * P.spacing_of(i)) gap.along.push_back(std::uint32_t(i));
       }
-      if (!gap.along.empty()) gaps_.push_back(std::move(gap));
+      if (gap.along.empty()) continue;
+      find_sector(gap, P, pipe_radius);
+      gaps_.push_back(std::move(gap));
     }
   }
+}
+
+double GapClosure::bottleneck(const Gap& gap, const std::vector<double>& g) {
+  // Kruskal-like: add the sector's particles from the most frozen up,
+  // joining linked ones (union-find); the level at which one component
+  // first touches both walls is the bottleneck.
+  const std::size_t n = gap.sector.size();
+  order_.resize(n);
+  std::iota(order_.begin(), order_.end(), 0u);
+  std::sort(order_.begin(), order_.end(),
+            [&](std::uint32_t u, std::uint32_t v) { return g[gap.sector[u]] < g[gap.sector[v]]; });
+  parent_.resize(n);
+  std::iota(parent_.begin(), parent_.end(), 0u);
+  added_.assign(n, 0);
+  flags_.assign(gap.touches.begin(), gap.touches.end());
+  auto root = [&](std::uint32_t u) {
+    while (parent_[u] != u) u = parent_[u] = parent_[parent_[u]];
+    return u;
+  };
+  for (const std::uint32_t u : order_) {
+    added_[u] = 1;
+    for (std::uint32_t e = gap.link_start[u]; e < gap.link_start[u + 1]; ++e) {
+      const std::uint32_t v = gap.link[e];
+      if (!added_[v]) continue;
+      const std::uint32_t rv = root(v), ru = root(u);
+      if (rv == ru) continue;
+      parent_[rv] = ru;
+      flags_[ru] |= flags_[rv];
+    }
+    if (flags_[root(u)] == 3) return g[gap.sector[u]];
+  }
+  return std::numeric_limits<double>::infinity();  // the walls are not linked at any level
 }
 
 std::optional<double> GapClosure::time_to_fall(double change) const {
@@ -49,11 +141,18 @@ std::optional<double> GapClosure::time_to_fall(double change) const {
 }
 
 void GapClosure::observe(double t, const std::vector<double>& g) {
+  // The time a measure falling from `before` to `now` crossed 0 (linear between observations).
+  auto crossing = [&](double before, double now) {
+    return before > 0.0 && t > last_t_ ? last_t_ + (t - last_t_) * before / (before - now) : t;
+  };
   for (auto& gap : gaps_) {
-    double worst = -1e300;
-    for (std::uint32_t i : gap.along) worst = std::max(worst, g[i]);
-    if (!gap.closed && worst <= 0.0)
-      gap.closed = gap.worst > 0.0 && t > last_t_ ? last_t_ + (t - last_t_) * gap.worst / (gap.worst - worst) : t;
+    double bridge = -1e300;
+    for (std::uint32_t i : gap.along) bridge = std::max(bridge, g[i]);
+    if (!gap.bridge_closed && bridge <= 0.0) gap.bridge_closed = crossing(gap.bridge_worst, bridge);
+    gap.bridge_worst = bridge;
+    if (gap.closed) continue;
+    const double worst = std::min(bottleneck(gap, g), bridge);
+    if (worst <= 0.0) gap.closed = crossing(gap.worst, worst);
     gap.falling = t > last_t_ ? (gap.worst - worst) / (t - last_t_) : 0.0;
     gap.worst = worst;
   }

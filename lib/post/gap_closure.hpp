@@ -1,13 +1,18 @@
-// Closure per gap: the day the straight bridge between two
-// neighbouring pipes of a ring is fully frozen, i.e. the latent heat left
-// (H / H_latent, as the closure detector uses) is at or below 0 at every
-// free particle within 0.75 of its own spacing of the segment between the
-// pipe centres. A frozen straight bridge is one frozen path through the
-// gap, so the wall's closure (post/closure.hpp: any path) comes no later
-// than the last gap's day; where the columns meet off the line (a flow
-// bending them) the gap's day is the later, conservative one. The day is
-// interpolated between observations. Gaps outside the simulated wedge
-// (no particles near them) are left out: the mirror images of those in it.
+// Closure per gap between two neighbouring pipes of a ring: the day a
+// fully frozen path joins the two pipe walls inside the gap's sector (the
+// ground between the rays from the ring's centre through the two pipe
+// centres), as the wall's closure (post/closure.hpp) is a fully frozen path
+// round the shaft. The path runs along the Delaunay links of the sector's
+// free particles, and the gap's measure is the bottleneck of g = H /
+// H_latent along it (the smallest level at which particles with g at or
+// below it join the two walls): the gap is closed when it is at or below 0,
+// interpolated between observations. A gap that a mirror line cuts joins
+// its pipe to the mirror line (the path's image closes the other half).
+// Also kept: the day the straight bridge between the pipe centres is fully
+// frozen (every free particle within 0.75 of its own spacing of the
+// segment), the later, conservative day where the columns meet off the
+// line (a flow bending them). Gaps outside the simulated wedge (no
+// particles near them) are left out: the mirror images of those in it.
 #pragma once
 
 #include <optional>
@@ -29,9 +34,15 @@ struct Gap {
   particles::Vec<2> inside_from, inside_to;
   double copies = 1.0;
   std::vector<std::uint32_t> along;  // free particles on the segment
-  std::optional<double> closed;      // s
-  double worst = 1.0;                // the largest latent share left along it, last observed
-  double falling = 0.0;              // -d worst / dt between the last two observations (1/s)
+  // The sector's free particles, their Delaunay links (local indices) and
+  // which wall each touches (bit 1: the first pipe's, bit 2: the second's).
+  std::vector<std::uint32_t> sector, link_start, link;
+  std::vector<char> touches;
+  std::optional<double> closed;         // s: a fully frozen path between the walls
+  std::optional<double> bridge_closed;  // s: the straight bridge fully frozen
+  double worst = 1.0;                   // the path's bottleneck, last observed
+  double bridge_worst = 1.0;            // the largest latent share left along the bridge
+  double falling = 0.0;                 // -d worst / dt between the last two observations (1/s)
   // The water through the gap at each flow solve: (s, m^2/s per metre of
   // depth, the magnitude).
   std::vector<std::pair<double, double>> flow;
@@ -39,7 +50,10 @@ struct Gap {
 
 class GapClosure {
  public:
-  GapClosure(const particles::ParticleSet<2>& particles, const std::vector<geometry::Pipe2>& pipes);
+  // pipe_radius: a free particle within one of its spacings of a pipe's
+  // wall touches it (the first ring of particles), and within 0.75 of a
+  // mirror line through the gap touches the line (the row beside it).
+  GapClosure(const particles::ParticleSet<2>& particles, const std::vector<geometry::Pipe2>& pipes, double pipe_radius);
   // latent_left: H / H_latent per particle, at time t (s).
   void observe(double t, const std::vector<double>& latent_left);
   // The flow through each gap from the pair fluxes Q_e (pore_water::
@@ -60,8 +74,12 @@ class GapClosure {
   std::optional<double> time_to_fall(double change) const;
 
  private:
+  // The bottleneck of g on the gap's sector links between its two walls.
+  double bottleneck(const Gap& gap, const std::vector<double>& g);
   std::vector<Gap> gaps_;
   double last_t_ = 0.0;
+  std::vector<std::uint32_t> order_, parent_;  // bottleneck scratch
+  std::vector<char> flags_, added_;
 };
 
 }  // namespace frostwall::post
