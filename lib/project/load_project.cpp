@@ -249,7 +249,10 @@ void read_groundwater_block(const Node& root, bool shaft, Project& project) {
       }
       if (g.advection == Advection::coupled && g.speed() > 0.0) {
         project.numerics.integrator = IntegratorKind::implicit;
-        if (!numerics["step_change"].present()) project.numerics.step_change = 0.25;
+        // A latent heat a step: the step is then held by the run's longest
+        // step (a 200th of it) and, while a gap freezes, by the gap's own
+        // closure (docs/groundwater.md).
+        if (!numerics["step_change"].present()) project.numerics.step_change = 1.0;
       }
       project.warnings.push_back(
           "groundwater: a full-size run under flow takes about an hour or more on two cores, and beside frozen ground "
