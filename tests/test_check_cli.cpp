@@ -62,9 +62,9 @@ void check_shipped(const std::function<bool(const std::string&)>& take, double s
   CHECK(projects >= 1);
 }
 
-// Shaft sections place a graded cloud of up to 174 000 particles (the
-// seepage reference: about 25 s on the bench machine); the others take
-// well under a second each.
+// Shaft sections place a graded cloud of tens of thousands of particles
+// (the seepage reference's half section: 45 000); the others take well
+// under a second each.
 bool graded_shaft(const std::string& name) {
   for (const char* shaft : {"single_ring", "three_hole", "four_hole", "seepage_reference", "shaft_layers"})
     if (name.starts_with(shaft)) return true;
