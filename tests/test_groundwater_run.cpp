@@ -139,7 +139,7 @@ TEST_CASE("Groundwater without flow is still water, and flowing water delays clo
     const auto& balance = (*s)["heat_balance"];
     double brought = 0.0;
     for (const auto& [name, heat] : balance["from_boundaries"].items()) brought += heat.get<double>();
-    CHECK(balance["stored_change"].get<double>() == Approx(brought).epsilon(1e-8));  // Newton's tolerance
+    CHECK(balance["stored_change"].get<double>() == Approx(brought).epsilon(1e-6));  // Newton's tolerance
   }
 }
 
@@ -149,7 +149,8 @@ TEST_CASE("Groundwater without flow is still water, and flowing water delays clo
 // again for each step's own ice after two Newton iterations and the limiter
 // is then held, so the closure day stays within 1 % of the explicit run's at a
 // fraction of its steps, and the heat balance closes to the Newton
-// tolerance (1e-7 of the latent heat per particle and step).
+// tolerance (under flow 1e-5 of the latent heat per particle and step:
+// within 1e-6 of the heat brought in over these runs).
 TEST_CASE("Groundwater: the coupled step closes within 1 % of the explicit scheme", "[freezing][groundwater][cli]") {
   json explicit_run = scaled_ring({1.0, 0.0});
   json coupled = explicit_run;
@@ -168,7 +169,7 @@ TEST_CASE("Groundwater: the coupled step closes within 1 % of the explicit schem
   const auto& balance = b["heat_balance"];
   double brought = 0.0;
   for (const auto& [name, heat] : balance["from_boundaries"].items()) brought += heat.get<double>();
-  CHECK(balance["stored_change"].get<double>() == Approx(brought).epsilon(1e-8));
+  CHECK(balance["stored_change"].get<double>() == Approx(brought).epsilon(1e-6));
 }
 
 // The longest steps the coupled run takes (a wall that stops closing at
@@ -201,15 +202,15 @@ TEST_CASE("Groundwater: at the longest coupled steps the heat balances and no te
   WARN(fmt::format("{} steps (mean {:.3f} d), {} Newton iterations; free particles between {:.6f} and {:.6f} C", steps,
                    30.0 / steps, s["run"]["newton_iterations"].get<int>(), lowest, highest));
   CHECK(steps < 400);
-  // Newton stops at 1e-7 of the latent heat per particle and step: some
-  // 1e-6 K of sand's sensible heat.
-  CHECK(lowest >= -20.0 - 1e-5);
-  CHECK(highest <= 10.0 + 1e-5);
+  // Under flow Newton stops at 1e-5 of the latent heat per particle and
+  // step: some 5e-4 K of sand's sensible heat.
+  CHECK(lowest >= -20.0 - 1e-3);
+  CHECK(highest <= 10.0 + 1e-3);
   CHECK(lowest < -5.0);  // the sampled fields do hold frozen ground
   const auto& balance = s["heat_balance"];
   double brought = 0.0;
   for (const auto& [name, heat] : balance["from_boundaries"].items()) brought += heat.get<double>();
-  CHECK(balance["stored_change"].get<double>() == Approx(brought).epsilon(1e-8));
+  CHECK(balance["stored_change"].get<double>() == Approx(brought).epsilon(1e-6));
 }
 
 // The flow between two pipes: with the ring turned by half a pitch the

@@ -25,14 +25,23 @@ void for_each_particle(std::size_t n, Body&& body) {
 // Runs body() with OpenMP (and so OpenBLAS, which follows OpenMP's thread
 // count) on one thread: for library calls made of many small BLAS-2
 // operations (a sparse triangular solve), where forking a team for each
-// costs more than it saves.
+// costs more than it saves. No parallel region inside is active, also
+// those that ask for a thread count of their own: CHOLMOD's supernodal
+// factorization forks 4 threads (its compiled-in CHOLMOD_OMP_NUM_THREADS)
+// to clear each supernode, which on 2 cores cost a seepage run a third of
+// its time in waking and parking threads (bench/README.md).
 template <class Body>
 decltype(auto) serially(Body&& body) {
   struct Restore {
     int threads = omp_get_max_threads();
-    ~Restore() { omp_set_num_threads(threads); }
+    int levels = omp_get_max_active_levels();
+    ~Restore() {
+      omp_set_num_threads(threads);
+      omp_set_max_active_levels(levels);
+    }
   } restore;
   omp_set_num_threads(1);
+  omp_set_max_active_levels(0);
   return body();
 }
 
