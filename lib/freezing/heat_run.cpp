@@ -8,6 +8,8 @@
 #include <optional>
 #include <stdexcept>
 
+#include <fmt/format.h>
+
 #include "freezing/brine_log.hpp"
 #include "freezing/closure_tracker.hpp"
 #include "freezing/groundwater_flow.hpp"
@@ -321,15 +323,6 @@ void run_heat(const Project& p, Model& built, const project::RunOptions& options
   const thermal::TimeLoopResult loop =
       thermal::run_time_loop(*built.model, *built.integrator, p.time.end, run.output_times(), run.observers());
   run.finish(loop);
-}
-
-void check_run_inputs(const Project& p) {
-  // The regional flow is held on the far field: an adiabatic one has none.
-  if (p.groundwater && !p.domain.far_field_temperature)
-    throw project::ProjectError(
-        {"groundwater: needs domain.far_field_temperature (the far field holds the regional flow "
-         "and the temperature of the water that enters)"});
-  io::check_output_directory(p.output.directory);
 }
 
 void run(const Project& p, const project::RunOptions& options) {
