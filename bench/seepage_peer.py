@@ -59,6 +59,8 @@ def run_frostwall(days, flux, threads, spacing, numerics, work):
     path = os.path.join(work, "frostwall.json")
     with open(path, "w") as f:
         json.dump(p, f)
+    check = subprocess.run([EXE, "check", path], check=True, capture_output=True, text=True).stdout
+    estimate = next((l.strip() for l in check.splitlines() if "run time:" in l), "run time: -")
     start = time.perf_counter()
     subprocess.run([EXE, "--threads", str(threads), "run", path], check=True, stdout=subprocess.DEVNULL,
                    stderr=subprocess.DEVNULL, env=dict(os.environ, CI="1"))
@@ -66,6 +68,7 @@ def run_frostwall(days, flux, threads, spacing, numerics, work):
     with open(os.path.join(work, "fw", "summary.json")) as f:
         s = json.load(f)
     s["script_wall_s"] = wall
+    s["check_estimate"] = estimate
     return s
 
 
@@ -146,6 +149,7 @@ def main():
         times.append(f"{label}: {s['script_wall_s']:.1f} s wall on {args.threads} threads, {r['steps']} steps, "
                      f"{r.get('newton_iterations', '-')} Newton iterations, {s['groundwater']['flow_solves']} flow "
                      f"solves; ring closed on day {s['closure_time_days']}")
+        times.append(f"frostwall check beforehand: {s['check_estimate']}")
     if not args.no_peer:
         for lv in args.levels:
             p = run_peer(lv, args.days, args.flux, work)

@@ -356,6 +356,10 @@ TEST_CASE("The shipped seepage study, on the scaled ring, delays closure with th
   const std::string html((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   CHECK(html.find("<h2>Closure against seepage</h2>") != std::string::npos);
   CHECK(html.find("closure against the regional seepage") != std::string::npos);
+  // 1 m/d closed within the 8 days and 2 m/d did not: the bracket.
+  const auto critical = html.find("<p id=\"critical-flux\">");
+  INFO((critical == std::string::npos ? std::string("no critical-flux paragraph") : html.substr(critical, 240)));
+  CHECK(html.find("the wall stops closing between 1 m/d (the fastest that closed) and 2 m/d") != std::string::npos);
   for (const char* name : {"still", "seepage-0.5", "seepage-4"})
     CHECK(html.find(fmt::format("<td class=\"nowrap\"><a href=\"{0}/report.html\">{0}</a></td>", name)) !=
           std::string::npos);

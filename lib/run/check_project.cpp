@@ -47,9 +47,9 @@ const double pd_frost_rate = 9801.0 * std::sqrt(6.09e4) / 416.0;
 // 200th of the run (shorter only while a gap closes), each a few Newton
 // iterations over every particle, so the run's length barely counts and
 // the work is the particle count: the shipped seepage reference, 44 963
-// particles to 90 d, in 380.0 s on 2 threads ("Seepage side by side with the
+// particles to 90 d, in 127 s on 2 threads ("Seepage side by side with the
 // finite-element peer").
-constexpr double implicit_rate = 44963.0 / 380.0;
+constexpr double implicit_rate = 44963.0 / 127.0;
 // CFD-DEM: grain-steps per second on one core, the paper's leak case at
 // full size (settled packing, 116 000 grains; "CFD-DEM: the paper's leak
 // case at full size": 2.5e6 per core on 2 ranks).

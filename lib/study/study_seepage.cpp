@@ -1,5 +1,6 @@
 #include "study/study_seepage.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <fmt/core.h>
 
@@ -22,6 +23,29 @@ double seepage(const json& summary) {
   if (!summary.contains("groundwater")) return 0.0;
   const auto& q = summary["groundwater"]["darcy_flux_m_per_day"];
   return std::hypot(q[0].get<double>(), q[1].get<double>());
+}
+
+// The critical flux, bracketed by the variants: the wall stops closing
+// between the fastest flux at which it closed and the slowest at which it
+// did not (within each run's time).
+std::string critical_flux(const std::vector<double>& closed, const std::vector<double>& open, double end) {
+  if (closed.empty() && open.empty()) return "";
+  auto flux = [](double q) { return fmt::format("{:.3g}", q); };
+  const double fastest_closed = closed.empty() ? NAN : *std::max_element(closed.begin(), closed.end());
+  const double slowest_open = open.empty() ? NAN : *std::min_element(open.begin(), open.end());
+  if (open.empty())
+    return fmt::format("The wall closed at every flux up to {} m/d: the critical flux is above it.",
+                       flux(fastest_closed));
+  if (closed.empty())
+    return fmt::format("The wall did not close at any flux from {} m/d within {} days: the critical flux is below it.",
+                       flux(slowest_open), number(end, 0));
+  if (fastest_closed < slowest_open)
+    return fmt::format(
+        "Critical flux: the wall stops closing between {} m/d (the fastest that closed) and {} m/d (the slowest that "
+        "did not close within {} days).",
+        flux(fastest_closed), flux(slowest_open), number(end, 0));
+  return fmt::format("The wall closed at {} m/d but not at {} m/d: the variants do not bracket one critical flux.",
+                     flux(fastest_closed), flux(slowest_open));
 }
 
 }  // namespace
@@ -67,6 +91,7 @@ void add_seepage(const StudyRun& run, json& view) {
   chart.y_label = "closure (day)";
   chart.x_include = {0.0};
   chart.y_include = {0.0};
+  view["seepage_critical"] = critical_flux(closed.x, open.x, end);
   chart.series.push_back(std::move(closed));
   if (!open.x.empty()) chart.series.push_back(std::move(open));
   view["seepage_rows"] = rows;
