@@ -10,6 +10,7 @@ the pipe's own diameter included, as the peer measures it.
 
   python3 bench/seepage_rays.py                     # 0.5 and 1 m/d, peer level 1
   python3 bench/seepage_rays.py --flux 0.5 --level 0
+  python3 bench/seepage_rays.py --spacing 0.03 --no-peer   # frostwall on a finer cloud
 
 Frostwall's interval is read from its full-ring VTK snapshots, interpolated
 linearly on their triangles (vtkProbeFilter, every 2 mm); points inside the
@@ -27,10 +28,12 @@ DAYS = [20, 40, 60]
 RING, PIPE_RADIUS, OUTER = 5.0, 0.0635, 15.0
 
 
-def run_frostwall(flux, threads, work):
+def run_frostwall(flux, threads, spacing, work):
     with open(CASE) as f:
         p = json.load(f)
     p["groundwater"]["darcy_flux"] = [flux, 0.0]
+    if spacing:
+        p["numerics"]["spacing"] = spacing
     p["time"] = {"end": 60, "unit": "d", "snapshots": DAYS}
     out = os.path.join(work, f"fw_{flux:g}")
     p["output"] = {"directory": out, "vtk": True, "full_ring": True, "report": False}
@@ -124,6 +127,10 @@ def peer_rays(r):
     return rays
 
 
+def show(v):
+    return "-" if v is None else f"{v:.3f}"
+
+
 def relative(a, b):
     return "-" if a is None or b is None or b == 0 else f"{100 * (a / b - 1):+.1f} %"
 
@@ -133,28 +140,30 @@ def main():
     ap.add_argument("--flux", type=float, nargs="*", default=[0.5, 1.0])
     ap.add_argument("--level", type=float, default=1.0)
     ap.add_argument("--threads", type=int, default=2)
+    ap.add_argument("--spacing", type=float, default=None, help="frostwall's spacing (default: as shipped)")
+    ap.add_argument("--no-peer", action="store_true", help="frostwall's rays alone")
     ap.add_argument("--keep", action="store_true")
     args = ap.parse_args()
-    if not shutil.which("FreeFem++-nw"):
+    if not args.no_peer and not shutil.which("FreeFem++-nw"):
         sys.exit("the peer needs FreeFem++: apt-get install -y freefem++")
     work = tempfile.mkdtemp(prefix="frostwall-rays-")
     for q in args.flux:
-        s, out = run_frostwall(q, args.threads, work)
-        p = run_peer(args.level, 60, q, work)
-        fw, pe = frostwall_days(s), peer_days(p)
-        print(f"\n{q:g} m/d to day 60: frostwall {s['run']['particles']} particles, peer level {args.level:g} "
-              f"({p['vertices']} vertices)\n")
+        s, out = run_frostwall(q, args.threads, args.spacing, work)
+        p = None if args.no_peer else run_peer(args.level, 60, q, work)
+        fw, pe = frostwall_days(s), ({} if p is None else peer_days(p))
+        peer = "no peer" if p is None else f"peer level {args.level:g} ({p['vertices']} vertices)"
+        print(f"\n{q:g} m/d to day 60: frostwall {s['run']['particles']} particles, {peer}\n")
         print("| gap | angle (deg) | frostwall (d) | peer (d) | frostwall - peer |")
         print("|---|---|---|---|---|")
         for k in range(PIPES // 2):
             a, b = fw.get(k), pe.get(k)
             print(f"| {k} | {(k + 0.5) * 360 / PIPES:.1f} | {fmt_day(a)} | {fmt_day(b)} | {relative(a, b)} |")
-        fr, pr = frostwall_rays(out), peer_rays(p)
+        fr, pr = frostwall_rays(out), ({} if p is None else peer_rays(p))
         print("\n| day | upstream: frostwall (m) | peer (m) | difference | downstream: frostwall (m) | peer (m) | difference |")
         print("|---|---|---|---|---|---|---|")
         for day in DAYS:
             (fu, fd), (pu, pd) = fr[day], pr.get(day, (None, None))
-            print(f"| {day} | {fu:.3f} | {pu:.3f} | {relative(fu, pu)} | {fd:.3f} | {pd:.3f} | {relative(fd, pd)} |")
+            print(f"| {day} | {fu:.3f} | {show(pu)} | {relative(fu, pu)} | {fd:.3f} | {show(pd)} | {relative(fd, pd)} |")
     if args.keep:
         print("work folder:", work)
     else:

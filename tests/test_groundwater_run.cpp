@@ -55,6 +55,7 @@ double closure(const json& s) { return s["closure_time_days"].is_null() ? 1e9 : 
 void run_shipped_seepage_study(const json& patch, const fs::path& dir) {
   json study = json::parse(std::ifstream((fs::path(FROSTWALL_SOURCE_DIR) / "projects") / "study_seepage.json"));
   study["patch"] = patch;
+  for (auto& v : study["variants"]) v["patch"].erase("numerics");  // the patch sets the cloud
   study["base"] = ((fs::path(FROSTWALL_SOURCE_DIR) / "projects") / "single_ring_sand.json").string();
   study["output"]["directory"] = "out";
   std::ofstream(dir / "study.json") << study.dump(2);
