@@ -2,7 +2,7 @@
 // 0.8 m ring, 2.5 m domain, 5 cm lattice; closes in about 4 days in still
 // water): a groundwater block with no flow is still water to the last
 // digit; flowing water delays closure more the faster it flows; the heat
-// balance, with what the water carries in and out, closes to round-off.
+// balance, with what the water carries in and out, closes to the Newton tolerance.
 #include <catch2/catch.hpp>
 #include <fmt/core.h>
 #include <fstream>
