@@ -11,10 +11,6 @@
 
 namespace frostwall::thermal {
 
-namespace {
-constexpr double linear_tolerance = 1e-2;  // relative residual of each Newton system
-}  // namespace
-
 // The Newton matrix in temperature increments, one row per free particle:
 //   (C_i/dt + sum_e a_e) dT_i - sum_{j free} a_e dT_j + sum_{j beyond a wall} a_e sum_m w_jm dT_m
 // (a fixed particle beyond a wall follows the free ones through its
@@ -183,12 +179,7 @@ bool BackwardEuler::try_step(ThermalModel& model, double t, double dt) {
       rhs[i] = slope[i] == 0.0 ? 0.0 : residual_[i];
     });
     system_->assemble(model, a_, slope, dt, water_);
-    // Inexact Newton: each linear solve cuts the residual a hundredfold,
-    // and the iterations stop on the step's own residual above. On the
-    // seepage reference to day 60 this took as many Newton iterations as
-    // solving to 1e-8, every gap's day the same to 0.03 d, in 0.74 of the
-    // time (bench/README.md).
-    system_->solver.setTolerance(linear_tolerance);
+    system_->solver.setTolerance(settings_.linear_tolerance);
     // ILU(0) and its triangular solves are serial; Eigen's threaded
     // products between them only woke the team for little work.
     particles::serially([&] {
