@@ -182,7 +182,12 @@ def main():
     if ref:
         print("largest per-gap error against the converged peer (gaps it closes by day 60): " +
               ", ".join(f"{c[0].split(' (')[0]} {100 * w:.1f} %" for c, w in zip(columns, worst)))
-    if args.keep:
+    finish(work, args.keep)
+
+
+def finish(work, keep):
+    """Keeps the work folder (and says where) or removes it."""
+    if keep:
         print("work folder:", work)
     else:
         shutil.rmtree(work, ignore_errors=True)

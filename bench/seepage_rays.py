@@ -22,7 +22,7 @@ import argparse, json, math, os, shutil, subprocess, sys, tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
-from seepage_peer import run_peer, peer_days, frostwall_days, fmt_day, CASE, EXE, PIPES  # noqa: E402
+from seepage_peer import run_peer, peer_days, frostwall_days, fmt_day, finish, CASE, EXE, PIPES  # noqa: E402
 
 DAYS = [20, 40, 60]
 RING, PIPE_RADIUS, OUTER = 5.0, 0.0635, 15.0
@@ -164,10 +164,7 @@ def main():
         for day in DAYS:
             (fu, fd), (pu, pd) = fr[day], pr.get(day, (None, None))
             print(f"| {day} | {fu:.3f} | {show(pu)} | {relative(fu, pu)} | {fd:.3f} | {show(pd)} | {relative(fd, pd)} |")
-    if args.keep:
-        print("work folder:", work)
-    else:
-        shutil.rmtree(work, ignore_errors=True)
+    finish(work, args.keep)
 
 
 if __name__ == "__main__":
