@@ -19,6 +19,7 @@
 #include "run/check_project.hpp"
 #include "run/run_project.hpp"
 #include "study/run_layers.hpp"
+#include "study/run_sections.hpp"
 #include "study/study_report.hpp"
 
 namespace {
@@ -96,7 +97,14 @@ int run_command(const std::string& file) {
   options.progress = progress_printer(p.time);
   options.note = [](const std::string& s) { std::cerr << s << "\n"; };
   const int status = exit_status("run", [&] {
-    if (!p.layers.empty()) {
+    if (p.survey) {
+      // The shaft as built: one full-ring section per depth, side by side
+      // (and over the ranks under mpirun).
+      study::StudyOptions sections;
+      sections.note = options.note;
+      if (first_rank()) std::cerr << "as built: sections from " << p.survey->file << " into " << p.output.directory << "\n";
+      study::run_sections(p, options.project_text, sections);
+    } else if (!p.layers.empty()) {
       // One cross-section per layer, side by side as a study runs its variants.
       study::StudyOptions layered;
       layered.note = options.note;
@@ -121,7 +129,9 @@ int check_command(const std::string& file) {
   const auto p = load_or_report(file);
   if (!p) return 2;
   return exit_status("check", [&] {
-    const auto lines = p->layers.empty() ? run::check_project(*p) : study::check_layers(*p, text_of(file));
+    const auto lines = p->survey            ? study::check_sections(*p, text_of(file))
+                       : p->layers.empty() ? run::check_project(*p)
+                                           : study::check_layers(*p, text_of(file));
     std::cout << file << ": can run (output into " << p->output.directory << ")\n";
     for (const auto& line : lines) std::cout << "  " << line << "\n";
   });

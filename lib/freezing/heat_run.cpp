@@ -261,6 +261,7 @@ nlohmann::ordered_json HeatRun::summary(const thermal::TimeLoopResult& loop) con
     const nlohmann::json parts = results_->finish(out_);
     for (const char* key : {"wall", "design", "monitoring", "interface"})
       if (parts.contains(key)) summary[key] = parts[key];
+    summary["thinnest_angle_deg"] = parts.value("thinnest_angle_deg", nlohmann::json());
     if (brine_) summary["brine"] = brine_->finish(out_);
     const auto& w = built_.shaft->wedge;
     summary["wedge"] = {{"mirror_lines", w.mirror_count},

@@ -116,7 +116,10 @@ ShaftResults::Reading ShaftResults::read(double t, const std::vector<double>& li
             {},
             {},
             {},
-            {}};
+            {},
+            0.0};
+  const double weakest = post::weakest_angle(fan_gauge_->fan(), fan.extents) * 180.0 / std::numbers::pi;
+  r.weakest_angle_deg = weakest - 360.0 * std::floor(weakest / 360.0);
   if (project_.design.isotherm) {
     r.isotherm_thickness = fan.isotherm.min_thickness;
     r.isotherm_mean_temperature = fan.isotherm_mean_temperature;
@@ -203,6 +206,7 @@ json ShaftResults::wall_entries(std::optional<DesignMet>& met) const {
                     {"OA", stretch_json(r.OA)},
                     {"OB", stretch_json(r.OB)},
                     {"min_thickness", r.min_thickness},
+                    {"thinnest_angle_deg", r.weakest_angle_deg},
                     {"mean_temperature_OB", or_null(r.mean_temperature_OB)}});
   if (project_.design.isotherm)
     for (std::size_t k = 0; k < snapshots_.size(); ++k) {
@@ -344,6 +348,9 @@ json ShaftResults::finish(const std::filesystem::path& out) const {
   result["monitoring"] = monitoring;
   result["interface"] = interface_;
   result["ob_angle_deg"] = planes_.OB * 180.0 / std::numbers::pi;
+  // Where the wall is weakest at the last snapshot: the thinnest ray, or the
+  // open gap's middle before closure.
+  if (!snapshots_.empty()) result["thinnest_angle_deg"] = snapshots_.back().weakest_angle_deg;
 
   write_tables(out);
   return result;

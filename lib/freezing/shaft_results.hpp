@@ -60,6 +60,7 @@ class ShaftResults {
     // Under seepage: the thinnest ray within 60 degrees of against (upstream)
     // and along (downstream) the flow.
     std::optional<double> upstream_thickness, downstream_thickness;
+    double weakest_angle_deg = 0.0;  // the thinnest ray, or the middle of the open gap (post::weakest_angle)
   };
   Reading read(double t, const std::vector<double>& liquid_fraction, const std::vector<double>& temperature) const;
 

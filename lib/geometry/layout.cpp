@@ -115,20 +115,31 @@ struct Farthest {
 
 }  // namespace
 
-std::vector<Pipe2> pipe_positions(const Layout& layout) {
+std::vector<Pipe2> all_pipe_positions(const Layout& layout) {
   std::vector<Pipe2> pipes;
   if (layout.pattern == Pattern::pipes) {
     for (std::size_t k = 0; k < layout.pipes.size(); ++k)
       pipes.push_back({layout.pipes[k].x, layout.pipes[k].y, -1, static_cast<int>(k), fmt::format("pipe {}", k)});
-    return pipes;
+  } else {
+    const auto rings = regular_rings(layout);
+    for (std::size_t n = 0; n < rings.size(); ++n) {
+      const auto& ring = rings[n];
+      for (int k = 0; k < ring.count; ++k)
+        pipes.push_back({ring.radius * std::cos(ring.angle(k)), ring.radius * std::sin(ring.angle(k)),
+                         static_cast<int>(n), k, ring.label + std::to_string(k)});
+    }
   }
-  const auto rings = regular_rings(layout);
-  for (std::size_t n = 0; n < rings.size(); ++n) {
-    const auto& ring = rings[n];
-    for (int k = 0; k < ring.count; ++k)
-      pipes.push_back({ring.radius * std::cos(ring.angle(k)), ring.radius * std::sin(ring.angle(k)),
-                       static_cast<int>(n), k, ring.label + std::to_string(k)});
+  for (std::size_t k = 0; k < pipes.size(); ++k) {
+    pipes[k].number = static_cast<int>(k) + 1;
+    pipes[k].failed =
+        std::find(layout.failed_pipes.begin(), layout.failed_pipes.end(), pipes[k].number) != layout.failed_pipes.end();
   }
+  return pipes;
+}
+
+std::vector<Pipe2> pipe_positions(const Layout& layout) {
+  auto pipes = all_pipe_positions(layout);
+  std::erase_if(pipes, [](const Pipe2& p) { return p.failed; });
   return pipes;
 }
 

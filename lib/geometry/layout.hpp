@@ -18,12 +18,17 @@ struct Pipe2 {
   int ring = 0;
   int index = 0;      // within its ring (pipe 0 at the ring's start angle), or into layout.pipes
   std::string label;  // "outer 3", "inner 5", "ring 1 pipe 4", "pipe 2" (indices from 0, as in the JSON)
+  int number = 0;     // from 1, in this order over the whole layout: what a survey and failed_pipes use
+  bool failed = false;
 };
 
 // Every pipe centre of the layout, ring by ring (outer before inner), each
 // ring counter-clockwise from its first pipe. Rings with a count below 1 or
 // a missing inner radius (already reported by the loader) give no pipes.
+// Failed pipes are left out: they are ground like the rest.
 std::vector<Pipe2> pipe_positions(const project::Layout& layout);
+// The same with the failed pipes, marked (drawings, the survey's numbering).
+std::vector<Pipe2> all_pipe_positions(const project::Layout& layout);
 
 // The disc model needs this much soil, in pipe diameters, between a pipe's
 // wall and the far-field circle, so the fixed far field does not sit in the

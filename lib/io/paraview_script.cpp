@@ -89,7 +89,8 @@ for name, kind, visible in SERIES:
     if not os.path.exists(path):
         continue
     opened += 1
-    reader = PVDReader(registrationName=name, FileName=path)
+    # A time series (.pvd), or the shaft in 3-D (shaft.vtm: sections at their depths, pipe traces).
+    reader = PVDReader(registrationName=name, FileName=path) if name.endswith('.pvd') else OpenDataFile(path)
     displays = {'temperature': temperature, 'grains': grains, 'fluid': fluid}[kind](reader, visible)
     if not visible:
         for display in displays:
@@ -102,6 +103,11 @@ GetAnimationScene().AnimationTime = GetTimeKeeper().TimestepValues[-1] if GetTim
 if any(kind in ('grains', 'fluid') for _, kind, _ in SERIES):
     # Grains settle along -z: look at the box from the side.
     view.CameraPosition = [0.0, -1.0, 0.0]
+    view.CameraFocalPoint = [0.0, 0.0, 0.0]
+    view.CameraViewUp = [0.0, 0.0, 1.0]
+elif any(name.endswith('.vtm') for name, _, _ in SERIES):
+    # The shaft in 3-D: look down at it from the side and above.
+    view.CameraPosition = [1.0, -1.6, 0.8]
     view.CameraFocalPoint = [0.0, 0.0, 0.0]
     view.CameraViewUp = [0.0, 0.0, 1.0]
 else:

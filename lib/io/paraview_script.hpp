@@ -16,7 +16,7 @@ namespace frostwall::io {
 
 struct ParaviewSeries {
   enum class Kind { temperature, grains, fluid };
-  std::string pvd;  // relative to the script, e.g. "ring.pvd"
+  std::string pvd;  // relative to the script, e.g. "ring.pvd"; or a multiblock "shaft.vtm" (a 3-D view)
   Kind kind = Kind::temperature;
   bool visible = true;  // shown when the script opens; the rest are in the pipeline, hidden
 };

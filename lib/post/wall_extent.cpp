@@ -240,4 +240,26 @@ WallReading WallGauge::measure(const std::vector<double>& liquid_fraction,
   return reading;
 }
 
+double weakest_angle(const RayFan& fan, const WallExtents& e) {
+  const int n = static_cast<int>(e.rays.size());
+  if (n == 0) return fan.start_angle;
+  if (e.min_thickness > 0.0) return fan.ray_angle(e.thinnest_ray);
+  const bool circle = fan.angle >= 2.0 * std::numbers::pi - 1e-12;
+  // Longest run of unfrozen rays; on a full circle it may wrap past ray 0.
+  int best_start = -1, best_length = 0;
+  const int span = circle ? 2 * n : n;
+  for (int start = 0, k = 0; k < span; ++k) {
+    const bool open = !e.rays[k % n].frozen();
+    if (!open) {
+      start = k + 1;
+      continue;
+    }
+    const int length = std::min(k - start + 1, n);
+    if (length > best_length) best_length = length, best_start = start;
+  }
+  if (best_start < 0) return fan.ray_angle(e.thinnest_ray);
+  const double middle = best_start + 0.5 * (best_length - 1);
+  return fan.start_angle + (circle ? middle * fan.angle / n : middle * fan.angle / std::max(1, n - 1));
+}
+
 }  // namespace frostwall::post

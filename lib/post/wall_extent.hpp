@@ -94,6 +94,11 @@ struct WallExtents {
 WallExtents wall_extents(const RayFan& fan, const std::vector<double>& values_on_fan,
                          const std::vector<double>& ring_radii, double level = 0.5);
 
+// Where the wall is weakest, rad: the thinnest ray's angle once every ray
+// is frozen at the ring; before that, the middle of the widest run of
+// unfrozen rays (the open gap), runs wrapping round a full circle.
+double weakest_angle(const RayFan& fan, const WallExtents& extents);
+
 // One snapshot's wall entry of the summary.
 struct WallReading {
   WallExtents extents;

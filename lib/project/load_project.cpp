@@ -19,6 +19,7 @@
 #include "project/load_reports.hpp"
 #include "project/load_basics.hpp"
 #include "project/load_shaft.hpp"
+#include "project/load_survey.hpp"
 #include "project/project.hpp"
 
 namespace frostwall::project {
@@ -284,14 +285,30 @@ void read_design_and_layers(const Node& root, Project& project) {
   }
 }
 
-Project read_project(const Node& root) {
+// The shaft as built: failed pipes in any shaft project; a survey and its
+// section depths (with compare_intact) on top.
+void read_as_built(const Node& root, ShaftSection& section, Project& project, const std::string& base_directory) {
+  section.layout.failed_pipes = detail::read_failed_pipes(root["failed_pipes"], section.layout);
+  if (const Node c = root["compare_intact"]; c.present()) {
+    project.compare_intact = c.boolean().value_or(false);
+    if (section.layout.failed_pipes.empty() && project.compare_intact)
+      c.problem(R"(needs "failed_pipes" (the scenario to compare with the intact layout))");
+  }
+  project.survey = detail::read_survey(root["survey"], section.layout, base_directory);
+  project.sections = detail::read_sections(root["sections"]);
+  if (root["sections"].present() && !root["survey"].present())
+    root["sections"].problem(R"(only used with "survey" (the pipes' positions at depth))");
+}
+
+Project read_project(const Node& root, const std::string& base_directory) {
   Project project;
   if (root["physics"].choice<bool>("physics", {{"thermal", false}, {"cfd-dem", true}}).value_or(false)) {
     detail::read_cfd_dem(root, project);
     return project;
   }
   root.object({"name", "description", "physics", "layout", "shaft", "geometry", "pipe", "soil", "domain", "time",
-               "numerics", "design", "monitoring", "output", "mechanics", "pore_fluid", "groundwater", "layers"});
+               "numerics", "design", "monitoring", "output", "mechanics", "pore_fluid", "groundwater", "layers", "survey", "sections", "failed_pipes",
+               "compare_intact"});
   project.name = root["name"].required().string().value_or("");
   project.description = root["description"].string(true).value_or("");
 
@@ -312,6 +329,10 @@ Project read_project(const Node& root) {
     if (const Node n = root["shaft"]; n.object({"excavation_radius"}))
       section.shaft.excavation_radius = n["excavation_radius"].positive();
     section.pipe = read_pipe(root["pipe"].required());
+    read_as_built(root, section, project, base_directory);
+  } else {
+    for (const char* key : {"survey", "sections", "failed_pipes", "compare_intact"})
+      if (root[key].present()) root[key].problem(R"(only used with "layout" (shaft sections))");
   }
 
   project.soil = read_soil(root["soil"].required(), project.warnings);
@@ -372,6 +393,10 @@ ProjectError::ProjectError(std::vector<std::string> problems)
 Project parse_project(const std::string& json_text) { return parse_project(json_text, "project"); }
 
 Project parse_project(const std::string& json_text, const std::string& source) {
+  return parse_project(json_text, source, "");
+}
+
+Project parse_project(const std::string& json_text, const std::string& source, const std::string& base_directory) {
   std::vector<std::string> problems;
   const auto parsed = detail::parse_document(json_text, source, problems);
   if (!parsed) throw ProjectError(std::move(problems));
@@ -380,7 +405,7 @@ Project parse_project(const std::string& json_text, const std::string& source) {
 
   Project project;
   try {
-    project = read_project(Node(&document, "", problems));
+    project = read_project(Node(&document, "", problems), base_directory);
   } catch (const Json::exception& e) {
     // The readers check types before converting; this is only a safety net so
     // that bad content can never escape as anything but a ProjectError.
@@ -399,7 +424,7 @@ Project load_project(const std::string& path) {
   std::ostringstream text;
   text << in.rdbuf();
   if (in.bad()) throw ProjectError({path + ": cannot read: " + std::strerror(errno)});
-  return parse_project(text.str(), path);
+  return parse_project(text.str(), path, fs::path(path).parent_path().string());
 }
 
 }  // namespace frostwall::project

@@ -11,6 +11,7 @@
 #include <variant>
 #include <vector>
 
+#include "project/as_built.hpp"
 #include "project/cfd_dem.hpp"
 #include "project/design.hpp"
 #include "project/groundwater.hpp"
@@ -121,7 +122,14 @@ struct Layout {
   std::optional<double> inner_ring_radius;
   std::vector<Ring> rings;          // pattern "rings"
   std::vector<PipePosition> pipes;  // pattern "pipes" (measured)
+  // Pipes that are off (numbers from 1, in pipe_positions' order): ground
+  // like the rest, no boundary.
+  std::vector<int> failed_pipes;
 };
+
+// How many pipes the layout has (failed ones included): the numbers a
+// survey and failed_pipes may use are 1..pipe_count.
+int pipe_count(const Layout& layout);
 
 enum class PipeModel { disc, point };
 
@@ -217,6 +225,12 @@ struct Project {
   PoreFluid pore_fluid;                    // what fills Rectangle::pores (default water/ice)
   // Shafts through several layers: one run per layer (empty: one run).
   std::vector<Layer> layers;
+  // The shaft as built: a survey of the pipes and the depths to check
+  // (one full-ring section run each).
+  std::optional<Survey> survey;
+  Sections sections;
+  // With failed pipes: also run the intact layout and show both.
+  bool compare_intact = false;
   // "physics": "cfd-dem": grains and pore water; then only name,
   // description, time and output above are read.
   std::optional<CfdDem> cfd_dem;
@@ -253,6 +267,9 @@ Project parse_project(const std::string& json_text);
 // As above; `source` (a file name) names the text in a problem with the text
 // as a whole, such as "not valid JSON". The one-argument form uses "project".
 Project parse_project(const std::string& json_text, const std::string& source);
+// As above, with files the project names (survey.file) read relative to
+// base_directory (empty: the working directory).
+Project parse_project(const std::string& json_text, const std::string& source, const std::string& base_directory);
 
 // Built-in soils: "sand", "clay", "silty_clay". nullopt for other names.
 std::optional<Soil> builtin_soil(const std::string& name);

@@ -48,7 +48,15 @@ std::string layout_svg(const LayoutDrawing& dw, int size) {
   }
   // OA and OB, labelled at their ends.
   const double ray = extent * 1.02;
+  if (dw.thinnest_ray) {
+    const double a = *dw.thinnest_ray;
+    o += fmt::format(R"(<line x1="{}" y1="{}" x2="{}" y2="{}" stroke="#D55E00" stroke-width="1.1"/>)"
+                     R"(<text x="{}" y="{}" text-anchor="middle" fill="#D55E00">thinnest</text>)",
+                     num(X(0)), num(Y(0)), num(X(0.97 * ray * std::cos(a))), num(Y(0.97 * ray * std::sin(a))),
+                     num(X(ray * std::cos(a))), num(Y(ray * std::sin(a)) + 4));
+  }
   for (const auto& [angle, name] : {std::pair{dw.OA, "A"}, std::pair{dw.OB, "B"}}) {
+    if (dw.thinnest_ray) break;
     o += fmt::format(R"(<line x1="{}" y1="{}" x2="{}" y2="{}" stroke="#D55E00" stroke-width="1.1"/>)", num(X(0)),
                      num(Y(0)), num(X(0.97 * ray * std::cos(angle))), num(Y(0.97 * ray * std::sin(angle))));
     // Labels go beside the ray's end, pushed apart when OA and OB are close.
@@ -57,13 +65,33 @@ std::string layout_svg(const LayoutDrawing& dw, int size) {
     o += fmt::format(R"(<text x="{}" y="{}" text-anchor="middle" fill="#D55E00" font-weight="bold">{}</text>)",
                      num(X(ray * std::cos(angle)) + nx), num(Y(ray * std::sin(angle)) - ny + 4), name);
   }
-  o += fmt::format(R"(<text x="{}" y="{}" fill="#D55E00" font-weight="bold">O</text>)", num(c + 4), num(c + 14));
-  // Pipes to scale, at least visible.
-  o += R"(<g fill="#0b3c73">)";
+  if (!dw.thinnest_ray)
+    o += fmt::format(R"(<text x="{}" y="{}" fill="#D55E00" font-weight="bold">O</text>)", num(c + 4), num(c + 14));
+  // Pipes to scale, at least visible; the design positions faintly beneath.
+  const double pr = std::max(0.5 * dw.section->pipe.diameter * scale, 1.8);
+  o += R"(<g fill="none" stroke="#888" stroke-width="0.8" stroke-dasharray="1.5 1.5">)";
+  for (const auto& p : dw.design_pipes)
+    o += fmt::format(R"(<circle cx="{}" cy="{}" r="{}"/>)", num(X(p.x)), num(Y(p.y)), num(pr + 1));
+  o += R"(</g><g fill="#0b3c73">)";
   for (const auto& p : dw.pipes)
-    o += fmt::format(R"(<circle cx="{}" cy="{}" r="{}"><title>{}</title></circle>)", num(X(p.x)), num(Y(p.y)),
-                     num(std::max(0.5 * dw.section->pipe.diameter * scale, 1.8)), escape(p.label));
+    if (!p.failed)
+      o += fmt::format(R"(<circle cx="{}" cy="{}" r="{}"><title>{} (pipe {})</title></circle>)", num(X(p.x)),
+                       num(Y(p.y)), num(pr), escape(p.label), p.number);
   o += "</g>";
+  for (const auto& p : dw.pipes)
+    if (p.failed)
+      o += fmt::format(R"(<g stroke="#c0392b" stroke-width="1.4" fill="none"><circle cx="{0}" cy="{1}" r="{2}"/>)"
+                       R"(<path d="M{3} {4} l{5} {5} M{3} {6} l{5} -{5}"/><title>pipe {7}: failed</title></g>)",
+                       num(X(p.x)), num(Y(p.y)), num(pr + 1.5), num(X(p.x) - pr - 2), num(Y(p.y) - pr - 2),
+                       num(2 * pr + 4), num(Y(p.y) + pr + 2), p.number);
+  if (dw.numbers && dw.pipes.size() <= 80)
+    for (const auto& p : dw.pipes) {
+      const double r = std::hypot(p.x, p.y), a = std::atan2(p.y, p.x);
+      const double off = (pr + 8) / scale;  // outward, beside the pipe
+      const double lx = r > 0 ? (r + off) * std::cos(a) : p.x + off, ly = r > 0 ? (r + off) * std::sin(a) : p.y;
+      o += fmt::format(R"(<text x="{}" y="{}" text-anchor="middle" font-size="9" fill="{}">{}</text>)", num(X(lx)),
+                       num(Y(ly) + 3), p.failed ? "#c0392b" : "#555", p.number);
+    }
   for (const auto& s : dw.sensors)
     o += fmt::format(
         R"(<path d="M{} {} l-4 6 h8 z" fill="#009E73"/><text x="{}" y="{}" fill="#006b4e" font-size="11">{}</text>)",

@@ -214,6 +214,9 @@ json report_view(const fs::path& dir) {
   std::string layer_prefix;
   for (const auto& l : run.summary.value("layers", json::array()))
     if (l["layer"].value("governing", false)) layer_prefix = l["layer"].value("directory", "") + "/";
+  // An as-built shaft: the critical section's.
+  for (const auto& s : run.summary.value("sections", json::array()))
+    if (s.value("critical", false)) layer_prefix = s.value("directory", "") + "/";
   if (!layer_prefix.empty()) run.dir = dir / layer_prefix;
   std::vector<std::string> warnings;
   for (const auto& w : run.summary.value("warnings", json::array())) warnings.push_back(w.get<std::string>());
@@ -246,6 +249,7 @@ json report_view(const fs::path& dir) {
   detail::add_project(run, view);
   detail::add_maps(run, view);
   detail::add_groundwater(run, view);
+  detail::add_as_built(run, view);
   detail::add_charts(run, view);
   detail::add_mechanics(run, view);
   detail::add_frost(run, view);

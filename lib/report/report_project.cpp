@@ -1,6 +1,7 @@
 // The project section: what was asked for, as the engineer wrote it.
 #include <cmath>
 #include <fmt/core.h>
+#include <fmt/ranges.h>
 #include <numbers>
 
 #include "geometry/layout.hpp"
@@ -66,9 +67,11 @@ void add_layout(const RunRecord& run, const project::ShaftSection& section, json
           row(fmt::format("ring {}", k), fmt::format("{} pipes on r = {} m, first at {}°", L.rings[k].count,
                                                      number(L.rings[k].radius, 2), number(L.rings[k].offset_deg, 1))));
   }
-  rows.push_back(row("pipes", fmt::format("{} in all, outer diameter {} mm ({} model)", pipes.size(),
+  rows.push_back(row("pipes", fmt::format("{} in all, outer diameter {} mm ({} model)", geometry::all_pipe_positions(L).size(),
                                           number(section.pipe.diameter * 1000, 1),
                                           section.pipe.model == project::PipeModel::point ? "point" : "disc")));
+  if (!L.failed_pipes.empty())
+    rows.push_back(row("failed pipes", fmt::format("{} (off; ground like the rest)", fmt::join(L.failed_pipes, ", "))));
   if (section.shaft.excavation_radius)
     rows.push_back(row("excavation radius", number(*section.shaft.excavation_radius, 2) + " m"));
   const WedgeSymmetry w = wedge_of(run.summary);
@@ -81,7 +84,7 @@ void add_layout(const RunRecord& run, const project::ShaftSection& section, json
 
   LayoutDrawing drawing;
   drawing.section = &section;
-  drawing.pipes = pipes;
+  drawing.pipes = geometry::all_pipe_positions(section.layout);
   drawing.wedge = symmetric ? w : WedgeSymmetry{};
   if (!pipes.empty()) {
     const auto planes = geometry::interface_planes(pipes);

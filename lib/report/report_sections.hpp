@@ -77,7 +77,8 @@ void add_charts(const RunRecord& run, nlohmann::json& view);       // thickness,
 void add_mechanics(const RunRecord& run, nlohmann::json& view);    // PD: displacement and damage maps
 void add_frost(const RunRecord& run, nlohmann::json& view);        // porous plate: maps, pore freezing, damage
 void add_run_facts(const RunRecord& run, nlohmann::json& view);    // run table and file links
-void add_groundwater(const RunRecord& run, nlohmann::json& view);  // seepage: verdict, gaps, sides, gap flow
+void add_groundwater(const RunRecord& run, nlohmann::json& view);
+void add_as_built(const RunRecord& run, nlohmann::json& view);     // sections at depth: charts, plan, table  // seepage: verdict, gaps, sides, gap flow
 void add_cfd_dem(const RunRecord& run, nlohmann::json& view);      // CFD-DEM: bed, fluidisation, curves, run, files
 void add_erosion(const RunRecord& run, nlohmann::json& view);
 void add_design(const RunRecord& run,

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <numbers>
 #include <fmt/format.h>
 
 #include "cfd_dem/run.hpp"
@@ -10,6 +11,7 @@
 #include "freezing/capacity.hpp"
 #include "freezing/heat_run.hpp"
 #include "freezing/model.hpp"
+#include "geometry/layout.hpp"
 #include "io/output_directory.hpp"
 #include "run/run_project.hpp"
 #include "thermal/phase_change.hpp"
@@ -86,6 +88,12 @@ std::vector<std::string> check_heat(const project::Project& p, Engine engine) {
   if (engine == Engine::mechanics && p.mechanics) what += " with PD mechanics";
   if (rect && !rect->pores.empty()) what += " and frost in pores";
   lines.push_back("engine: " + what + (rect ? " on a rectangle" : " on a shaft section"));
+  if (const auto* section = std::get_if<project::ShaftSection>(&p.geometry)) {
+    // The numbers a survey and failed_pipes use.
+    for (const auto& q : geometry::all_pipe_positions(section->layout))
+      lines.push_back(fmt::format("pipe {}: {} at ({:.3f}, {:.3f}) m, {:.2f} deg{}", q.number, q.label, q.x, q.y,
+                                  std::atan2(q.y, q.x) * 180.0 / std::numbers::pi, q.failed ? ", failed (off)" : ""));
+  }
   lines.push_back(fmt::format("particles: {} free, {} on boundaries", P.n_free, P.size() - P.n_free));
   lines.push_back(fmt::format("memory: at most about {:.0f} MB",
                               static_cast<double>(P.n_free) * freezing::bytes_per_particle / 1e6));

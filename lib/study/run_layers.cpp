@@ -73,6 +73,7 @@ StudyRun run_layers(const project::Project& p, const std::string& project_text, 
   for (std::size_t k = 0; k < docs.size(); ++k)
     study.variants.push_back({layer_folder(p.layers[k].name), p.layers[k].name, docs[k]});
   StudyRun run = run_study(study, options);
+  if (!run.writer) return run;
   std::vector<json> summaries;
   for (std::size_t k = 0; k < run.variants.size(); ++k) {
     const auto& v = run.variants[k];

@@ -2,6 +2,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <cstdlib>
 #include <fmt/core.h>
 #include <mutex>
 #include <omp.h>
@@ -11,6 +12,7 @@
 #include "report/report.hpp"
 #include "report/run_files.hpp"
 #include "run/run_project.hpp"
+#include "study/ranks.hpp"
 
 namespace frostwall::study {
 
@@ -53,34 +55,66 @@ VariantOutcome run_variant(const Variant& v, bool estimate_errors,
   return out;
 }
 
+nlohmann::json outcome_json(const VariantOutcome& v) {
+  return {{"name", v.name},     {"changes", v.changes}, {"directory", v.directory.string()}, {"ok", v.ok},
+          {"errors", v.errors}, {"summary", v.summary}, {"seconds", v.seconds}};
+}
+
+VariantOutcome outcome_of(const nlohmann::json& j) {
+  VariantOutcome v;
+  v.name = j["name"];
+  v.changes = j["changes"];
+  v.directory = j["directory"].get<std::string>();
+  v.ok = j["ok"];
+  v.errors = j["errors"].get<std::vector<std::string>>();
+  v.summary = j["summary"];
+  v.seconds = j["seconds"];
+  return v;
+}
+
 }  // namespace
 
 StudyRun run_study(const Study& study, const StudyOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   StudyRun result;
-  const int cores = std::max(1, omp_get_num_procs());
-  const int n = static_cast<int>(study.variants.size());
+  // CFD-DEM variants run one after another, on every rank together: each
+  // embeds LAMMPS on the process's MPI communicator, which two threads may
+  // not share; they also share one settled packing (the first variant
+  // settles it).
+  bool grains = false;
+  for (const auto& v : study.variants) grains |= v.project.value("physics", std::string()) == "cfd-dem";
+  const Ranks ranks = grains ? Ranks{} : world_ranks();
+  result.ranks = ranks.size;
+  const char* env_rank = std::getenv("OMPI_COMM_WORLD_RANK");
+  result.writer = grains ? (env_rank == nullptr || std::string(env_rank) == "0") : ranks.first();
+  std::vector<std::size_t> mine;
+  for (std::size_t k = static_cast<std::size_t>(ranks.rank); k < study.variants.size();
+       k += static_cast<std::size_t>(ranks.size))
+    mine.push_back(k);
+  // This rank's share of the machine: all of it, or its part when ranks
+  // share the node and are not bound to cores of their own.
+  int cores = std::max(1, omp_get_num_procs());
+  const int machine = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  if (ranks.size > 1 && cores >= machine) cores = std::max(1, cores / ranks.on_this_node);
+  const int n = static_cast<int>(mine.size());
   result.jobs = std::clamp(options.jobs > 0 ? options.jobs : cores, 1, std::max(1, n));
-  // CFD-DEM variants run one after another: each embeds LAMMPS on the
-  // process's MPI communicator, which two threads may not share; they also
-  // share one settled packing (the first variant settles it).
-  for (const auto& v : study.variants)
-    if (v.project.value("physics", std::string()) == "cfd-dem") result.jobs = 1;
-  result.threads = options.threads > 0 ? options.threads : (result.jobs == 1 ? omp_get_max_threads() : 1);
+  if (grains) result.jobs = 1;
+  result.threads = options.threads > 0 ? options.threads
+                                       : (result.jobs == 1 ? (ranks.size > 1 ? cores : omp_get_max_threads()) : 1);
   result.variants.resize(study.variants.size());
 
   std::mutex note_lock;
   auto note = [&](const std::string& line) {
     if (!options.note) return;
     std::lock_guard lock(note_lock);
-    options.note(line);
+    options.note(ranks.size > 1 ? fmt::format("rank {}: {}", ranks.rank, line) : line);
   };
   std::atomic<std::size_t> next{0};
   auto worker = [&] {
     // Per-thread OpenMP setting: each worker's runs use this many threads.
     omp_set_num_threads(result.threads);
-    for (std::size_t k; (k = next++) < study.variants.size();)
-      result.variants[k] = run_variant(study.variants[k], study.estimate_errors, note);
+    for (std::size_t i; (i = next++) < mine.size();)
+      result.variants[mine[i]] = run_variant(study.variants[mine[i]], study.estimate_errors, note);
   };
   if (result.jobs == 1) {
     worker();
@@ -88,6 +122,16 @@ StudyRun run_study(const Study& study, const StudyOptions& options) {
     std::vector<std::thread> pool;
     for (int j = 0; j < result.jobs; ++j) pool.emplace_back(worker);
     for (auto& t : pool) t.join();
+  }
+  if (ranks.size > 1) {
+    // Every rank's outcomes to every rank, back in the study's order.
+    std::vector<std::string> texts;
+    for (const auto k : mine) texts.push_back(outcome_json(result.variants[k]).dump());
+    const auto shared = share_texts(ranks, texts);
+    for (int r = 0; r < ranks.size; ++r)
+      for (std::size_t i = 0; i < shared[r].size(); ++i)
+        result.variants[static_cast<std::size_t>(r) + i * static_cast<std::size_t>(ranks.size)] =
+            outcome_of(nlohmann::json::parse(shared[r][i]));
   }
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;

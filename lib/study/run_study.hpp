@@ -2,7 +2,10 @@
 // folder and report. Variants run side by side, one OpenMP thread each
 // (the default, measured faster on this kind of machine: see README), or
 // one after another with every thread inside each run. A variant that
-// fails is recorded with its error; the others go on.
+// fails is recorded with its error; the others go on. Under mpirun the
+// variants are spread over the ranks (study/ranks.hpp), each rank's share
+// run as above on its part of the machine, and every rank ends with every
+// outcome; rank 0 writes what joins them.
 #pragma once
 
 #include <functional>
@@ -32,6 +35,8 @@ struct StudyOptions {
 struct StudyRun {
   std::vector<VariantOutcome> variants;  // in the study's order
   int jobs = 1, threads = 1;
+  int ranks = 1;        // MPI ranks the variants were spread over
+  bool writer = true;   // this process writes the files that join the variants
   double seconds = 0.0;
 };
 

@@ -230,6 +230,7 @@ namespace frostwall::study {
 StudyRun run_and_write_study(const Study& study, const StudyOptions& options) {
   std::filesystem::create_directories(study.output_directory);
   StudyRun run = run_study(study, options);
+  if (!run.writer) return run;
   const auto standings = rank_variants(run, study.thickness_day);
   write_study_csv(study.output_directory / "study.csv", standings, study.thickness_day);
   write_study_html(study.output_directory / "study.html", study, run, standings);

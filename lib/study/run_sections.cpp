@@ -1,0 +1,283 @@
+#include "study/run_sections.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fmt/core.h>
+#include <limits>
+#include <optional>
+
+#include "geometry/as_built.hpp"
+#include "io/atomic_file.hpp"
+#include "io/output_directory.hpp"
+#include "io/paraview_script.hpp"
+#include "io/shaft_vtm.hpp"
+#include "report/report.hpp"
+#include "run/check_project.hpp"
+
+namespace frostwall::study {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+// The survey desurveyed, checked, and the depths to run.
+struct AsBuilt {
+  std::vector<geometry::Pipe2> design;
+  std::vector<geometry::PipeTrace> traces;
+  std::vector<double> depths;
+};
+
+AsBuilt as_built(const project::Project& p) {
+  const auto& section = std::get<project::ShaftSection>(p.geometry);
+  AsBuilt a;
+  a.design = geometry::all_pipe_positions(section.layout);
+  a.traces = geometry::pipe_traces(*p.survey, a.design);
+  if (auto problems = geometry::as_built_problems(p, a.traces, a.design); !problems.empty())
+    throw project::ProjectError(std::move(problems));
+  a.depths = geometry::section_depths(p, a.traces, a.design);
+  return a;
+}
+
+std::string section_folder(double depth, bool intact) {
+  return fmt::format("depth_{:06.2f}m{}", depth, intact ? "_intact" : "");
+}
+
+std::string section_name(double depth) { return fmt::format("{:g} m", std::round(depth * 100) / 100); }
+
+// The layer whose depth range holds `depth` (-1 without layers).
+int layer_at(const project::Project& p, const AsBuilt& a, double depth) {
+  double deepest = 0.0;
+  for (const auto& t : a.traces) deepest = std::max(deepest, t.bottom);
+  for (const auto& r : geometry::layer_ranges(p, deepest))
+    if (depth >= r.top && depth <= r.bottom) return r.layer;
+  return p.layers.empty() ? -1 : 0;
+}
+
+// The section's project file: the base with the layer's patch, the pipes
+// at their as-built positions at the depth as a measured layout.
+json section_document(const project::Project& p, const json& base, const AsBuilt& a, double depth, bool intact) {
+  json doc = base;
+  for (const char* key : {"survey", "sections", "layers", "compare_intact", "failed_pipes"}) doc.erase(key);
+  if (const int layer = layer_at(p, a, depth); layer >= 0) doc.merge_patch(json::parse(p.layers[layer].patch));
+  if (doc.contains("design") && doc["design"].contains("pressure")) doc["design"]["depth"] = depth;
+  json pipes = json::array(), failed = json::array();
+  const auto here = geometry::pipes_at(a.traces, a.design, depth);
+  for (std::size_t k = 0; k < here.size(); ++k) {
+    pipes.push_back({{"x", here[k].x}, {"y", here[k].y}});
+    if (here[k].failed && !intact) failed.push_back(k + 1);
+  }
+  doc["layout"] = {{"pattern", "pipes"}, {"pipes", pipes}};
+  if (!failed.empty()) doc["failed_pipes"] = failed;
+  doc["name"] = fmt::format("{}: section at {}{}", p.name, section_name(depth), intact ? " (intact)" : "");
+  doc["output"]["directory"] = (fs::path(p.output.directory) / section_folder(depth, intact)).string();
+  return doc;
+}
+
+json or_null(const json& v) { return v.is_number() ? v : json(nullptr); }
+
+// How far the wall at the last snapshot is from the design, as a share of
+// each requirement, the smallest of: 1 - utilisation (strength check), the
+// thinnest wall over the required thickness minus 1, and the mean
+// temperature's distance below its limit over the limit's size. Below 0
+// the design is not met. Null without a target.
+json design_margin(const json& summary) {
+  const json wall = summary.value("wall", json::array());
+  if (wall.empty()) return nullptr;
+  const json& last = wall.back();
+  const json design = summary.value("design", json::object());
+  std::optional<double> margin;
+  auto take = [&](double m) { margin = margin ? std::min(*margin, m) : m; };
+  if (last.value("utilisation", json()).is_number()) take(1.0 - last["utilisation"].get<double>());
+  const json required = design.value("required_thickness", json());
+  if (required.is_number() && required.get<double>() > 0)
+    take(last.value("min_thickness", 0.0) / required.get<double>() - 1.0);
+  const json limit = design.value("max_mean_temperature", json());
+  if (limit.is_number()) {
+    const json mean = last.value("mean_temperature_OB", json());
+    const double scale = std::max(std::abs(limit.get<double>()), 1.0);
+    take(mean.is_number() ? (limit.get<double>() - mean.get<double>()) / scale : -1.0);
+  }
+  return margin ? json(*margin) : json(nullptr);
+}
+
+// A section's entry of the as-built summary.
+json section_entry(const SectionRun& s, const json& summary, const std::vector<geometry::Pipe2>& pipes,
+                   double diameter, const std::string& layer) {
+  const json wall = summary.value("wall", json::array());
+  const json last = wall.empty() ? json::object() : wall.back();
+  json gaps = json::array();
+  double widest = 0.0;
+  for (const auto& g : geometry::largest_gaps(pipes, diameter)) {
+    gaps.push_back({{"ring", g.ring}, {"gap", g.gap}, {"between", {g.from, g.to}}, {"middle", {g.x, g.y}}});
+    widest = std::max(widest, g.gap);
+  }
+  json listed = json::array();
+  for (const auto& q : pipes) listed.push_back({q.number, q.x, q.y, q.failed});
+  return {{"depth", s.depth},
+          {"directory", s.folder},
+          {"layer", layer.empty() ? json(nullptr) : json(layer)},
+          {"largest_gap", widest},
+          {"largest_gaps", gaps},
+          {"closure_time_days", or_null(summary.value("closure_time_days", json()))},
+          {"thinnest_wall", or_null(last.value("min_thickness", json()))},
+          {"thinnest_angle_deg", or_null(last.value("thinnest_angle_deg", json()))},
+          {"design_margin", design_margin(summary)},
+          {"day", or_null(last.value("day", json()))},
+          {"pipes", listed}};
+}
+
+// The last snapshot's particle file of a section's folder: the whole ring
+// when the run wrote one, else the simulated region.
+std::optional<fs::path> last_field_file(const fs::path& dir) {
+  for (const char* prefix : {"ring_", "field_"}) {
+    std::vector<fs::path> files;
+    if (fs::is_directory(dir))
+      for (const auto& e : fs::directory_iterator(dir)) {
+        const auto name = e.path().filename().string();
+        if (name.rfind(prefix, 0) == 0 && e.path().extension() == ".vtu") files.push_back(e.path());
+      }
+    if (!files.empty()) return *std::max_element(files.begin(), files.end());
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::vector<SectionRun> section_runs(const project::Project& p, const std::string& project_text) {
+  const AsBuilt a = as_built(p);
+  const json base = json::parse(project_text);
+  const bool twins = p.compare_intact && !std::get<project::ShaftSection>(p.geometry).layout.failed_pipes.empty();
+  std::vector<SectionRun> runs;
+  std::vector<std::string> problems;
+  for (const double depth : a.depths)
+    for (const bool intact : twins ? std::vector<bool>{false, true} : std::vector<bool>{false}) {
+      SectionRun s{depth, section_folder(depth, intact), intact, section_document(p, base, a, depth, intact)};
+      const std::string source = "section at " + section_name(depth);
+      try {
+        const auto loaded = project::parse_project(s.project.dump(), source);
+        for (const auto& line : geometry::layout_problems(std::get<project::ShaftSection>(loaded.geometry)))
+          problems.push_back(source + ": " + line);
+      } catch (const project::ProjectError& e) {
+        for (const auto& line : e.problems()) problems.push_back(source + ": " + line);
+      }
+      runs.push_back(std::move(s));
+    }
+  if (!problems.empty()) throw project::ProjectError(problems);
+  return runs;
+}
+
+std::size_t critical_section(const std::vector<json>& entries) {
+  const bool margins = !entries.empty() && std::all_of(entries.begin(), entries.end(), [](const json& e) {
+    return e.value("design_margin", json()).is_number();
+  });
+  std::size_t critical = 0;
+  double worst = -std::numeric_limits<double>::infinity();
+  for (std::size_t k = 0; k < entries.size(); ++k) {
+    double badness;
+    if (margins) {
+      badness = -entries[k]["design_margin"].get<double>();
+    } else {
+      const json day = entries[k].value("closure_time_days", json());
+      badness = day.is_number() ? day.get<double>() : std::numeric_limits<double>::infinity();
+    }
+    if (badness >= worst) critical = k, worst = badness;  // ties: the deeper section
+  }
+  return critical;
+}
+
+std::vector<std::string> check_sections(const project::Project& p, const std::string& project_text) {
+  io::check_output_directory(p.output.directory);
+  const auto runs = section_runs(p, project_text);
+  std::vector<std::string> lines{fmt::format("as built: {} full-ring sections from {}, one run each", runs.size(),
+                                             p.survey->file)};
+  for (const auto& q : geometry::all_pipe_positions(std::get<project::ShaftSection>(p.geometry).layout))
+    lines.push_back(fmt::format("pipe {}: {} at ({:.3f}, {:.3f}) m at the collar{}", q.number, q.label, q.x, q.y,
+                                q.failed ? ", failed (off)" : ""));
+  for (const auto& s : runs)
+    for (const auto& line : run::check_project(project::parse_project(s.project.dump(), s.folder)))
+      if (line.rfind("pipe ", 0) != 0) lines.push_back(s.folder + ": " + line);
+  return lines;
+}
+
+StudyRun run_sections(const project::Project& p, const std::string& project_text, const StudyOptions& options) {
+  io::check_output_directory(p.output.directory);
+  const fs::path out = p.output.directory;
+  const auto runs = section_runs(p, project_text);
+  const AsBuilt a = as_built(p);
+  Study study;
+  study.name = p.name;
+  study.output_directory = out;
+  study.estimate_errors = false;  // as the project says
+  fs::create_directories(out);
+  for (const auto& s : runs) study.variants.push_back({s.folder, s.folder, s.project});
+  StudyRun run = run_study(study, options);
+  for (std::size_t k = 0; k < run.variants.size(); ++k)
+    if (!run.variants[k].ok)
+      throw std::runtime_error(fmt::format("section {}: {}", runs[k].folder,
+                                           run.variants[k].errors.empty() ? "failed" : run.variants[k].errors.front()));
+  if (!run.writer) return run;
+
+  const double diameter = std::get<project::ShaftSection>(p.geometry).pipe.diameter;
+  std::vector<json> entries;
+  std::vector<std::size_t> of_entry;  // the variant of each entry
+  for (std::size_t k = 0; k < runs.size(); ++k) {
+    const auto pipes = geometry::pipes_at(a.traces, a.design, runs[k].depth);
+    const int layer = p.layers.empty() ? -1 : layer_at(p, a, runs[k].depth);
+    json entry = section_entry(runs[k], run.variants[k].summary, pipes, diameter,
+                               layer >= 0 ? p.layers[layer].name : std::string());
+    if (runs[k].intact) {
+      entry.erase("pipes");
+      entries.back()["intact"] = entry;
+      continue;
+    }
+    entries.push_back(entry);
+    of_entry.push_back(k);
+  }
+  const std::size_t c = critical_section(entries);
+  json summary = run.variants[of_entry[c]].summary;
+  summary["project"] = p.name;
+  for (std::size_t k = 0; k < entries.size(); ++k) entries[k]["critical"] = k == c;
+  summary["sections"] = entries;
+  summary["critical_depth"] = entries[c]["depth"];
+  json design = json::array();
+  for (const auto& q : a.design) design.push_back({q.number, q.x, q.y, q.failed});
+  summary["as_built"] = {{"survey", p.survey->file},
+                         {"form", p.survey->form == project::SurveyForm::positions ? "positions" : "stations"},
+                         {"design_pipes", design},
+                         {"failed_pipes", std::get<project::ShaftSection>(p.geometry).layout.failed_pipes},
+                         {"compare_intact", p.compare_intact}};
+
+  // The 3-D view: each section's last snapshot at its depth, the pipe traces.
+  std::vector<io::ShaftVtmSection> placed;
+  for (std::size_t k = 0; k < runs.size(); ++k)
+    if (!runs[k].intact)
+      if (const auto file = last_field_file(out / runs[k].folder))
+        placed.push_back({runs[k].depth, *file, "section at " + section_name(runs[k].depth)});
+  std::vector<io::ShaftVtmPipe> pipes;
+  for (std::size_t k = 0; k < a.design.size(); ++k) {
+    io::ShaftVtmPipe pipe{a.design[k].number, a.design[k].failed, {}};
+    for (const auto& t : a.traces[k].points)
+      if (t.z <= a.traces[k].bottom) pipe.points.push_back({t.x, t.y, t.z});
+    const auto end = a.traces[k].at(a.traces[k].bottom);
+    pipe.points.push_back({end[0], end[1], a.traces[k].bottom});
+    pipes.push_back(std::move(pipe));
+  }
+  io::write_shaft_vtm(out, placed, pipes);
+  io::ParaviewScene scene;
+  scene.title = p.name;
+  scene.series.push_back({"shaft.vtm", io::ParaviewSeries::Kind::temperature, true});
+  scene.freezing_point = p.soil.freezing_point;
+  const auto& pipe = std::get<project::ShaftSection>(p.geometry).pipe;
+  scene.coldest = std::min(pipe.temperature.points.empty() ? 0.0 : pipe.temperature.at(0.0), p.soil.freezing_point);
+  for (const auto& [t, T] : pipe.temperature.points) scene.coldest = std::min(scene.coldest, T);
+  scene.warmest = std::max(p.domain.initial_temperature, p.domain.far_field_temperature.value_or(-1e300));
+  scene.isotherm = p.design.isotherm;
+  io::write_paraview_script(out / "open_in_paraview.py", scene);
+  io::write_text_file(out / "project.json", project_text);
+  io::write_text_file(out / "summary.json", summary.dump(2) + "\n");
+  if (p.output.report) report::write_report(out);
+  return run;
+}
+
+}  // namespace frostwall::study
