@@ -102,7 +102,6 @@ int run_command(const std::string& file) {
       // (and over the ranks under mpirun).
       study::StudyOptions sections;
       sections.note = options.note;
-      if (first_rank()) std::cerr << "as built: sections from " << p.survey->file << " into " << p.output.directory << "\n";
       study::run_sections(p, options.project_text, sections);
     } else if (!p.layers.empty()) {
       // One cross-section per layer, side by side as a study runs its variants.
@@ -129,7 +128,7 @@ int check_command(const std::string& file) {
   const auto p = load_or_report(file);
   if (!p) return 2;
   return exit_status("check", [&] {
-    const auto lines = p->survey            ? study::check_sections(*p, text_of(file))
+    const auto lines = p->survey           ? study::check_sections(*p, text_of(file))
                        : p->layers.empty() ? run::check_project(*p)
                                            : study::check_layers(*p, text_of(file));
     std::cout << file << ": can run (output into " << p->output.directory << ")\n";

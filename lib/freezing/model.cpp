@@ -116,7 +116,7 @@ Model build_cloud(const project::Project& p) {
       throw project::ProjectError(problems);
     // Flowing groundwater keeps only a mirror line along the flow.
     std::string seepage_note;
-    geometry::Wedge wedge = symmetry_wedge(section);
+    geometry::Wedge wedge = p.numerics.unsymmetric_cloud ? geometry::Wedge{} : symmetry_wedge(section);
     if (p.groundwater && p.groundwater->speed() > 0.0) {
       const auto pipes = geometry::pipe_positions(section.layout);
       const auto& q = p.groundwater->darcy_flux;
@@ -130,7 +130,9 @@ Model build_cloud(const project::Project& p) {
                : geometry::build_shaft_section(section, p.domain, wedge, spacing, m.h));
     if (!seepage_note.empty()) scene->notes.push_back(seepage_note);
     scene->notes.push_back(geometry::describe(wedge));
-    if (!p.numerics.use_symmetry) {
+    if (p.numerics.unsymmetric_cloud)
+      scene->notes.push_back("symmetry: none (numerics.symmetry): the full ring placed as without symmetry");
+    else if (!p.numerics.use_symmetry) {
       geometry::unfold_to_full_ring(*scene);
       scene->notes.push_back("symmetry: off (numerics.symmetry): the wedge's particles mirrored around the full ring");
     }

@@ -30,8 +30,7 @@ std::vector<RingGap> largest_gaps(const std::vector<Pipe2>& pipes, double diamet
     if (ring < 0)
       std::sort(members.begin(), members.end(),
                 [](const Pipe2* a, const Pipe2* b) { return std::atan2(a->y, a->x) < std::atan2(b->y, b->x); });
-    else
-      std::sort(members.begin(), members.end(), [](const Pipe2* a, const Pipe2* b) { return a->index < b->index; });
+    else std::sort(members.begin(), members.end(), [](const Pipe2* a, const Pipe2* b) { return a->index < b->index; });
     RingGap widest{ring, -1e300, 0, 0, 0.0, 0.0};
     for (std::size_t i = 0; i < members.size(); ++i) {
       const Pipe2 &a = *members[i], &b = *members[(i + 1) % members.size()];
@@ -102,8 +101,7 @@ std::vector<double> section_depths(const project::Project& p, const std::vector<
       if (own <= deepest) depths.push_back(own);
       double widest = -1e300, at = range.bottom;
       for (const double z : search_depths(traces, range.top, std::min(range.bottom, deepest)))
-        if (const double g = largest_gap(pipes_at(traces, design, z), diameter); g > widest + 1e-9)
-          widest = g, at = z;
+        if (const double g = largest_gap(pipes_at(traces, design, z), diameter); g > widest + 1e-9) widest = g, at = z;
       if (at <= deepest) depths.push_back(at);
     }
   }
@@ -134,13 +132,16 @@ std::vector<std::string> as_built_problems(const project::Project& p, const std:
         const auto pa = traces[a].at(z), pb = traces[b].at(z);
         const double c = std::hypot(pa[0] - pb[0], pa[1] - pb[1]);
         if (c >= diameter) continue;
-        // The survey line nearest below the crossing on pipe a.
-        int line = 0;
-        for (const auto& t : traces[a].points)
-          if (t.line > 0 && (line == 0 || t.z <= z + 1e-9)) line = t.line;
-        problems.push_back(fmt::format("survey.file: {} line {}: pipes {} and {} cross at {:.2f} m depth (centres "
-                                       "{:.3f} m apart, pipe diameter {:.3f} m)",
-                                       p.survey->file, line, design[a].number, design[b].number, z, c, diameter));
+        // Each pipe's survey row at or next below the crossing.
+        auto row_below = [&](const PipeTrace& t) {
+          for (const auto& q : t.points)
+            if (q.line > 0 && q.z >= z - 1e-9) return q.line;
+          return t.points.back().line;
+        };
+        problems.push_back(fmt::format("survey.file: {} lines {} and {}: pipes {} and {} cross at {:.2f} m depth "
+                                       "(centres {:.3f} m apart, pipe diameter {:.3f} m)",
+                                       p.survey->file, row_below(traces[a]), row_below(traces[b]), design[a].number,
+                                       design[b].number, z, c, diameter));
         break;
       }
   return problems;

@@ -23,9 +23,9 @@ std::vector<Pipe2> pipes_at(const std::vector<PipeTrace>& traces, const std::vec
 // pipes, so a failed pipe's gap spans it.
 struct RingGap {
   int ring = 0;
-  double gap = 0.0;              // m
-  int from = 0, to = 0;          // pipe numbers either side
-  double x = 0.0, y = 0.0;       // its middle
+  double gap = 0.0;         // m
+  int from = 0, to = 0;     // pipe numbers either side
+  double x = 0.0, y = 0.0;  // its middle
 };
 std::vector<RingGap> largest_gaps(const std::vector<Pipe2>& pipes, double diameter);
 // The widest of them (0 when no ring has two working pipes).

@@ -131,8 +131,8 @@ std::vector<Pipe2> all_pipe_positions(const Layout& layout) {
   }
   for (std::size_t k = 0; k < pipes.size(); ++k) {
     pipes[k].number = static_cast<int>(k) + 1;
-    pipes[k].failed =
-        std::find(layout.failed_pipes.begin(), layout.failed_pipes.end(), pipes[k].number) != layout.failed_pipes.end();
+    pipes[k].failed = std::find(layout.failed_pipes.begin(), layout.failed_pipes.end(), pipes[k].number) !=
+                      layout.failed_pipes.end();
   }
   return pipes;
 }

@@ -73,7 +73,8 @@ void write_pipes(const fs::path& file, const std::vector<ShaftVtmPipe>& pipes) {
 
 std::string xml_escape(const std::string& s) {
   std::string out;
-  for (char c : s) out += c == '&' ? "&amp;" : c == '<' ? "&lt;" : c == '>' ? "&gt;" : c == '"' ? "&quot;" : std::string(1, c);
+  for (char c : s)
+    out += c == '&' ? "&amp;" : c == '<' ? "&lt;" : c == '>' ? "&gt;" : c == '"' ? "&quot;" : std::string(1, c);
   return out;
 }
 
@@ -86,8 +87,8 @@ void write_shaft_vtm(const fs::path& directory, const std::vector<ShaftVtmSectio
   for (std::size_t k = 0; k < sections.size(); ++k) {
     const std::string name = fmt::format("shaft/section_{:06.2f}m.vtu", sections[k].depth);
     write_section(directory / name, sections[k]);
-    blocks += fmt::format("      <DataSet index=\"{}\" name=\"{}\" file=\"{}\"/>\n", k, xml_escape(sections[k].name),
-                          name);
+    blocks +=
+        fmt::format("      <DataSet index=\"{}\" name=\"{}\" file=\"{}\"/>\n", k, xml_escape(sections[k].name), name);
   }
   blocks += "    </Block>\n    <Block index=\"1\" name=\"pipes\">\n";
   write_pipes(directory / "shaft/pipes.vtp", pipes);

@@ -15,9 +15,9 @@
 namespace frostwall::io {
 
 struct ShaftVtmSection {
-  double depth = 0.0;               // m, down
-  std::filesystem::path source;     // a section's .vtu
-  std::string name;                 // the block's name
+  double depth = 0.0;            // m, down
+  std::filesystem::path source;  // a section's .vtu
+  std::string name;              // the block's name
 };
 
 struct ShaftVtmPipe {

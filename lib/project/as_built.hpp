@@ -18,15 +18,15 @@ enum class SurveyForm {
 
 // One row of the survey file.
 struct SurveyRow {
-  int line = 0;         // in the file (the header is line 1)
-  double depth = 0.0;   // m
-  double a = 0.0;       // x (m) or inclination (deg, from the vertical)
-  double b = 0.0;       // y (m) or azimuth (deg, clockwise from +y)
+  int line = 0;        // in the file (the header is line 1)
+  double depth = 0.0;  // m
+  double a = 0.0;      // x (m) or inclination (deg, from the vertical)
+  double b = 0.0;      // y (m) or azimuth (deg, clockwise from +y)
 };
 
 struct Survey {
-  std::string file;       // as written in the project (for messages)
-  std::string path;       // resolved against the project file's folder
+  std::string file;  // as written in the project (for messages)
+  std::string path;  // resolved against the project file's folder
   SurveyForm form = SurveyForm::positions;
   std::vector<std::vector<SurveyRow>> pipes;  // [pipe number - 1], rows by increasing depth
   // Vertical depth of every pipe's bottom; nullopt: each pipe ends at the

@@ -174,8 +174,9 @@ Numerics read_numerics(const Node& n, bool shaft) {
     else numerics.horizon = *h;
   }
   if (numerics.method != Method::pd && n["horizon"].present()) n["horizon"].problem(R"(only used with "method": "pd")");
-  numerics.use_symmetry =
-      n["symmetry"].choice<bool>("symmetry", {{"auto", true}, {"off", false}}).value_or(numerics.use_symmetry);
+  const int symmetry = n["symmetry"].choice<int>("symmetry", {{"auto", 0}, {"off", 1}, {"none", 2}}).value_or(0);
+  numerics.use_symmetry = symmetry == 0;
+  numerics.unsymmetric_cloud = symmetry == 2;
   numerics.placement =
       n["placement"]
           .choice<Placement>("placement", {{"lattice", Placement::lattice}, {"graded", Placement::graded}})
@@ -306,9 +307,10 @@ Project read_project(const Node& root, const std::string& base_directory) {
     detail::read_cfd_dem(root, project);
     return project;
   }
-  root.object({"name", "description", "physics", "layout", "shaft", "geometry", "pipe", "soil", "domain", "time",
-               "numerics", "design", "monitoring", "output", "mechanics", "pore_fluid", "groundwater", "layers", "survey", "sections", "failed_pipes",
-               "compare_intact"});
+  root.object({"name",       "description", "physics",      "layout",        "shaft",       "geometry",
+               "pipe",       "soil",        "domain",       "time",          "numerics",    "design",
+               "monitoring", "output",      "mechanics",    "pore_fluid",    "groundwater", "layers",
+               "survey",     "sections",    "failed_pipes", "compare_intact"});
   project.name = root["name"].required().string().value_or("");
   project.description = root["description"].string(true).value_or("");
 

@@ -64,7 +64,8 @@ void read_rows(std::istream& in, int pipes, Survey& survey, std::vector<std::str
   int number = 0;
   const std::vector<std::string> positions{"pipe", "depth", "x", "y"};
   const std::vector<std::string> stations{"pipe", "depth", "inclination_deg", "azimuth_deg"};
-  while (std::getline(in, line) && ++number && line.find_first_not_of(" \t\r") == std::string::npos) {}
+  while (std::getline(in, line) && ++number && line.find_first_not_of(" \t\r") == std::string::npos) {
+  }
   const auto header = split_cells(line);
   if (header == positions) survey.form = SurveyForm::positions;
   else if (header == stations) survey.form = SurveyForm::stations;
@@ -105,8 +106,8 @@ void read_rows(std::istream& in, int pipes, Survey& survey, std::vector<std::str
           fmt::format("line {}: inclination {} is outside 0 to 90 degrees (from the vertical)", number, cells[2]));
     auto& rows = survey.pipes[static_cast<std::size_t>(p) - 1];
     if (!rows.empty() && row.depth <= rows.back().depth)
-      problems.push_back(fmt::format("line {}: pipe {}'s depth {} does not increase (line {} has {})", number,
-                                     cells[0], cells[1], rows.back().line, rows.back().depth));
+      problems.push_back(fmt::format("line {}: pipe {}'s depth {} does not increase (line {} has {})", number, cells[0],
+                                     cells[1], rows.back().line, rows.back().depth));
     rows.push_back(row);
   }
   std::vector<int> missing;
@@ -170,12 +171,9 @@ std::vector<int> read_failed_pipes(const Node& n, const Layout& layout) {
   for (std::size_t k = 0; k < *size; ++k) {
     const auto v = n[k].count();
     if (!v) continue;
-    if (*v > count)
-      n[k].problem(fmt::format("pipe {} does not exist (the layout has pipes 1 to {})", *v, count));
-    else if (!seen.insert(*v).second)
-      n[k].problem(fmt::format("pipe {} is listed twice", *v));
-    else
-      failed.push_back(*v);
+    if (*v > count) n[k].problem(fmt::format("pipe {} does not exist (the layout has pipes 1 to {})", *v, count));
+    else if (!seen.insert(*v).second) n[k].problem(fmt::format("pipe {} is listed twice", *v));
+    else failed.push_back(*v);
   }
   if (count > 0 && static_cast<int>(failed.size()) >= count) n.problem("at least one pipe must work");
   return failed;

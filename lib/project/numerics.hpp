@@ -45,8 +45,11 @@ struct Numerics {
   // on it (the Madenci & Oterkus book code's choice).
   double horizon = 3.015;
   // Shaft sections: simulate the smallest mirror-symmetric wedge ("auto"),
-  // or the whole ring ("off"; a check of the wedge, or for asymmetric ground).
+  // or the whole ring ("off": the wedge's particles mirrored round it; a
+  // check of the wedge's planes), or the whole ring placed as a layout with
+  // no symmetry is ("none": the cloud an as-built section gets).
   bool use_symmetry = true;
+  bool unsymmetric_cloud = false;            // "none"
   Placement placement = Placement::lattice;  // default graded for shaft sections (load_project)
   Grading grading;
   // Refuse a project estimated to need more free particles than this

@@ -20,8 +20,8 @@ struct LayoutDrawing {
   std::vector<geometry::Pipe2> pipes;         // failed ones drawn open and crossed
   std::vector<geometry::Pipe2> design_pipes;  // drawn faintly beneath (an as-built plan)
   bool numbers = true;                        // each pipe's number (survey, failed_pipes) beside it
-  WedgeSymmetry wedge;        // mirror_lines 0: the full circle was simulated
-  double OA = 0.0, OB = 0.0;  // rad
+  WedgeSymmetry wedge;                        // mirror_lines 0: the full circle was simulated
+  double OA = 0.0, OB = 0.0;                  // rad
   // Instead of OA and OB, one ray where the wall is thinnest (rad).
   std::optional<double> thinnest_ray;
   std::vector<project::Sensor> sensors;

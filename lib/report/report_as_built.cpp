@@ -17,7 +17,9 @@ using nlohmann::json;
 
 namespace {
 
-double value_or_nan(const json& v) { return v.is_number() ? v.get<double>() : std::numeric_limits<double>::quiet_NaN(); }
+double value_or_nan(const json& v) {
+  return v.is_number() ? v.get<double>() : std::numeric_limits<double>::quiet_NaN();
+}
 
 std::vector<geometry::Pipe2> pipes_of(const json& list) {
   std::vector<geometry::Pipe2> pipes;
@@ -69,9 +71,8 @@ void add_as_built(const RunRecord& run, json& view) {
       "{} sections of the full ring, each with the pipes where the survey ({}, {}) puts them at that depth{}. The "
       "critical depth, {} m, is {}.",
       sections.size(), info.value("survey", ""), info.value("form", ""),
-      info.value("failed_pipes", json::array()).empty()
-          ? std::string()
-          : fmt::format(" and pipes {} off", info["failed_pipes"].dump()),
+      info.value("failed_pipes", json::array()).empty() ? std::string()
+                                                        : fmt::format(" and pipes {} off", info["failed_pipes"].dump()),
       number(critical, 1),
       std::all_of(sections.begin(), sections.end(),
                   [](const json& e) { return e.value("design_margin", json()).is_number(); })
@@ -80,12 +81,10 @@ void add_as_built(const RunRecord& run, json& view) {
   json charts = json::array();
   charts.push_back({{"svg", depth_chart(sections, "largest_gap", "largest gap", "m", critical)},
                     {"caption", "The widest opening between neighbouring working pipes of a ring, wall to wall."}});
-  charts.push_back(
-      {{"svg", depth_chart(sections, "closure_time_days", "closure", "d", critical, "closure_time_days")},
-       {"caption", "The day the wall closes; no point where it does not close within the run."}});
-  charts.push_back(
-      {{"svg", depth_chart(sections, "thinnest_wall", "thinnest wall", "m", critical, "thinnest_wall")},
-       {"caption", "The thinnest frozen wall on any ray of the full ring, at the last snapshot."}});
+  charts.push_back({{"svg", depth_chart(sections, "closure_time_days", "closure", "d", critical, "closure_time_days")},
+                    {"caption", "The day the wall closes; no point where it does not close within the run."}});
+  charts.push_back({{"svg", depth_chart(sections, "thinnest_wall", "thinnest wall", "m", critical, "thinnest_wall")},
+                    {"caption", "The thinnest frozen wall on any ray of the full ring, at the last snapshot."}});
   charts.push_back(
       {{"svg", depth_chart(sections, "design_margin", "design margin", "share", critical, "design_margin")},
        {"caption", "The smallest of 1 − utilisation, the thinnest wall over the required thickness minus 1, and the "
@@ -99,7 +98,8 @@ void add_as_built(const RunRecord& run, json& view) {
   for (const auto& e : sections) {
     std::string between;
     for (const auto& g : e.value("largest_gaps", json::array()))
-      between += (between.empty() ? "" : ", ") + fmt::format("{}–{}", g["between"][0].get<int>(), g["between"][1].get<int>());
+      between += (between.empty() ? "" : ", ") +
+                 fmt::format("{}–{}", g["between"][0].get<int>(), g["between"][1].get<int>());
     const json intact = e.value("intact", json());
     rows.push_back({{"depth", number(e["depth"], 1)},
                     {"critical", e.value("critical", false) ? "critical" : ""},
@@ -123,8 +123,8 @@ void add_as_built(const RunRecord& run, json& view) {
     view["as_built_plan_svg"] = layout_svg(drawing, 520);
   }
   view["as_built_rows"] = rows;
-  view["as_built_has_intact"] = std::any_of(sections.begin(), sections.end(),
-                                            [](const json& e) { return e.contains("intact"); });
+  view["as_built_has_intact"] =
+      std::any_of(sections.begin(), sections.end(), [](const json& e) { return e.contains("intact"); });
 }
 
 }  // namespace frostwall::report::detail

@@ -67,9 +67,10 @@ void add_layout(const RunRecord& run, const project::ShaftSection& section, json
           row(fmt::format("ring {}", k), fmt::format("{} pipes on r = {} m, first at {}°", L.rings[k].count,
                                                      number(L.rings[k].radius, 2), number(L.rings[k].offset_deg, 1))));
   }
-  rows.push_back(row("pipes", fmt::format("{} in all, outer diameter {} mm ({} model)", geometry::all_pipe_positions(L).size(),
-                                          number(section.pipe.diameter * 1000, 1),
-                                          section.pipe.model == project::PipeModel::point ? "point" : "disc")));
+  rows.push_back(
+      row("pipes", fmt::format("{} in all, outer diameter {} mm ({} model)", geometry::all_pipe_positions(L).size(),
+                               number(section.pipe.diameter * 1000, 1),
+                               section.pipe.model == project::PipeModel::point ? "point" : "disc")));
   if (!L.failed_pipes.empty())
     rows.push_back(row("failed pipes", fmt::format("{} (off; ground like the rest)", fmt::join(L.failed_pipes, ", "))));
   if (section.shaft.excavation_radius)
@@ -181,7 +182,9 @@ void add_sph_numerics(const project::Project& p, json& rows) {
                                                            ? "harmonic mean"
                                                            : "arithmetic (k_i + k_j)"));
   if (std::holds_alternative<project::ShaftSection>(p.geometry))
-    rows.push_back(row("symmetry", n.use_symmetry ? "smallest mirror wedge" : "off: full ring"));
+    rows.push_back(row("symmetry", n.use_symmetry        ? "smallest mirror wedge"
+                                   : n.unsymmetric_cloud ? "none: the full ring, placed without symmetry"
+                                                         : "off: full ring"));
 }
 
 // What the peridynamics used: horizon, thermal bonds, bond law, solver.

@@ -70,16 +70,18 @@ std::optional<std::pair<double, double>> last_front(const nlohmann::json& summar
 // A card of the headline.
 nlohmann::json card(const std::string& label, const std::string& value, const std::string& note);
 
-void add_project(const RunRecord& run, nlohmann::json& view);      // layout, soil, schedule, numerics, design
-void add_headline(const RunRecord& run, nlohmann::json& view);     // closure, thickness, design check, table
-void add_maps(const RunRecord& run, nlohmann::json& view);         // temperature maps and colour bar
-void add_charts(const RunRecord& run, nlohmann::json& view);       // thickness, OB temperature, profiles, sensors
-void add_mechanics(const RunRecord& run, nlohmann::json& view);    // PD: displacement and damage maps
-void add_frost(const RunRecord& run, nlohmann::json& view);        // porous plate: maps, pore freezing, damage
-void add_run_facts(const RunRecord& run, nlohmann::json& view);    // run table and file links
+void add_project(const RunRecord& run, nlohmann::json& view);    // layout, soil, schedule, numerics, design
+void add_headline(const RunRecord& run, nlohmann::json& view);   // closure, thickness, design check, table
+void add_maps(const RunRecord& run, nlohmann::json& view);       // temperature maps and colour bar
+void add_charts(const RunRecord& run, nlohmann::json& view);     // thickness, OB temperature, profiles, sensors
+void add_mechanics(const RunRecord& run, nlohmann::json& view);  // PD: displacement and damage maps
+void add_frost(const RunRecord& run, nlohmann::json& view);      // porous plate: maps, pore freezing, damage
+void add_run_facts(const RunRecord& run, nlohmann::json& view);  // run table and file links
 void add_groundwater(const RunRecord& run, nlohmann::json& view);
-void add_as_built(const RunRecord& run, nlohmann::json& view);     // sections at depth: charts, plan, table  // seepage: verdict, gaps, sides, gap flow
-void add_cfd_dem(const RunRecord& run, nlohmann::json& view);      // CFD-DEM: bed, fluidisation, curves, run, files
+void add_as_built(
+    const RunRecord& run,
+    nlohmann::json& view);  // sections at depth: charts, plan, table  // seepage: verdict, gaps, sides, gap flow
+void add_cfd_dem(const RunRecord& run, nlohmann::json& view);  // CFD-DEM: bed, fluidisation, curves, run, files
 void add_erosion(const RunRecord& run, nlohmann::json& view);
 void add_design(const RunRecord& run,
                 nlohmann::json& view);  // wall check: verdict, formulas, required vs achieved, layers, brine

@@ -34,8 +34,7 @@ std::vector<std::string> all_gather(const std::string& text, int size) {
   long total = 0;
   for (int r = 0; r < size; ++r) offsets[r] = static_cast<int>(total), total += lengths[r];
   std::string all(static_cast<std::size_t>(total), '\0');
-  MPI_Allgatherv(text.data(), length, MPI_CHAR, all.data(), lengths.data(), offsets.data(), MPI_CHAR,
-                 MPI_COMM_WORLD);
+  MPI_Allgatherv(text.data(), length, MPI_CHAR, all.data(), lengths.data(), offsets.data(), MPI_CHAR, MPI_COMM_WORLD);
   std::vector<std::string> texts;
   for (int r = 0; r < size; ++r) texts.push_back(all.substr(offsets[r], lengths[r]));
   return texts;

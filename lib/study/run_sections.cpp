@@ -13,6 +13,7 @@
 #include "io/shaft_vtm.hpp"
 #include "report/report.hpp"
 #include "run/check_project.hpp"
+#include "study/ranks.hpp"
 
 namespace frostwall::study {
 
@@ -102,8 +103,8 @@ json design_margin(const json& summary) {
 }
 
 // A section's entry of the as-built summary.
-json section_entry(const SectionRun& s, const json& summary, const std::vector<geometry::Pipe2>& pipes,
-                   double diameter, const std::string& layer) {
+json section_entry(const SectionRun& s, const json& summary, const std::vector<geometry::Pipe2>& pipes, double diameter,
+                   const std::string& layer) {
   const json wall = summary.value("wall", json::array());
   const json last = wall.empty() ? json::object() : wall.back();
   json gaps = json::array();
@@ -189,8 +190,8 @@ std::size_t critical_section(const std::vector<json>& entries) {
 std::vector<std::string> check_sections(const project::Project& p, const std::string& project_text) {
   io::check_output_directory(p.output.directory);
   const auto runs = section_runs(p, project_text);
-  std::vector<std::string> lines{fmt::format("as built: {} full-ring sections from {}, one run each", runs.size(),
-                                             p.survey->file)};
+  std::vector<std::string> lines{
+      fmt::format("as built: {} full-ring sections from {}, one run each", runs.size(), p.survey->file)};
   for (const auto& q : geometry::all_pipe_positions(std::get<project::ShaftSection>(p.geometry).layout))
     lines.push_back(fmt::format("pipe {}: {} at ({:.3f}, {:.3f}) m at the collar{}", q.number, q.label, q.x, q.y,
                                 q.failed ? ", failed (off)" : ""));
@@ -205,6 +206,8 @@ StudyRun run_sections(const project::Project& p, const std::string& project_text
   const fs::path out = p.output.directory;
   const auto runs = section_runs(p, project_text);
   const AsBuilt a = as_built(p);
+  if (options.note && world_ranks().first())
+    options.note(fmt::format("as built: {} sections from {} into {}", runs.size(), p.survey->file, p.output.directory));
   Study study;
   study.name = p.name;
   study.output_directory = out;

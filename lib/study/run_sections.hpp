@@ -19,7 +19,7 @@ namespace frostwall::study {
 // One section to run: its depth, and its project file.
 struct SectionRun {
   double depth = 0.0;
-  std::string folder;  // "depth_012.50m", or with "_intact"
+  std::string folder;   // "depth_012.50m", or with "_intact"
   bool intact = false;  // the intact twin of a failed-pipe section
   nlohmann::json project;
 };

@@ -56,8 +56,9 @@ VariantOutcome run_variant(const Variant& v, bool estimate_errors,
 }
 
 nlohmann::json outcome_json(const VariantOutcome& v) {
-  return {{"name", v.name},     {"changes", v.changes}, {"directory", v.directory.string()}, {"ok", v.ok},
-          {"errors", v.errors}, {"summary", v.summary}, {"seconds", v.seconds}};
+  return {{"name", v.name},      {"changes", v.changes}, {"directory", v.directory.string()},
+          {"ok", v.ok},          {"errors", v.errors},   {"summary", v.summary},
+          {"seconds", v.seconds}};
 }
 
 VariantOutcome outcome_of(const nlohmann::json& j) {

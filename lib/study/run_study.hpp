@@ -35,8 +35,8 @@ struct StudyOptions {
 struct StudyRun {
   std::vector<VariantOutcome> variants;  // in the study's order
   int jobs = 1, threads = 1;
-  int ranks = 1;        // MPI ranks the variants were spread over
-  bool writer = true;   // this process writes the files that join the variants
+  int ranks = 1;       // MPI ranks the variants were spread over
+  bool writer = true;  // this process writes the files that join the variants
   double seconds = 0.0;
 };
 
