@@ -87,7 +87,7 @@ int exit_status(const char* verb, Work&& work) {
   return 0;
 }
 
-int run_command(const std::string& file) {
+int run_command(const std::string& file, int jobs, int threads) {
   using namespace frostwall;
   const auto loaded = load_or_report(file);
   if (!loaded) return 2;
@@ -102,11 +102,15 @@ int run_command(const std::string& file) {
       // (and over the ranks under mpirun).
       study::StudyOptions sections;
       sections.note = options.note;
+      sections.jobs = jobs;
+      sections.threads = threads;
       study::run_sections(p, options.project_text, sections);
     } else if (!p.layers.empty()) {
       // One cross-section per layer, side by side as a study runs its variants.
       study::StudyOptions layered;
       layered.note = options.note;
+      layered.jobs = jobs;
+      layered.threads = threads;
       std::cerr << "layers: " << p.layers.size() << " cross-sections into " << p.output.directory << "\n";
       study::run_layers(p, options.project_text, layered);
     } else {
@@ -182,6 +186,10 @@ int main(int argc, char** argv) {
   std::string project_file;
   int threads = 0;
   run->add_option("project", project_file, "project file (JSON)")->required();
+  int run_jobs = 0;
+  run->add_option("--jobs", run_jobs,
+                  "layers or as-built sections at once, each on --threads threads (default: one per core, 1 thread "
+                  "each)");
   auto* check = app.add_subcommand(
       "check", "check a project file without running it; print the particles, steps and an estimated run time");
   std::string check_file;
@@ -203,7 +211,7 @@ int main(int argc, char** argv) {
     return app.exit(e) == 0 ? 0 : 2;
   }
   if (threads > 0) omp_set_num_threads(threads);
-  if (run->parsed()) return run_command(project_file);
+  if (run->parsed()) return run_command(project_file, run_jobs, threads);
   if (check->parsed()) return check_command(check_file);
   if (report->parsed()) return report_command(report_dir);
   if (study->parsed()) return study_command(study_file, jobs, threads);
