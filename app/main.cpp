@@ -19,6 +19,7 @@
 #include "run/check_project.hpp"
 #include "run/run_project.hpp"
 #include "study/run_layers.hpp"
+#include "study/run_intact.hpp"
 #include "study/run_sections.hpp"
 #include "study/study_report.hpp"
 
@@ -105,6 +106,13 @@ int run_command(const std::string& file, int jobs, int threads) {
       sections.jobs = jobs;
       sections.threads = threads;
       study::run_sections(p, options.project_text, sections);
+    } else if (p.compare_intact) {
+      // The failed-pipe scenario beside the intact layout.
+      study::StudyOptions pair;
+      pair.note = options.note;
+      pair.jobs = jobs;
+      pair.threads = threads;
+      study::run_with_intact(p, options.project_text, pair);
     } else if (!p.layers.empty()) {
       // One cross-section per layer, side by side as a study runs its variants.
       study::StudyOptions layered;

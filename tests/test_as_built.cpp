@@ -177,8 +177,19 @@ TEST_CASE("As built check 4: a failed pipe puts the thinnest wall at its angle a
   write(intact.path, scaled_ring(0.03, 30), "");
   json p = scaled_ring(0.03, 30);
   p["failed_pipes"] = {3};
+  p["compare_intact"] = true;
   write(failed.path, p, "");
   const json ring = run_in(intact.path), off = run_in(failed.path);
+  // The intact twin beside the scenario is the intact ring's own run.
+  REQUIRE(off["intact"].is_object());
+  CHECK(off["intact"]["closure_time_days"].get<double>() ==
+        Approx(ring["closure_time_days"].get<double>()).epsilon(1e-12));
+  CHECK(off["intact"]["thinnest_wall"].get<double>() ==
+        Approx(ring["wall"].back()["min_thickness"].get<double>()).epsilon(1e-12));
+  const json view = frostwall::report::report_view(failed.path / "out");
+  CHECK(view["has_intact_pair"] == true);
+  CHECK(view["intact_rows"].size() == 2);
+  CHECK(fs::exists(failed.path / "out" / "failed" / "field.pvd"));
   const double pipe_3 = 360.0 * 2 / pipe_count;  // degrees
   for (const auto& w : off["wall"]) {
     INFO("day " << w["day"]);

@@ -297,6 +297,8 @@ void read_as_built(const Node& root, ShaftSection& section, Project& project, co
   }
   project.survey = detail::read_survey(root["survey"], section.layout, base_directory);
   project.sections = detail::read_sections(root["sections"]);
+  if (project.compare_intact && !project.survey && root["layers"].present())
+    root["compare_intact"].problem(R"(with "layers", needs "survey" (each section then runs intact beside it))");
   if (root["sections"].present() && !root["survey"].present())
     root["sections"].problem(R"(only used with "survey" (the pipes' positions at depth))");
 }

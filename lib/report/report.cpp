@@ -214,6 +214,9 @@ json report_view(const fs::path& dir) {
   std::string layer_prefix;
   for (const auto& l : run.summary.value("layers", json::array()))
     if (l["layer"].value("governing", false)) layer_prefix = l["layer"].value("directory", "") + "/";
+  // A failed-pipe scenario beside the intact layout: the scenario's.
+  if (run.summary.value("scenario_directory", json()).is_string())
+    layer_prefix = run.summary["scenario_directory"].get<std::string>() + "/";
   // An as-built shaft: the critical section's.
   for (const auto& s : run.summary.value("sections", json::array()))
     if (s.value("critical", false)) layer_prefix = s.value("directory", "") + "/";

@@ -4,6 +4,7 @@
 // design positions, and a table by depth.
 #include <cmath>
 #include <fmt/core.h>
+#include <fmt/ranges.h>
 #include <algorithm>
 #include <limits>
 #include <numbers>
@@ -59,8 +60,34 @@ std::string depth_chart(const json& sections, const char* key, const std::string
 
 }  // namespace
 
+// A failed-pipe scenario beside the intact layout: the two side by side.
+void add_intact_pair(const RunRecord& run, json& view) {
+  const json& s = run.summary;
+  view["has_intact_pair"] = false;
+  if (s.contains("sections") || !s.value("intact", json()).is_object()) return;
+  view["has_intact_pair"] = true;
+  const json wall = s.value("wall", json::array());
+  const json last = wall.empty() ? json::object() : wall.back();
+  const json& intact = s["intact"];
+  const auto failed = run.project ? std::get<project::ShaftSection>(run.project->geometry).layout.failed_pipes
+                                  : std::vector<int>{};
+  view["intact_rows"] = json::array({{{"what", fmt::format("pipes {} failed", fmt::join(failed, ", "))},
+                                      {"closure", number(s["closure_time_days"], 1)},
+                                      {"thinnest", number(last.value("min_thickness", json()), 2)},
+                                      {"angle", number(last.value("thinnest_angle_deg", json()), 1)},
+                                      {"margin", number(s.value("design_margin", json()), 2)},
+                                      {"report", "failed/report.html"}},
+                                     {{"what", "every pipe working"},
+                                      {"closure", number(intact["closure_time_days"], 1)},
+                                      {"thinnest", number(intact["thinnest_wall"], 2)},
+                                      {"angle", number(intact["thinnest_angle_deg"], 1)},
+                                      {"margin", number(intact["design_margin"], 2)},
+                                      {"report", "intact/report.html"}}});
+}
+
 void add_as_built(const RunRecord& run, json& view) {
   view["has_as_built"] = false;
+  add_intact_pair(run, view);
   const json& s = run.summary;
   if (!s.contains("sections") || !run.project) return;
   const json& sections = s["sections"];

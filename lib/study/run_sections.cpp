@@ -77,6 +77,8 @@ json section_document(const project::Project& p, const json& base, const AsBuilt
 
 json or_null(const json& v) { return v.is_number() ? v : json(nullptr); }
 
+}  // namespace
+
 // How far the wall at the last snapshot is from the design, as a share of
 // each requirement, the smallest of: 1 - utilisation (strength check), the
 // thinnest wall over the required thickness minus 1, and the mean
@@ -101,6 +103,8 @@ json design_margin(const json& summary) {
   }
   return margin ? json(*margin) : json(nullptr);
 }
+
+namespace {
 
 // A section's entry of the as-built summary.
 json section_entry(const SectionRun& s, const json& summary, const std::vector<geometry::Pipe2>& pipes, double diameter,

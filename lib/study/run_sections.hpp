@@ -29,6 +29,13 @@ struct SectionRun {
 // be built from, or a section that does not load, before anything runs.
 std::vector<SectionRun> section_runs(const project::Project& p, const std::string& project_text);
 
+// How far a run's wall at its last snapshot is from the design, as a share
+// of each requirement, the smallest of: 1 - utilisation (strength check),
+// the thinnest wall over the required thickness minus 1, and the mean
+// temperature's distance below its limit over the limit's size (at least
+// 1 K). Below 0 the design is not met; null without a target.
+nlohmann::json design_margin(const nlohmann::json& summary);
+
 // The index of the critical section among section summaries: the smallest
 // design margin when every section has one, else the latest closure
 // (never closed counts as latest).
