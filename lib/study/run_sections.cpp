@@ -202,6 +202,9 @@ std::vector<std::string> check_sections(const project::Project& p, const std::st
   for (const auto& s : runs)
     for (const auto& line : run::check_project(project::parse_project(s.project.dump(), s.folder)))
       if (line.rfind("pipe ", 0) != 0) lines.push_back(s.folder + ": " + line);
+  lines.push_back(fmt::format("sections: {} runs side by side on the cores (and over the ranks under mpirun): on one "
+                              "2-core machine about the sum of their run times",
+                              runs.size()));
   return lines;
 }
 
