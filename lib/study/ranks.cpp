@@ -5,6 +5,8 @@
 #include <mpi.h>
 #include <string>
 
+#include "dem/lammps_session.hpp"
+
 namespace frostwall::study {
 
 namespace {
@@ -12,18 +14,6 @@ namespace {
 int env_int(const char* name, int fallback) {
   const char* v = std::getenv(name);
   return v ? std::atoi(v) : fallback;
-}
-
-void ensure_mpi() {
-  int initialised = 0;
-  MPI_Initialized(&initialised);
-  if (initialised) return;
-  MPI_Init(nullptr, nullptr);
-  std::atexit([] {
-    int finalised = 0;
-    MPI_Finalized(&finalised);
-    if (!finalised) MPI_Finalize();
-  });
 }
 
 // One text from every rank, in rank order.
@@ -45,7 +35,7 @@ std::vector<std::string> all_gather(const std::string& text, int size) {
 Ranks world_ranks() {
   Ranks r;
   if (env_int("OMPI_COMM_WORLD_SIZE", 1) <= 1) return r;
-  ensure_mpi();
+  dem::ensure_mpi();  // finalised at exit
   MPI_Comm_rank(MPI_COMM_WORLD, &r.rank);
   MPI_Comm_size(MPI_COMM_WORLD, &r.size);
   r.on_this_node = std::max(1, env_int("OMPI_COMM_WORLD_LOCAL_SIZE", 1));
