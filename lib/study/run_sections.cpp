@@ -147,10 +147,8 @@ std::optional<fs::path> last_field_file(const fs::path& dir) {
   return std::nullopt;
 }
 
-}  // namespace
-
-std::vector<SectionRun> section_runs(const project::Project& p, const std::string& project_text) {
-  const AsBuilt a = as_built(p);
+// Every section's project file, checked, from the desurveyed shaft.
+std::vector<SectionRun> section_runs(const project::Project& p, const std::string& project_text, const AsBuilt& a) {
   const json base = json::parse(project_text);
   const bool twins = p.compare_intact && !std::get<project::ShaftSection>(p.geometry).layout.failed_pipes.empty();
   std::vector<SectionRun> runs;
@@ -170,6 +168,12 @@ std::vector<SectionRun> section_runs(const project::Project& p, const std::strin
     }
   if (!problems.empty()) throw project::ProjectError(problems);
   return runs;
+}
+
+}  // namespace
+
+std::vector<SectionRun> section_runs(const project::Project& p, const std::string& project_text) {
+  return section_runs(p, project_text, as_built(p));
 }
 
 std::size_t critical_section(const std::vector<json>& entries) {
@@ -214,8 +218,8 @@ std::vector<std::string> check_sections(const project::Project& p, const std::st
 StudyRun run_sections(const project::Project& p, const std::string& project_text, const StudyOptions& options) {
   io::check_output_directory(p.output.directory);
   const fs::path out = p.output.directory;
-  const auto runs = section_runs(p, project_text);
   const AsBuilt a = as_built(p);
+  const auto runs = section_runs(p, project_text, a);
   if (options.note && world_ranks().first())
     options.note(fmt::format("as built: {} sections from {} into {}", runs.size(), p.survey->file, p.output.directory));
   Study study;
