@@ -39,17 +39,11 @@ StudyRun run_with_intact(const project::Project& p, const std::string& project_t
   if (!run.writer) return run;
 
   json summary = run.variants[0].summary;
-  const json& other = run.variants[1].summary;
-  const json wall = other.value("wall", json::array());
-  const json last = wall.empty() ? json::object() : wall.back();
   summary["project"] = p.name;
   summary["scenario_directory"] = "failed";
   summary["design_margin"] = design_margin(summary);
-  summary["intact"] = {{"closure_time_days", other.value("closure_time_days", json())},
-                       {"thinnest_wall", last.value("min_thickness", json())},
-                       {"thinnest_angle_deg", last.value("thinnest_angle_deg", json())},
-                       {"design_margin", design_margin(other)},
-                       {"directory", "intact"}};
+  summary["intact"] = wall_digest(run.variants[1].summary);
+  summary["intact"]["directory"] = "intact";
   io::write_text_file(out / "project.json", project_text);
   io::write_text_file(out / "summary.json", summary.dump(2) + "\n");
   if (p.output.report) report::write_report(out);

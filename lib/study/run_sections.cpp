@@ -104,13 +104,21 @@ json design_margin(const json& summary) {
   return margin ? json(*margin) : json(nullptr);
 }
 
+json wall_digest(const json& summary) {
+  const json wall = summary.value("wall", json::array());
+  const json last = wall.empty() ? json::object() : wall.back();
+  return {{"closure_time_days", or_null(summary.value("closure_time_days", json()))},
+          {"thinnest_wall", or_null(last.value("min_thickness", json()))},
+          {"thinnest_angle_deg", or_null(last.value("thinnest_angle_deg", json()))},
+          {"design_margin", design_margin(summary)},
+          {"day", or_null(last.value("day", json()))}};
+}
+
 namespace {
 
 // A section's entry of the as-built summary.
 json section_entry(const SectionRun& s, const json& summary, const std::vector<geometry::Pipe2>& pipes, double diameter,
                    const std::string& layer) {
-  const json wall = summary.value("wall", json::array());
-  const json last = wall.empty() ? json::object() : wall.back();
   json gaps = json::array();
   double widest = 0.0;
   for (const auto& g : geometry::largest_gaps(pipes, diameter)) {
@@ -119,17 +127,14 @@ json section_entry(const SectionRun& s, const json& summary, const std::vector<g
   }
   json listed = json::array();
   for (const auto& q : pipes) listed.push_back({q.number, q.x, q.y, q.failed});
-  return {{"depth", s.depth},
-          {"directory", s.folder},
-          {"layer", layer.empty() ? json(nullptr) : json(layer)},
-          {"largest_gap", widest},
-          {"largest_gaps", gaps},
-          {"closure_time_days", or_null(summary.value("closure_time_days", json()))},
-          {"thinnest_wall", or_null(last.value("min_thickness", json()))},
-          {"thinnest_angle_deg", or_null(last.value("thinnest_angle_deg", json()))},
-          {"design_margin", design_margin(summary)},
-          {"day", or_null(last.value("day", json()))},
-          {"pipes", listed}};
+  json entry = wall_digest(summary);
+  entry.update({{"depth", s.depth},
+                {"directory", s.folder},
+                {"layer", layer.empty() ? json(nullptr) : json(layer)},
+                {"largest_gap", widest},
+                {"largest_gaps", gaps},
+                {"pipes", listed}});
+  return entry;
 }
 
 // The last snapshot's particle file of a section's folder: the whole ring

@@ -36,6 +36,11 @@ std::vector<SectionRun> section_runs(const project::Project& p, const std::strin
 // 1 K). Below 0 the design is not met; null without a target.
 nlohmann::json design_margin(const nlohmann::json& summary);
 
+// A run's headline at its last snapshot: closure_time_days, thinnest_wall,
+// thinnest_angle_deg, design_margin and the snapshot's day (null where
+// missing).
+nlohmann::json wall_digest(const nlohmann::json& summary);
+
 // The index of the critical section among section summaries: the smallest
 // design margin when every section has one, else the latest closure
 // (never closed counts as latest).
