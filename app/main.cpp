@@ -14,6 +14,7 @@
 #include <omp.h>
 #include <unistd.h>
 
+#include "calibrate/run_calibrate.hpp"
 #include "project/project.hpp"
 #include "report/report.hpp"
 #include "run/check_project.hpp"
@@ -157,6 +158,27 @@ int report_command(const std::string& dir) {
   return exit_status("report", [&] { std::cerr << "wrote " << frostwall::report::write_report(dir).string() << "\n"; });
 }
 
+// Fits the ground's parameters to the thermometers, runs the project as
+// calibrated and writes its report with the calibration section.
+int calibrate_command(const std::string& file, int jobs, int threads) {
+  using namespace frostwall;
+  const auto loaded = load_or_report(file);
+  if (!loaded) return 2;
+  const project::Project& p = *loaded;
+  calibrate::CalibrateOptions options;
+  options.project_text = text_of(file);
+  options.jobs = jobs;
+  options.threads = threads;
+  options.note = [](const std::string& s) { std::cerr << s << "\n"; };
+  options.progress = progress_printer(p.time);
+  const int status = exit_status("calibrate", [&] {
+    calibrate::run_calibration(p, options);
+    if (p.output.report) report::write_report(p.output.directory);
+  });
+  if (status == 0) std::cerr << "wrote " << p.output.directory << "\n";
+  return status;
+}
+
 // Runs every variant of a study file, then writes study.html and study.csv.
 int study_command(const std::string& file, int jobs, int threads) {
   using namespace frostwall;
@@ -211,6 +233,13 @@ int main(int argc, char** argv) {
   study->add_option("study", study_file, "study file (JSON)")->required();
   study->add_option("--jobs", jobs,
                     "variants at once, each on --threads threads (default: one per core, 1 thread each)");
+  auto* calibrate = app.add_subcommand(
+      "calibrate", "fit the ground's parameters to thermometer readings; forecast closure with a band");
+  std::string calibrate_file;
+  int calibrate_jobs = 0;
+  calibrate->add_option("project", calibrate_file, "project file (JSON) with \"calibrate\"")->required();
+  calibrate->add_option("--jobs", calibrate_jobs,
+                        "forward runs at once (default: one per core, the cores shared among them)");
   app.add_option("--threads", threads, "OpenMP threads (default: all cores; in a study: per variant)");
   app.set_version_flag("--version", FROSTWALL_VERSION);
   try {
@@ -223,5 +252,6 @@ int main(int argc, char** argv) {
   if (check->parsed()) return check_command(check_file);
   if (report->parsed()) return report_command(report_dir);
   if (study->parsed()) return study_command(study_file, jobs, threads);
+  if (calibrate->parsed()) return calibrate_command(calibrate_file, calibrate_jobs, threads);
   return 2;
 }

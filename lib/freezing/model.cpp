@@ -2,6 +2,7 @@
 
 #include "freezing/capacity.hpp"
 
+#include <stdexcept>
 #include <cmath>
 #include <limits>
 
@@ -148,8 +149,26 @@ Model build_cloud(const project::Project& p) {
   return m;
 }
 
-Model build_model(const project::Project& p) {
-  Model m = build_cloud(p);
+Model copy_cloud(const Model& cloud, const project::Project& p) {
+  Model m;
+  if (!cloud.shaft) throw std::logic_error("copy_cloud: only shaft sections");
+  auto scene = std::make_unique<geometry::ShaftScene>(*cloud.shaft);
+  if (scene->far_field_boundary >= 0 && p.domain.far_field_temperature)
+    scene->boundaries[scene->far_field_boundary].temperature =
+        project::TemperatureSchedule::fixed(*p.domain.far_field_temperature);
+  m.shaft = scene.get();
+  m.scene = std::move(scene);
+  m.spacing = cloud.spacing;
+  m.smoothing = cloud.smoothing;
+  m.h = cloud.h;
+  m.warnings = cloud.warnings;
+  return m;
+}
+
+Model build_model(const project::Project& p) { return build_model(p, build_cloud(p)); }
+
+Model build_model(const project::Project& p, Model cloud) {
+  Model m = std::move(cloud);
   const double spacing = m.spacing;
   m.kernel = sph::make_kernel<2>(p.numerics.kernel);
   thermal::PhaseChangeLaw law(p.soil);

@@ -63,5 +63,11 @@ Model build_model(const project::Project& p);
 // Only the particle cloud of build_model (scene, spacing, smoothing
 // lengths; no model or integrator), with the same checks.
 Model build_cloud(const project::Project& p);
+// build_model on a cloud already built for p's geometry (build_cloud or
+// copy_cloud).
+Model build_model(const project::Project& p, Model cloud);
+// A copy of a shaft section's cloud for a run of the same geometry with
+// other soil or temperatures: the far field at p's temperature.
+Model copy_cloud(const Model& cloud, const project::Project& p);
 
 }  // namespace frostwall::freezing

@@ -14,8 +14,9 @@
 #include "post/isoline.hpp"
 #include "freezing/design_check.hpp"
 #include "sph/laplacian.hpp"
-#include "particles/symmetry_group.hpp"
 #include "freezing/output_frames.hpp"
+#include "freezing/sensor_points.hpp"
+#include "particles/symmetry_group.hpp"
 #include "design/wall_strength.hpp"
 
 namespace frostwall::freezing {
@@ -71,18 +72,7 @@ ShaftResults::ShaftResults(const project::Project& p, const Model& m)
   profile_OB_ = std::make_unique<post::PointProbe>(sampler_, on_OB, true);
 
   // Sensors anywhere in the section: mapped into the wedge by its symmetry.
-  const auto group = particles::symmetry_group(m.particles().mirrors, R);
-  std::vector<particles::Vec<2>> where;
-  for (const auto& s : p.monitoring) {
-    particles::Vec<2> x(s.x, s.y), inside = x;
-    for (const auto& g : group)
-      if (geometry::inside_wedge(shaft.wedge, g(x))) {
-        inside = g(x);
-        break;
-      }
-    where.push_back(inside);
-  }
-  sensors_ = std::make_unique<post::PointProbe>(sampler_, where);
+  sensors_ = std::make_unique<post::PointProbe>(sampler_, sensor_points(p, m));
   sensor_readings_.resize(p.monitoring.size());
 
   // Front curves: wedge particles with their images; the full ring as copies.
@@ -93,7 +83,7 @@ ShaftResults::ShaftResults(const project::Project& p, const Model& m)
   curve_points_.insert(curve_points_.end(), images.position.begin(), images.position.end());
   curve_source_.insert(curve_source_.end(), images.source.begin(), images.source.end());
   if (p.output.full_ring && !P.mirrors.empty())
-    for (const auto& g : group)
+    for (const auto& g : particles::symmetry_group(P.mirrors, shaft.far_field_radius))
       for (std::uint32_t i = 0; i < P.size(); ++i)
         if (shown_in_files(P, i, std::nullopt)) {
           ring_points_.push_back(g(P.position[i]));

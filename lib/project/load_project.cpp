@@ -19,6 +19,7 @@
 #include "project/load_reports.hpp"
 #include "project/load_basics.hpp"
 #include "project/load_shaft.hpp"
+#include "project/load_calibrate.hpp"
 #include "project/load_survey.hpp"
 #include "project/project.hpp"
 
@@ -309,10 +310,10 @@ Project read_project(const Node& root, const std::string& base_directory) {
     detail::read_cfd_dem(root, project);
     return project;
   }
-  root.object({"name",       "description", "physics",      "layout",        "shaft",       "geometry",
-               "pipe",       "soil",        "domain",       "time",          "numerics",    "design",
-               "monitoring", "output",      "mechanics",    "pore_fluid",    "groundwater", "layers",
-               "survey",     "sections",    "failed_pipes", "compare_intact"});
+  root.object({"name",       "description", "physics",      "layout",         "shaft",       "geometry",
+               "pipe",       "soil",        "domain",       "time",           "numerics",    "design",
+               "monitoring", "output",      "mechanics",    "pore_fluid",     "groundwater", "layers",
+               "survey",     "sections",    "failed_pipes", "compare_intact", "calibrate"});
   project.name = root["name"].required().string().value_or("");
   project.description = root["description"].string(true).value_or("");
 
@@ -384,6 +385,11 @@ Project read_project(const Node& root, const std::string& base_directory) {
   project.monitoring = read_monitoring(root["monitoring"]);
   check_sensors_inside(project, root["monitoring"]);
   project.output = read_output(root["output"].required());
+  if (const Node c = root["calibrate"]; c.present()) {
+    if (!shaft || !project.layers.empty() || project.survey)
+      c.problem(R"(only used with one shaft section ("layout" without "layers" or "survey"))");
+    else project.calibration = detail::read_calibration(c, project, base_directory);
+  }
   if (!project.output.front_along.empty() && !std::holds_alternative<Rectangle>(project.geometry))
     root["output"]["front_along"].problem(R"(only used with "geometry" (plain geometries))");
   return project;

@@ -3,6 +3,8 @@
 // rows; desurveying and the geometric checks are lib/geometry's.
 #include "project/load_survey.hpp"
 
+#include "project/csv_cells.hpp"
+
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -35,28 +37,6 @@ int pipe_count(const Layout& layout) {
 namespace detail {
 
 namespace {
-
-std::vector<std::string> split_cells(const std::string& line) {
-  std::vector<std::string> cells;
-  std::string cell;
-  std::istringstream in(line);
-  while (std::getline(in, cell, ',')) {
-    const auto first = cell.find_first_not_of(" \t\r");
-    const auto last = cell.find_last_not_of(" \t\r");
-    cells.push_back(first == std::string::npos ? std::string() : cell.substr(first, last - first + 1));
-  }
-  if (!line.empty() && line.back() == ',') cells.emplace_back();
-  return cells;
-}
-
-std::optional<double> parse_number(const std::string& cell) {
-  if (cell.empty()) return std::nullopt;
-  char* end = nullptr;
-  errno = 0;
-  const double v = std::strtod(cell.c_str(), &end);
-  if (end != cell.c_str() + cell.size() || errno == ERANGE || !std::isfinite(v)) return std::nullopt;
-  return v;
-}
 
 // The rows of a survey file into `survey`; each problem as "line N: ...".
 void read_rows(std::istream& in, int pipes, Survey& survey, std::vector<std::string>& problems) {
@@ -128,10 +108,7 @@ std::optional<Survey> read_survey(const Node& n, const Layout& layout, const std
   if (n["pipe_depth"].present()) survey.pipe_depth = n["pipe_depth"].positive();
   if (!file) return std::nullopt;
   survey.file = *file;
-  const std::filesystem::path given(*file);
-  survey.path = (given.is_absolute() || base_directory.empty() ? given : std::filesystem::path(base_directory) / given)
-                    .lexically_normal()
-                    .string();
+  survey.path = resolve_path(*file, base_directory);
   std::ifstream in(survey.path, std::ios::binary);
   if (!in) {
     n["file"].problem(fmt::format("cannot read {}: {}", survey.path, std::strerror(errno)));

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "project/as_built.hpp"
+#include "project/calibrate.hpp"
 #include "project/cfd_dem.hpp"
 #include "project/design.hpp"
 #include "project/groundwater.hpp"
@@ -231,6 +232,9 @@ struct Project {
   Sections sections;
   // With failed pipes: also run the intact layout and show both.
   bool compare_intact = false;
+  // Thermometer readings and the parameters `frostwall calibrate` fits to
+  // them (`frostwall run` ignores it).
+  std::optional<Calibration> calibration;
   // "physics": "cfd-dem": grains and pore water; then only name,
   // description, time and output above are read.
   std::optional<CfdDem> cfd_dem;

@@ -1,0 +1,255 @@
+#include "calibrate/run_calibrate.hpp"
+
+#include <algorithm>
+#include <ceres/version.h>
+#include <chrono>
+#include <cmath>
+#include <fmt/format.h>
+#include <fstream>
+#include <omp.h>
+
+#include "calibrate/fit.hpp"
+#include "calibrate/forecast.hpp"
+#include "calibrate/forward.hpp"
+#include "calibrate/intervals.hpp"
+#include "calibrate/parameters.hpp"
+#include "freezing/heat_run.hpp"
+#include "geometry/layout.hpp"
+#include "io/atomic_file.hpp"
+#include "run/run_project.hpp"
+
+namespace frostwall::calibrate {
+
+namespace fs = std::filesystem;
+using project::Project;
+using project::ProjectError;
+
+namespace {
+
+constexpr double day = 86400.0;
+
+// Forward runs at once and threads each: the cores shared among the jobs.
+std::pair<int, int> share_cores(const CalibrateOptions& o, std::size_t runs) {
+  const int cores = std::max(1, omp_get_num_procs());
+  const int jobs = std::clamp(o.jobs > 0 ? o.jobs : cores, 1, std::max<int>(1, static_cast<int>(runs)));
+  const int threads = o.threads > 0 ? o.threads : std::max(1, cores / jobs);
+  return {jobs, threads};
+}
+
+std::vector<ForwardResult> run_batch(const std::vector<std::function<ForwardResult()>>& tasks,
+                                     const CalibrateOptions& o) {
+  const auto [jobs, threads] = share_cores(o, tasks.size());
+  return side_by_side(tasks, jobs, threads);
+}
+
+double rms(const std::vector<double>& r) {
+  double s = 0.0;
+  for (double v : r) s += v * v;
+  return r.empty() ? 0.0 : std::sqrt(s / static_cast<double>(r.size()));
+}
+
+std::string fit_csv(const Project& p, const std::vector<double>& start, const std::vector<double>& fitted) {
+  const auto& c = *p.calibration;
+  const double unit = p.time.unit_seconds();
+  std::string csv = "sensor,time,measured_C,start_C,fitted_C\n";
+  for (std::size_t k = 0; k < c.readings.size(); ++k) {
+    const auto& r = c.readings[k];
+    csv += fmt::format("{},{:.6g},{:.6g},{:.6g},{:.6g}\n", p.monitoring[r.sensor].name, r.time / unit, r.temperature,
+                       r.temperature + start[k], r.temperature + fitted[k]);
+  }
+  return csv;
+}
+
+nlohmann::ordered_json parameters_json(const Project& p, const FitResult& fit, const Intervals& iv) {
+  nlohmann::ordered_json out = nlohmann::ordered_json::object();
+  const auto& params = p.calibration->parameters;
+  for (std::size_t j = 0; j < params.size(); ++j)
+    out[project::parameter_name(params[j].which)] = {{"value", fit.values[j]},
+                                                     {"low", iv.low[j]},
+                                                     {"high", iv.high[j]},
+                                                     {"sigma", iv.sigma[j]},
+                                                     {"start", params[j].start},
+                                                     {"bounds", {params[j].low, params[j].high}},
+                                                     {"unit", parameter_unit(params[j].which)},
+                                                     {"identified", static_cast<bool>(iv.identified[j])}};
+  return out;
+}
+
+std::string parameters_csv(const Project& p, const FitResult& fit, const Intervals& iv) {
+  std::string csv = "parameter,unit,start,value,low,high,sigma,bound_low,bound_high,identified\n";
+  const auto& params = p.calibration->parameters;
+  for (std::size_t j = 0; j < params.size(); ++j)
+    csv += fmt::format("{},{},{:.6g},{:.6g},{:.6g},{:.6g},{:.4g},{:.6g},{:.6g},{}\n",
+                       project::parameter_name(params[j].which), parameter_unit(params[j].which), params[j].start,
+                       fit.values[j], iv.low[j], iv.high[j], iv.sigma[j], params[j].low, params[j].high,
+                       iv.identified[j] ? "yes" : "no");
+  return csv;
+}
+
+// The runs behind the forecast's band: parameter j moved by its standard
+// error (inwards at a bound), each to the run's end.
+std::vector<double> band_steps(const Project& p, const FitResult& fit, const Intervals& iv) {
+  std::vector<double> steps;
+  const auto& params = p.calibration->parameters;
+  for (std::size_t j = 0; j < params.size(); ++j) {
+    const double s = std::max(iv.sigma[j], 1e-3 * (params[j].high - params[j].low));
+    steps.push_back(fit.values[j] + s <= params[j].high ? s : -std::min(s, fit.values[j] - params[j].low));
+  }
+  return steps;
+}
+
+}  // namespace
+
+void check_calibration(const Project& p) {
+  if (!p.calibration)
+    throw ProjectError({R"(calibrate: required for `frostwall calibrate` ({"readings": "file.csv", "parameters": )"
+                        R"({"latent_heat": [0.5, 2.0], ...}}))"});
+  const auto& section = std::get<project::ShaftSection>(p.geometry);
+  std::vector<std::string> problems;
+  if (section.pipe.model == project::PipeModel::disc)
+    for (std::size_t s = 0; s < p.monitoring.size(); ++s)
+      for (const auto& pipe : geometry::pipe_positions(section.layout))
+        if (std::hypot(p.monitoring[s].x - pipe.x, p.monitoring[s].y - pipe.y) < 0.5 * section.pipe.diameter)
+          problems.push_back(fmt::format("monitoring[{}]: sensor '{}' at ({:g}, {:g}) m is inside pipe {} (a "
+                                         "thermometer in the ground reads the ground)",
+                                         s, p.monitoring[s].name, p.monitoring[s].x, p.monitoring[s].y, pipe.number));
+  if (!problems.empty()) throw ProjectError(problems);
+  freezing::check_run_inputs(p);
+}
+
+nlohmann::ordered_json run_calibration(const Project& p, const CalibrateOptions& options) {
+  check_calibration(p);
+  const auto started = std::chrono::steady_clock::now();
+  const auto& c = *p.calibration;
+  const fs::path out(p.output.directory), scratch = out / ".calibration-runs";
+  auto note = [&](const std::string& s) {
+    if (options.note) options.note(s);
+  };
+  double last = 0.0;
+  std::vector<double> measured;
+  for (const auto& r : c.readings) last = std::max(last, r.time), measured.push_back(r.temperature);
+  std::size_t run_number = 0;
+  // One cloud for every run: the parameters change the ground, not its geometry.
+  const freezing::Model cloud = freezing::build_cloud(p);
+  auto fit_project = [&](const std::vector<double>& values) {
+    Project q = with_values(p, c.parameters, values);
+    q.numerics.step_change = c.step_change;
+    return q;
+  };
+  auto forward = [&](const std::vector<double>& values) {
+    const fs::path dir = scratch / fmt::format("run{}", run_number++);
+    return [&, values, dir] { return run_forward(fit_project(values), c.readings, last, dir, &cloud); };
+  };
+
+  FitProblem problem;
+  for (const auto& q : c.parameters) {
+    problem.start.push_back(q.start);
+    problem.low.push_back(q.low);
+    problem.high.push_back(q.high);
+    problem.step.push_back(0.05 * (q.high - q.low));
+  }
+  problem.residual_count = c.readings.size();
+  problem.residuals = [&](const std::vector<std::vector<double>>& points) {
+    std::vector<std::function<ForwardResult()>> tasks;
+    for (const auto& x : points) tasks.push_back(forward(x));
+    std::vector<std::vector<double>> r;
+    for (auto& result : run_batch(tasks, options)) {
+      for (std::size_t k = 0; k < result.temperatures.size(); ++k) result.temperatures[k] -= measured[k];
+      r.push_back(std::move(result.temperatures));
+    }
+    return r;
+  };
+  problem.note = options.note;
+  const auto [jobs, threads] = share_cores(options, c.parameters.size());
+  note(fmt::format("calibrate: {} readings to day {:g}, {} parameters; forward runs {} at a time on {} thread{}",
+                   c.readings.size(), last / day, c.parameters.size(), jobs, threads, threads > 1 ? "s" : ""));
+  const FitResult fit = least_squares(problem);
+  fs::remove_all(scratch);
+  std::vector<ParameterSpan> spans;
+  for (std::size_t j = 0; j < c.parameters.size(); ++j)
+    spans.push_back(
+        {project::parameter_name(c.parameters[j].which), fit.values[j], c.parameters[j].low, c.parameters[j].high});
+  const Intervals iv = intervals(spans, fit.jacobian, fit.residuals, c.noise);
+  const double fit_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  note(fmt::format("calibrate: rms misfit {:.3g} K before, {:.3g} K after ({} iterations, {} runs, {:.1f} s)",
+                   rms(fit.start_residuals), rms(fit.residuals), fit.iterations, fit.forward_runs, fit_seconds));
+  for (const auto& w : iv.warnings) note("warning: " + w);
+
+  // The forecast: the calibrated project as `frostwall run` runs it, with
+  // its error bar, and one run per parameter for the band.
+  Project fitted = with_values(p, c.parameters, fit.values);
+  const double design_time = c.design_time.value_or(p.time.end);
+  auto& snaps = fitted.time.snapshots;
+  if (std::none_of(snaps.begin(), snaps.end(), [&](double s) { return std::abs(s - design_time) <= 1e-9 * s; })) {
+    snaps.push_back(design_time);
+    std::sort(snaps.begin(), snaps.end());
+  }
+  fitted.numerics.error_estimate = true;
+  const std::string calibrated_text =
+      options.project_text.empty() ? std::string() : calibrated_project_text(options.project_text, fitted);
+  note("calibrate: the calibrated run, with its error estimate");
+  project::RunOptions run_options;
+  run_options.project_text = calibrated_text;
+  run_options.progress = options.progress;
+  run::run_project(fitted, run_options);
+  // The band: the calibrated values and each parameter moved by its
+  // standard error, at the fit's step control (a smooth response).
+  const auto steps = band_steps(p, fit, iv);
+  std::vector<std::function<ForwardResult()>> tasks;
+  for (std::size_t j = 0; j <= steps.size(); ++j) {
+    auto x = fit.values;
+    if (j > 0) x[j - 1] += steps[j - 1];
+    Project moved = fit_project(x);
+    moved.time.snapshots = fitted.time.snapshots;
+    const fs::path dir = scratch / fmt::format("band{}", j);
+    tasks.push_back([moved, dir, &cloud, end = p.time.end] { return run_forward(moved, {}, end, dir, &cloud); });
+  }
+  note(fmt::format("calibrate: {} runs for the forecast's band", tasks.size()));
+  std::vector<nlohmann::json> moved;
+  for (auto& r : run_batch(tasks, options)) moved.push_back(std::move(r.summary));
+  fs::remove_all(scratch);
+
+  std::ifstream in(out / "summary.json");
+  nlohmann::ordered_json summary = nlohmann::ordered_json::parse(in);
+  const Forecast f =
+      forecast(nlohmann::json::parse(summary.dump()), moved, steps, iv.covariance, iv.t, design_time / day);
+  std::vector<std::string> names;
+  for (const auto& s : spans) names.push_back(s.name);
+  std::vector<std::vector<double>> correlation;
+  for (Eigen::Index i = 0; i < iv.correlation.rows(); ++i) {
+    correlation.emplace_back();
+    for (Eigen::Index j = 0; j < iv.correlation.cols(); ++j) correlation.back().push_back(iv.correlation(i, j));
+  }
+  std::vector<std::string> sensors;
+  for (const auto& s : p.monitoring) sensors.push_back(s.name);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  summary["calibration"] = {
+      {"readings", c.file},
+      {"reading_count", c.readings.size()},
+      {"last_reading_day", last / day},
+      {"sensors", sensors},
+      {"parameters", parameters_json(p, fit, iv)},
+      {"correlation", {{"parameters", names}, {"matrix", correlation}}},
+      {"rms_misfit_before", rms(fit.start_residuals)},
+      {"rms_misfit_after", rms(fit.residuals)},
+      {"noise", iv.noise},
+      {"noise_given", c.noise.has_value()},
+      {"t_quantile", iv.t},
+      {"warnings", iv.warnings},
+      {"iterations", fit.iterations},
+      {"forward_runs", fit.forward_runs},
+      {"converged", fit.converged},
+      {"solver", "Ceres Solver " CERES_VERSION_STRING ", Levenberg-Marquardt, bounded; " + fit.termination},
+      {"fit_seconds", fit_seconds},
+      {"seconds", seconds},
+      {"forecast", forecast_json(f)},
+      {"calibrated_project", "calibrated.json"},
+  };
+  io::write_text_file(out / "calibration_fit.csv", fit_csv(p, fit.start_residuals, fit.residuals));
+  io::write_text_file(out / "calibration.csv", parameters_csv(p, fit, iv));
+  if (!calibrated_text.empty()) io::write_text_file(out / "calibrated.json", calibrated_text);
+  io::write_text_file(out / "summary.json", summary.dump(2) + "\n");
+  return summary;
+}
+
+}  // namespace frostwall::calibrate
