@@ -9,10 +9,18 @@
 #include <fmt/core.h>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <map>
 #include <random>
+#include <sstream>
 
 #include "calibrate/fit.hpp"
+#include "calibrate/forward.hpp"
 #include "calibrate/intervals.hpp"
+#include "calibrate/parameters.hpp"
+#include "calibrate/run_calibrate.hpp"
+#include "project/project.hpp"
+#include "cli.hpp"
+#include "temp_dir.hpp"
 
 using namespace frostwall;
 
@@ -79,4 +87,197 @@ TEST_CASE("Calibration fit: a linear model's least squares and covariance in clo
   }
   CHECK(iv.correlation(1, 2) == Approx(C(1, 2) / std::sqrt(C(1, 1) * C(2, 2))).epsilon(1e-3));
   CHECK(iv.t == Approx(2.0025).margin(0.003));  // Student's t(57) at 97.5 %
+}
+
+// ---- twin experiments on a scaled ring ---------------------------------------
+//
+// 8 pipes on a 1.55 m ring: the single ring's pipe spacing (1.2 m), so the
+// columns close near the same day (12.6 d), on 1700 particles. Sensors: the
+// neck between two pipes, and 0.5 m outside and inside the ring on the line
+// through a pipe.
+
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+json twin_ring(const json& parameters) {
+  return {{"name", "scaled ring, twin experiment"},
+          {"layout", {{"pattern", "single"}, {"outer_ring", {{"radius", 1.55}, {"count", 8}}}}},
+          {"shaft", {{"excavation_radius", 0.9}}},
+          {"pipe", {{"diameter", 0.127}, {"temperature", -20.0}}},
+          {"soil", "sand"},
+          {"domain", {{"outer_radius", 5.0}, {"initial_temperature", 15.0}, {"far_field", {{"temperature", 15.0}}}}},
+          {"time", {{"end", 40}, {"unit", "d"}, {"snapshots", {20, 40}}}},
+          {"numerics", {{"spacing", 0.04}}},
+          {"monitoring",
+           {{{"name", "neck"}, {"r", 1.55}, {"theta_deg", 22.5}},
+            {{"name", "outside"}, {"r", 2.05}, {"theta_deg", 0.0}},
+            {{"name", "inside"}, {"r", 1.05}, {"theta_deg", 0.0}}}},
+          {"output", {{"directory", "out"}, {"vtk", false}, {"full_ring", false}, {"report", false}}},
+          {"calibrate", {{"readings", "readings.csv"}, {"parameters", parameters}}}};
+}
+
+const json three_factors = {
+    {"conductivity_frozen", {0.5, 2.0}}, {"conductivity_unfrozen", {0.5, 2.0}}, {"latent_heat", {0.5, 2.0}}};
+const std::vector<double> truth{1.15, 1.15, 0.9};  // conductivity_frozen, _unfrozen, latent_heat
+
+// Readings every 0.5 d to `until` made by the fit's own forward model at
+// `values`, with 0.1 K of Gaussian noise of a fixed seed; `stop`: a sensor's
+// last day.
+std::string twin_readings(const json& project, const std::vector<double>& values, double until,
+                          std::map<std::string, double> stop = {}) {
+  // A placeholder file lets the loader read the project; the readings it
+  // asks for are only times and sensors.
+  std::vector<project::Reading> readings;
+  std::vector<std::string> names;
+  for (const auto& s : project["monitoring"]) names.push_back(s["name"]);
+  for (std::size_t s = 0; s < names.size(); ++s)
+    for (int k = 1; k * 0.5 <= until + 1e-9; ++k)
+      if (k * 0.5 <= (stop.count(names[s]) ? stop[names[s]] : until) + 1e-9)
+        readings.push_back({0, s, k * 0.5 * 86400.0, 0.0});
+  test::TempDir dir("frostwall-twin");
+  std::ofstream(dir.path / "readings.csv") << "sensor,time,temperature\nneck,1,0\nneck,2,0\nneck,3,0\nneck,4,0\n";
+  auto p = project::parse_project(project.dump(), "twin", dir.path.string());
+  const auto run =
+      calibrate::run_forward(calibrate::fit_project(p, values), readings, until * 86400.0, dir.path / "run");
+  std::mt19937 rng(11);
+  std::normal_distribution<double> noise(0.0, 0.1);
+  std::string csv = "sensor,time,temperature\n";
+  for (std::size_t k = 0; k < readings.size(); ++k)
+    csv += fmt::format("{},{:g},{:.4f}\n", names[readings[k].sensor], readings[k].time / 86400.0,
+                       run.temperatures[k] + noise(rng));
+  return csv;
+}
+
+// Calibrates `project` against `readings` in a fresh folder; the summary.
+json calibrate_in(const json& project, const std::string& readings) {
+  test::TempDir dir("frostwall-calibrate");
+  std::ofstream(dir.path / "readings.csv") << readings;
+  auto p = project::parse_project(project.dump(), "twin", dir.path.string());
+  p.output.directory = (dir.path / "out").string();
+  calibrate::CalibrateOptions o;
+  o.project_text = project.dump();
+  const auto s = calibrate::run_calibration(p, o);
+  return json::parse(s.dump());
+}
+
+}  // namespace
+
+TEST_CASE("Calibration twin: conductivities x1.15 and latent heat x0.9 recovered from three sensors to day 20",
+          "[calibrate]") {
+  const json project = twin_ring(three_factors);
+  const json c = calibrate_in(project, twin_readings(project, truth, 20.0))["calibration"];
+  INFO(c.dump(1));
+  const char* names[] = {"conductivity_frozen", "conductivity_unfrozen", "latent_heat"};
+  for (int j = 0; j < 3; ++j) {
+    const auto& q = c["parameters"][names[j]];
+    CHECK(q["value"].get<double>() == Approx(truth[j]).epsilon(0.03));
+    CHECK(q["low"].get<double>() <= truth[j]);
+    CHECK(q["high"].get<double>() >= truth[j]);
+    CHECK(q["identified"].get<bool>());
+  }
+  // The misfit after the fit is the noise's (0.1 K), not the start's.
+  CHECK(c["rms_misfit_after"].get<double>() < 0.12);
+  CHECK(c["rms_misfit_before"].get<double>() > 3 * c["rms_misfit_after"].get<double>());
+}
+
+TEST_CASE("Calibration twin: readings to day 8, before closure, give a forecast band that covers the true closure",
+          "[calibrate]") {
+  const json project = twin_ring(three_factors);
+  const json summary = calibrate_in(project, twin_readings(project, truth, 8.0));
+  const json& band = summary["calibration"]["forecast"]["closure_day"];
+  INFO(summary["calibration"].dump(1));
+  // The truth, run as the forecast runs the calibrated project (the
+  // project's own step control).
+  test::TempDir dir("frostwall-truth");
+  std::ofstream(dir.path / "readings.csv") << twin_readings(project, truth, 8.0);
+  const auto p = project::parse_project(project.dump(), "twin", dir.path.string());
+  const auto truth_run = calibrate::run_forward(calibrate::with_values(p, p.calibration->parameters, truth), {},
+                                                p.time.end, dir.path / "run");
+  const double true_closure = truth_run.summary["closure_time_days"].get<double>();
+  CHECK(summary["calibration"]["last_reading_day"].get<double>() < true_closure);
+  CHECK(band["low"].get<double>() <= true_closure);
+  CHECK(band["high"].get<double>() >= true_closure);
+  // A band, not a point: the parameters' share is there.
+  CHECK(band["parameter_spread"].get<double>() > 0.0);
+  CHECK(band["value"].get<double>() == summary["closure_time_days"].get<double>());
+}
+
+TEST_CASE("Calibration twin: readings before any sensor freezes say the frozen conductivity is not told apart",
+          "[calibrate]") {
+  const json project = twin_ring(three_factors);
+  const std::string readings = twin_readings(project, truth, 6.0);
+  // No sensor has frozen by then (each stays above 0.5 degC).
+  std::istringstream in(readings);
+  std::string line;
+  std::getline(in, line);
+  while (std::getline(in, line)) REQUIRE(std::stod(line.substr(line.rfind(',') + 1)) > 0.5);
+  const json c = calibrate_in(project, readings)["calibration"];
+  INFO(c.dump(1));
+  bool said = false;
+  for (const auto& w : c["warnings"])
+    said = said || w.get<std::string>().find("conductivity_frozen") != std::string::npos;
+  CHECK(said);
+  CHECK((!c["parameters"]["conductivity_frozen"]["identified"].get<bool>() ||
+         std::abs(c["correlation"]["matrix"][0][2].get<double>()) > calibrate::correlation_limit));
+}
+
+TEST_CASE("Calibration twin: a sensor that stops halfway still lets the fit converge", "[calibrate]") {
+  const json project = twin_ring(three_factors);
+  const json c = calibrate_in(project, twin_readings(project, truth, 20.0, {{"inside", 10.0}}))["calibration"];
+  INFO(c.dump(1));
+  CHECK(c["converged"].get<bool>());
+  CHECK(c["reading_count"].get<int>() == 40 + 40 + 20);
+  CHECK(c["parameters"]["latent_heat"]["value"].get<double>() == Approx(0.9).epsilon(0.03));
+  CHECK(c["rms_misfit_after"].get<double>() < 0.12);
+}
+
+TEST_CASE("Calibration bad input: one line naming the file and line or the JSON path, status 2, nothing written",
+          "[calibrate][bad_input]") {
+  const std::string good = "sensor,time,temperature\nneck,1,10\nneck,2,8\noutside,1,12\ninside,2,9\n";
+  struct Case {
+    const char* what;
+    std::function<void(json&)> edit;
+    std::string readings;
+    const char* expected;
+  };
+  const std::vector<Case> cases{
+      {"a sensor outside the domain", [](json& p) { p["monitoring"][1]["r"] = 6.0; }, good,
+       "monitoring[1]: r = 6 m is outside the simulated domain"},
+      {"a sensor inside a pipe", [](json& p) { p["monitoring"][1]["r"] = 1.58; }, good,
+       "monitoring[1]: sensor 'outside' at (1.58, 0) m is inside pipe 1"},
+      {"readings after the run's end", [](json&) {}, good + "neck,41,-9\n",
+       "calibrate.readings: readings.csv line 6: time 41 is after the run's end (time.end 40 d)"},
+      {"a non-numeric cell", [](json&) {}, good + "neck,5,cold\n",
+       "calibrate.readings: readings.csv line 6: temperature 'cold' is not a number"},
+      {"an unknown sensor", [](json&) {}, good + "probe,5,1\n",
+       "calibrate.readings: readings.csv line 6: sensor 'probe' is not in \"monitoring\""},
+      {"an unknown parameter",
+       [](json& p) {
+         p["calibrate"]["parameters"]["porosity"] = {0.1, 0.4};
+       },
+       good, "calibrate.parameters.porosity: unknown parameter 'porosity'"},
+      {"bounds that exclude the start value",
+       [](json& p) {
+         p["calibrate"]["parameters"]["latent_heat"] = {1.1, 2.0};
+       },
+       good, "calibrate.parameters.latent_heat: bounds [1.1, 2] exclude the start value 1"},
+      {"fewer readings than parameters", [](json&) {}, "sensor,time,temperature\nneck,1,10\nneck,2,8\n",
+       "calibrate.readings: readings.csv: 2 readings cannot fit 3 parameters"},
+  };
+  for (const auto& c : cases) {
+    SECTION(c.what) {
+      test::TempDir dir("frostwall-calibrate-bad");
+      json project = twin_ring(three_factors);
+      c.edit(project);
+      std::ofstream(dir.path / "p.json") << project.dump(2);
+      std::ofstream(dir.path / "readings.csv") << c.readings;
+      const auto run = test::frostwall_cli(dir.path, "calibrate p.json");
+      CHECK(run.exit_status == 2);
+      REQUIRE(run.stderr_lines.size() == 1);
+      CHECK_THAT(run.stderr_lines[0], Catch::Contains(c.expected));
+      CHECK(!fs::exists(dir.path / "out"));
+    }
+  }
 }

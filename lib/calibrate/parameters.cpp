@@ -42,6 +42,12 @@ project::Project with_values(const project::Project& base, const std::vector<Fit
   return p;
 }
 
+project::Project fit_project(const project::Project& base, const std::vector<double>& values) {
+  project::Project p = with_values(base, base.calibration->parameters, values);
+  p.numerics.step_change = base.calibration->step_change;
+  return p;
+}
+
 namespace {
 
 nlohmann::ordered_json phase_json(const project::PhaseProperties& phase) {

@@ -20,6 +20,10 @@ using project::FittedParameter;
 project::Project with_values(const project::Project& base, const std::vector<FittedParameter>& parameters,
                              const std::vector<double>& values);
 
+// The project as the fit runs it at these values: with_values, at the
+// calibration's step control (base.calibration->step_change).
+project::Project fit_project(const project::Project& base, const std::vector<double>& values);
+
 // The project file's text with the fitted values written in (the soil in
 // full, domain.initial_temperature, groundwater.darcy_flux) and without
 // "calibrate": a project that `frostwall run` runs as calibrated.

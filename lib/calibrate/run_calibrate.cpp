@@ -131,14 +131,9 @@ nlohmann::ordered_json run_calibration(const Project& p, const CalibrateOptions&
   std::size_t run_number = 0;
   // One cloud for every run: the parameters change the ground, not its geometry.
   const freezing::Model cloud = freezing::build_cloud(p);
-  auto fit_project = [&](const std::vector<double>& values) {
-    Project q = with_values(p, c.parameters, values);
-    q.numerics.step_change = c.step_change;
-    return q;
-  };
   auto forward = [&](const std::vector<double>& values) {
     const fs::path dir = scratch / fmt::format("run{}", run_number++);
-    return [&, values, dir] { return run_forward(fit_project(values), c.readings, last, dir, &cloud); };
+    return [&, values, dir] { return run_forward(fit_project(p, values), c.readings, last, dir, &cloud); };
   };
 
   FitProblem problem;
@@ -199,7 +194,7 @@ nlohmann::ordered_json run_calibration(const Project& p, const CalibrateOptions&
   for (std::size_t j = 0; j <= steps.size(); ++j) {
     auto x = fit.values;
     if (j > 0) x[j - 1] += steps[j - 1];
-    Project moved = fit_project(x);
+    Project moved = fit_project(p, x);
     moved.time.snapshots = fitted.time.snapshots;
     const fs::path dir = scratch / fmt::format("band{}", j);
     tasks.push_back([moved, dir, &cloud, end = p.time.end] { return run_forward(moved, {}, end, dir, &cloud); });
