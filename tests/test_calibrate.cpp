@@ -223,14 +223,40 @@ TEST_CASE("Calibration twin: readings before any sensor freezes say the frozen c
          std::abs(c["correlation"]["matrix"][0][2].get<double>()) > calibrate::correlation_limit));
 }
 
-TEST_CASE("Calibration twin: a sensor that stops halfway still lets the fit converge", "[calibrate]") {
-  const json project = twin_ring(three_factors);
-  const json c = calibrate_in(project, twin_readings(project, truth, 20.0, {{"inside", 10.0}}))["calibration"];
+TEST_CASE("Calibration twin: a sensor that stops halfway still lets the fit converge (frostwall calibrate, report)",
+          "[calibrate]") {
+  json project = twin_ring(three_factors);
+  project["output"]["report"] = true;
+  test::TempDir dir("frostwall-calibrate-cli");
+  std::ofstream(dir.path / "p.json") << project.dump(2);
+  std::ofstream(dir.path / "readings.csv") << twin_readings(project, truth, 20.0, {{"inside", 10.0}});
+  test::require_frostwall(dir.path, "calibrate p.json");
+  const fs::path out = dir.path / "out";
+  const json summary = json::parse(std::ifstream(out / "summary.json"));
+  const json& c = summary["calibration"];
   INFO(c.dump(1));
   CHECK(c["converged"].get<bool>());
   CHECK(c["reading_count"].get<int>() == 40 + 40 + 20);
   CHECK(c["parameters"]["latent_heat"]["value"].get<double>() == Approx(0.9).epsilon(0.03));
   CHECK(c["rms_misfit_after"].get<double>() < 0.12);
+  // The calibrated project file runs as calibrated: the sand's values times the fitted factors.
+  const auto calibrated = project::load_project((out / "calibrated.json").string());
+  const auto sand = *project::builtin_soil("sand");
+  CHECK(calibrated.soil.latent_heat ==
+        Approx(sand.latent_heat * c["parameters"]["latent_heat"]["value"].get<double>()).epsilon(1e-12));
+  CHECK(calibrated.soil.frozen.conductivity[0] ==
+        Approx(sand.frozen.conductivity[0] * c["parameters"]["conductivity_frozen"]["value"].get<double>())
+            .epsilon(1e-12));
+  CHECK(!calibrated.calibration);
+  // The report's calibration section: one chart per sensor, the table, the forecast.
+  std::ifstream in(out / "report.html");
+  const std::string html((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  CHECK_THAT(html, Catch::Contains("Calibration from the thermometers"));
+  for (const char* sensor : {"neck", "outside", "inside"})
+    CHECK_THAT(html, Catch::Contains(fmt::format("sensor {}: measured and simulated", sensor)));
+  CHECK_THAT(html, Catch::Contains("95 % interval"));
+  CHECK(fs::exists(out / "calibration.csv"));
+  CHECK(fs::exists(out / "calibration_fit.csv"));
 }
 
 TEST_CASE("Calibration bad input: one line naming the file and line or the JSON path, status 2, nothing written",

@@ -100,19 +100,32 @@ class Progress : public ceres::IterationCallback {
   Progress(const FitProblem& p, const RunMemory& memory, const std::vector<double>& x)
       : p_(p), memory_(memory), x_(x) {}
   ceres::CallbackReturnType operator()(const ceres::IterationSummary& s) override {
+    rejected_ = s.iteration > 0 && !s.step_is_successful ? rejected_ + 1 : 0;
     if (p_.note) {
       std::string values;
       for (double v : x_) values += fmt::format(" {:.4g}", v);
-      p_.note(fmt::format("  iteration {:2d}: rms misfit {:.4g} K, parameters{} ({} runs)", s.iteration,
-                          std::sqrt(2.0 * s.cost / static_cast<double>(p_.residual_count)), values, memory_.count()));
+      p_.note(rejected_ > 0 ? fmt::format("  iteration {:2d}: step rejected ({} runs)", s.iteration, memory_.count())
+                            : fmt::format("  iteration {:2d}: rms misfit {:.4g} K, parameters{} ({} runs)", s.iteration,
+                                          std::sqrt(2.0 * s.cost / static_cast<double>(p_.residual_count)), values,
+                                          memory_.count()));
+    }
+    // Steps rejected in a row: the trust region has shrunk to the misfit's
+    // ripple, below which no step can be told from another.
+    if (rejected_ >= max_rejected) {
+      stopped_ = true;
+      return ceres::SOLVER_TERMINATE_SUCCESSFULLY;
     }
     return ceres::SOLVER_CONTINUE;
   }
+  bool stopped() const { return stopped_; }
+  static constexpr int max_rejected = 3;
 
  private:
   const FitProblem& p_;
   const RunMemory& memory_;
   const std::vector<double>& x_;
+  int rejected_ = 0;
+  bool stopped_ = false;
 };
 
 }  // namespace
@@ -152,8 +165,10 @@ FitResult least_squares(const FitProblem& problem) {
   result.jacobian = jacobian_of(r, steps);
   result.iterations = static_cast<int>(summary.iterations.size()) - 1;
   result.forward_runs = memory.count();
-  result.converged = summary.termination_type == ceres::CONVERGENCE;
-  result.termination = summary.message;
+  result.converged = summary.termination_type == ceres::CONVERGENCE || progress.stopped();
+  result.termination = progress.stopped() ? fmt::format("{} steps rejected in a row: the misfit's ripple reached",
+                                                        Progress::max_rejected)
+                                          : summary.message;
   return result;
 }
 

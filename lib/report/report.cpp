@@ -253,6 +253,7 @@ json report_view(const fs::path& dir) {
   detail::add_maps(run, view);
   detail::add_groundwater(run, view);
   detail::add_as_built(run, view);
+  detail::add_calibration(run, view);
   detail::add_charts(run, view);
   detail::add_mechanics(run, view);
   detail::add_frost(run, view);

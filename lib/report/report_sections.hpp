@@ -81,6 +81,8 @@ void add_groundwater(const RunRecord& run, nlohmann::json& view);
 void add_as_built(
     const RunRecord& run,
     nlohmann::json& view);  // sections at depth: charts, plan, table  // seepage: verdict, gaps, sides, gap flow
+// Calibration from thermometers: sensors' curves, parameters, forecast band.
+void add_calibration(const RunRecord& run, nlohmann::json& view);
 void add_cfd_dem(const RunRecord& run, nlohmann::json& view);  // CFD-DEM: bed, fluidisation, curves, run, files
 void add_erosion(const RunRecord& run, nlohmann::json& view);
 void add_design(const RunRecord& run,
