@@ -146,6 +146,10 @@ int check_command(const std::string& file) {
                                            : study::check_layers(*p, text_of(file));
     std::cout << file << ": can run (output into " << p->output.directory << ")\n";
     for (const auto& line : lines) std::cout << "  " << line << "\n";
+    if (p->calibration) {
+      calibrate::check_calibration(*p);
+      std::cout << "  " << calibrate::describe_calibration(*p) << "\n";
+    }
   });
 }
 

@@ -117,6 +117,18 @@ void check_calibration(const Project& p) {
   freezing::check_run_inputs(p);
 }
 
+std::string describe_calibration(const Project& p) {
+  const auto& c = *p.calibration;
+  double last = 0.0;
+  for (const auto& r : c.readings) last = std::max(last, r.time);
+  std::string names;
+  for (const auto& q : c.parameters)
+    names += (names.empty() ? "" : ", ") + std::string(project::parameter_name(q.which));
+  return fmt::format("calibrate: {} readings of {} sensors to {:g} {} ({}); fits {} (`frostwall calibrate`)",
+                     c.readings.size(), p.monitoring.size(), last / p.time.unit_seconds(), p.time.unit_name(), c.file,
+                     names);
+}
+
 nlohmann::ordered_json run_calibration(const Project& p, const CalibrateOptions& options) {
   check_calibration(p);
   const auto started = std::chrono::steady_clock::now();

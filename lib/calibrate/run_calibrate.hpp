@@ -31,6 +31,9 @@ struct CalibrateOptions {
 // "calibrate", sensors inside a pipe, and what `frostwall run` refuses.
 void check_calibration(const project::Project& p);
 
+// One line for `frostwall check`: the readings and the parameters to fit.
+std::string describe_calibration(const project::Project& p);
+
 // Returns the summary written (with its "calibration" block).
 nlohmann::ordered_json run_calibration(const project::Project& p, const CalibrateOptions& options);
 
