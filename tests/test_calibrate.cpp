@@ -20,6 +20,10 @@
 #include "calibrate/run_calibrate.hpp"
 #include "project/project.hpp"
 #include "cli.hpp"
+#include "report/mustache_view.hpp"
+#include "report/report.hpp"
+#include "report/templates.hpp"
+#include "report_view_check.hpp"
 #include "temp_dir.hpp"
 
 using namespace frostwall;
@@ -91,31 +95,21 @@ TEST_CASE("Calibration fit: a linear model's least squares and covariance in clo
 
 // ---- twin experiments on a scaled ring ---------------------------------------
 //
-// 8 pipes on a 1.55 m ring: the single ring's pipe spacing (1.2 m), so the
-// columns close near the same day (12.6 d), on 1700 particles. Sensors: the
-// neck between two pipes, and 0.5 m outside and inside the ring on the line
-// through a pipe.
+// tests/data/calibrate_twin_ring.json: 8 pipes on a 1.55 m ring, the single
+// ring's pipe spacing (1.2 m), so the columns close near the same day
+// (12.6 d), on 1700 particles. Sensors: the neck between two pipes, and
+// 0.5 m outside and inside the ring on the line through a pipe.
 
 namespace {
 
 namespace fs = std::filesystem;
 using nlohmann::json;
 
+// tests/data/calibrate_twin_ring.json with `parameters` to fit.
 json twin_ring(const json& parameters) {
-  return {{"name", "scaled ring, twin experiment"},
-          {"layout", {{"pattern", "single"}, {"outer_ring", {{"radius", 1.55}, {"count", 8}}}}},
-          {"shaft", {{"excavation_radius", 0.9}}},
-          {"pipe", {{"diameter", 0.127}, {"temperature", -20.0}}},
-          {"soil", "sand"},
-          {"domain", {{"outer_radius", 5.0}, {"initial_temperature", 15.0}, {"far_field", {{"temperature", 15.0}}}}},
-          {"time", {{"end", 40}, {"unit", "d"}, {"snapshots", {20, 40}}}},
-          {"numerics", {{"spacing", 0.04}}},
-          {"monitoring",
-           {{{"name", "neck"}, {"r", 1.55}, {"theta_deg", 22.5}},
-            {{"name", "outside"}, {"r", 2.05}, {"theta_deg", 0.0}},
-            {{"name", "inside"}, {"r", 1.05}, {"theta_deg", 0.0}}}},
-          {"output", {{"directory", "out"}, {"vtk", false}, {"full_ring", false}, {"report", false}}},
-          {"calibrate", {{"readings", "readings.csv"}, {"parameters", parameters}}}};
+  json p = json::parse(std::ifstream(FROSTWALL_SOURCE_DIR "/tests/data/calibrate_twin_ring.json"));
+  p["calibrate"]["parameters"] = parameters;
+  return p;
 }
 
 const json three_factors = {
@@ -248,7 +242,14 @@ TEST_CASE("Calibration twin: a sensor that stops halfway still lets the fit conv
         Approx(sand.frozen.conductivity[0] * c["parameters"]["conductivity_frozen"]["value"].get<double>())
             .epsilon(1e-12));
   CHECK(!calibrated.calibration);
-  // The report's calibration section: one chart per sensor, the table, the forecast.
+  // The report's calibration section: every name it uses in the view, one
+  // chart per sensor, the table, the forecast.
+  const json view = report::report_view(out);
+  for (const auto& name :
+       report::template_names(test::split_section(report::templates::report_html, "has_calibration").first)) {
+    INFO(name);
+    CHECK(test::has_key(view, name));
+  }
   std::ifstream in(out / "report.html");
   const std::string html((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   CHECK_THAT(html, Catch::Contains("Calibration from the thermometers"));

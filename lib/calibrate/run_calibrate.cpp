@@ -129,25 +129,34 @@ std::string describe_calibration(const Project& p) {
                      names);
 }
 
-nlohmann::ordered_json run_calibration(const Project& p, const CalibrateOptions& options) {
-  check_calibration(p);
-  const auto started = std::chrono::steady_clock::now();
-  const auto& c = *p.calibration;
-  const fs::path out(p.output.directory), scratch = out / ".calibration-runs";
-  auto note = [&](const std::string& s) {
-    if (options.note) options.note(s);
-  };
-  double last = 0.0;
-  std::vector<double> measured;
-  for (const auto& r : c.readings) last = std::max(last, r.time), measured.push_back(r.temperature);
-  std::size_t run_number = 0;
-  // One cloud for every run: the parameters change the ground, not its geometry.
-  const freezing::Model cloud = freezing::build_cloud(p);
-  auto forward = [&](const std::vector<double>& values) {
-    const fs::path dir = scratch / fmt::format("run{}", run_number++);
-    return [&, values, dir] { return run_forward(fit_project(p, values), c.readings, last, dir, &cloud); };
-  };
+namespace {
 
+// One calibration: its project and options, the readings, the cloud every
+// run copies, and the folder its runs write into and leave.
+struct Context {
+  const Project& p;
+  const CalibrateOptions& options;
+  fs::path out, scratch;
+  double last = 0.0;             // the last reading, s
+  std::vector<double> measured;  // degC, in the readings' order
+  freezing::Model cloud;         // placed once: the parameters change the ground, not its geometry
+  std::size_t run_number = 0;
+  std::chrono::steady_clock::time_point started = std::chrono::steady_clock::now();
+
+  Context(const Project& project, const CalibrateOptions& o)
+      : p(project), options(o), out(p.output.directory), scratch(out / ".calibration-runs") {
+    for (const auto& r : p.calibration->readings) last = std::max(last, r.time), measured.push_back(r.temperature);
+    cloud = freezing::build_cloud(p);
+  }
+  void note(const std::string& s) const {
+    if (options.note) options.note(s);
+  }
+  double seconds() const { return std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count(); }
+};
+
+// The least-squares fit of the readings, each batch of runs side by side.
+FitResult fit_readings(Context& ctx) {
+  const auto& c = *ctx.p.calibration;
   FitProblem problem;
   for (const auto& q : c.parameters) {
     problem.start.push_back(q.start);
@@ -158,84 +167,87 @@ nlohmann::ordered_json run_calibration(const Project& p, const CalibrateOptions&
   problem.residual_count = c.readings.size();
   problem.residuals = [&](const std::vector<std::vector<double>>& points) {
     std::vector<std::function<ForwardResult()>> tasks;
-    for (const auto& x : points) tasks.push_back(forward(x));
+    for (const auto& x : points) {
+      const fs::path dir = ctx.scratch / fmt::format("run{}", ctx.run_number++);
+      tasks.push_back(
+          [&ctx, &c, x, dir] { return run_forward(fit_project(ctx.p, x), c.readings, ctx.last, dir, &ctx.cloud); });
+    }
     std::vector<std::vector<double>> r;
-    for (auto& result : run_batch(tasks, options)) {
-      for (std::size_t k = 0; k < result.temperatures.size(); ++k) result.temperatures[k] -= measured[k];
+    for (auto& result : run_batch(tasks, ctx.options)) {
+      for (std::size_t k = 0; k < result.temperatures.size(); ++k) result.temperatures[k] -= ctx.measured[k];
       r.push_back(std::move(result.temperatures));
     }
     return r;
   };
-  problem.note = options.note;
-  const auto [jobs, threads] = share_cores(options, c.parameters.size());
-  note(fmt::format("calibrate: {} readings to day {:g}, {} parameters; forward runs {} at a time on {} thread{}",
-                   c.readings.size(), last / day, c.parameters.size(), jobs, threads, threads > 1 ? "s" : ""));
-  const FitResult fit = least_squares(problem);
-  fs::remove_all(scratch);
-  std::vector<ParameterSpan> spans;
-  for (std::size_t j = 0; j < c.parameters.size(); ++j)
-    spans.push_back(
-        {project::parameter_name(c.parameters[j].which), fit.values[j], c.parameters[j].low, c.parameters[j].high});
-  const Intervals iv = intervals(spans, fit.jacobian, fit.residuals, c.noise);
-  const double fit_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-  note(fmt::format("calibrate: rms misfit {:.3g} K before, {:.3g} K after ({} iterations, {} runs, {:.1f} s)",
-                   rms(fit.start_residuals), rms(fit.residuals), fit.iterations, fit.forward_runs, fit_seconds));
-  for (const auto& w : iv.warnings) note("warning: " + w);
+  problem.note = ctx.options.note;
+  const auto [jobs, threads] = share_cores(ctx.options, c.parameters.size());
+  ctx.note(fmt::format("calibrate: {} readings to day {:g}, {} parameters; forward runs {} at a time on {} thread{}",
+                       c.readings.size(), ctx.last / day, c.parameters.size(), jobs, threads, threads > 1 ? "s" : ""));
+  FitResult fit = least_squares(problem);
+  fs::remove_all(ctx.scratch);
+  return fit;
+}
 
-  // The forecast: the calibrated project as `frostwall run` runs it, with
-  // its error bar, and one run per parameter for the band.
-  Project fitted = with_values(p, c.parameters, fit.values);
-  const double design_time = c.design_time.value_or(p.time.end);
+struct ForecastRuns {
+  std::string calibrated_text;       // the calibrated project file (empty without the project's text)
+  double design_time = 0.0;          // s
+  std::vector<double> steps;         // each parameter's move in the band's runs
+  std::vector<nlohmann::json> band;  // the band's runs' summaries: the fitted values, then one per move
+};
+
+// The calibrated project as `frostwall run` runs it, with its error bar,
+// into the output directory; then the band's runs: the calibrated values
+// and each parameter moved by its standard error, at the fit's step
+// control (a smooth response).
+ForecastRuns run_forecast(Context& ctx, const FitResult& fit, const Intervals& iv) {
+  const auto& c = *ctx.p.calibration;
+  ForecastRuns f;
+  Project fitted = with_values(ctx.p, c.parameters, fit.values);
+  f.design_time = c.design_time.value_or(ctx.p.time.end);
   auto& snaps = fitted.time.snapshots;
-  if (std::none_of(snaps.begin(), snaps.end(), [&](double s) { return std::abs(s - design_time) <= 1e-9 * s; })) {
-    snaps.push_back(design_time);
+  if (std::none_of(snaps.begin(), snaps.end(), [&](double s) { return std::abs(s - f.design_time) <= 1e-9 * s; })) {
+    snaps.push_back(f.design_time);
     std::sort(snaps.begin(), snaps.end());
   }
   fitted.numerics.error_estimate = true;
-  const std::string calibrated_text =
-      options.project_text.empty() ? std::string() : calibrated_project_text(options.project_text, fitted);
-  note("calibrate: the calibrated run, with its error estimate");
+  if (!ctx.options.project_text.empty()) f.calibrated_text = calibrated_project_text(ctx.options.project_text, fitted);
+  ctx.note("calibrate: the calibrated run, with its error estimate");
   project::RunOptions run_options;
-  run_options.project_text = calibrated_text;
-  run_options.progress = options.progress;
+  run_options.project_text = f.calibrated_text;
+  run_options.progress = ctx.options.progress;
   run::run_project(fitted, run_options);
-  // The band: the calibrated values and each parameter moved by its
-  // standard error, at the fit's step control (a smooth response).
-  const auto steps = band_steps(p, fit, iv);
+  f.steps = band_steps(ctx.p, fit, iv);
   std::vector<std::function<ForwardResult()>> tasks;
-  for (std::size_t j = 0; j <= steps.size(); ++j) {
+  for (std::size_t j = 0; j <= f.steps.size(); ++j) {
     auto x = fit.values;
-    if (j > 0) x[j - 1] += steps[j - 1];
-    Project moved = fit_project(p, x);
+    if (j > 0) x[j - 1] += f.steps[j - 1];
+    Project moved = fit_project(ctx.p, x);
     moved.time.snapshots = fitted.time.snapshots;
-    const fs::path dir = scratch / fmt::format("band{}", j);
-    tasks.push_back([moved, dir, &cloud, end = p.time.end] { return run_forward(moved, {}, end, dir, &cloud); });
+    const fs::path dir = ctx.scratch / fmt::format("band{}", j);
+    tasks.push_back([moved, dir, &ctx] { return run_forward(moved, {}, ctx.p.time.end, dir, &ctx.cloud); });
   }
-  note(fmt::format("calibrate: {} runs for the forecast's band", tasks.size()));
-  std::vector<nlohmann::json> moved;
-  for (auto& r : run_batch(tasks, options)) moved.push_back(std::move(r.summary));
-  fs::remove_all(scratch);
+  ctx.note(fmt::format("calibrate: {} runs for the forecast's band", tasks.size()));
+  for (auto& r : run_batch(tasks, ctx.options)) f.band.push_back(std::move(r.summary));
+  fs::remove_all(ctx.scratch);
+  return f;
+}
 
-  std::ifstream in(out / "summary.json");
-  nlohmann::ordered_json summary = nlohmann::ordered_json::parse(in);
-  const Forecast f =
-      forecast(nlohmann::json::parse(summary.dump()), moved, steps, iv.covariance, iv.t, design_time / day);
-  std::vector<std::string> names;
-  for (const auto& s : spans) names.push_back(s.name);
-  std::vector<std::vector<double>> correlation;
-  for (Eigen::Index i = 0; i < iv.correlation.rows(); ++i) {
-    correlation.emplace_back();
-    for (Eigen::Index j = 0; j < iv.correlation.cols(); ++j) correlation.back().push_back(iv.correlation(i, j));
-  }
-  std::vector<std::string> sensors;
-  for (const auto& s : p.monitoring) sensors.push_back(s.name);
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-  summary["calibration"] = {
+// summary.json's "calibration" block.
+nlohmann::ordered_json calibration_json(const Context& ctx, const FitResult& fit, const Intervals& iv,
+                                        const Forecast& f, double fit_seconds) {
+  const auto& c = *ctx.p.calibration;
+  std::vector<std::string> names, sensors;
+  for (const auto& q : c.parameters) names.push_back(project::parameter_name(q.which));
+  for (const auto& s : ctx.p.monitoring) sensors.push_back(s.name);
+  std::vector<std::vector<double>> correlation(names.size());
+  for (Eigen::Index i = 0; i < iv.correlation.rows(); ++i)
+    for (Eigen::Index j = 0; j < iv.correlation.cols(); ++j) correlation[i].push_back(iv.correlation(i, j));
+  return {
       {"readings", c.file},
       {"reading_count", c.readings.size()},
-      {"last_reading_day", last / day},
+      {"last_reading_day", ctx.last / day},
       {"sensors", sensors},
-      {"parameters", parameters_json(p, fit, iv)},
+      {"parameters", parameters_json(ctx.p, fit, iv)},
       {"correlation", {{"parameters", names}, {"matrix", correlation}}},
       {"rms_misfit_before", rms(fit.start_residuals)},
       {"rms_misfit_after", rms(fit.residuals)},
@@ -248,14 +260,39 @@ nlohmann::ordered_json run_calibration(const Project& p, const CalibrateOptions&
       {"converged", fit.converged},
       {"solver", "Ceres Solver " CERES_VERSION_STRING ", Levenberg-Marquardt, bounded; " + fit.termination},
       {"fit_seconds", fit_seconds},
-      {"seconds", seconds},
+      {"seconds", ctx.seconds()},
       {"forecast", forecast_json(f)},
       {"calibrated_project", "calibrated.json"},
   };
-  io::write_text_file(out / "calibration_fit.csv", fit_csv(p, fit.start_residuals, fit.residuals));
-  io::write_text_file(out / "calibration.csv", parameters_csv(p, fit, iv));
-  if (!calibrated_text.empty()) io::write_text_file(out / "calibrated.json", calibrated_text);
-  io::write_text_file(out / "summary.json", summary.dump(2) + "\n");
+}
+
+}  // namespace
+
+nlohmann::ordered_json run_calibration(const Project& p, const CalibrateOptions& options) {
+  check_calibration(p);
+  Context ctx(p, options);
+  const auto& c = *p.calibration;
+  const FitResult fit = fit_readings(ctx);
+  std::vector<ParameterSpan> spans;
+  for (std::size_t j = 0; j < c.parameters.size(); ++j)
+    spans.push_back(
+        {project::parameter_name(c.parameters[j].which), fit.values[j], c.parameters[j].low, c.parameters[j].high});
+  const Intervals iv = intervals(spans, fit.jacobian, fit.residuals, c.noise);
+  const double fit_seconds = ctx.seconds();
+  ctx.note(fmt::format("calibrate: rms misfit {:.3g} K before, {:.3g} K after ({} iterations, {} runs, {:.1f} s)",
+                       rms(fit.start_residuals), rms(fit.residuals), fit.iterations, fit.forward_runs, fit_seconds));
+  for (const auto& w : iv.warnings) ctx.note("warning: " + w);
+
+  const ForecastRuns runs = run_forecast(ctx, fit, iv);
+  std::ifstream in(ctx.out / "summary.json");
+  nlohmann::ordered_json summary = nlohmann::ordered_json::parse(in);
+  const Forecast f = forecast(nlohmann::json::parse(summary.dump()), runs.band, runs.steps, iv.covariance, iv.t,
+                              runs.design_time / day);
+  summary["calibration"] = calibration_json(ctx, fit, iv, f, fit_seconds);
+  io::write_text_file(ctx.out / "calibration_fit.csv", fit_csv(p, fit.start_residuals, fit.residuals));
+  io::write_text_file(ctx.out / "calibration.csv", parameters_csv(p, fit, iv));
+  if (!runs.calibrated_text.empty()) io::write_text_file(ctx.out / "calibrated.json", runs.calibrated_text);
+  io::write_text_file(ctx.out / "summary.json", summary.dump(2) + "\n");
   return summary;
 }
 

@@ -66,6 +66,11 @@ std::string band_text(const json& band, int decimals, const std::string& unit) {
 
 void add_calibration(const RunRecord& run, json& view) {
   view["has_calibration"] = false;
+  view["has_calibration_warnings"] = false;
+  for (const char* key : {"calibration_note", "calibration_forecast_note"}) view[key] = "";
+  for (const char* key : {"calibration_charts", "calibration_rows", "calibration_names", "calibration_correlation",
+                          "calibration_warnings", "calibration_forecast"})
+    view[key] = json::array();
   const json& s = run.summary;
   if (!s.contains("calibration")) return;
   const json& c = s["calibration"];
