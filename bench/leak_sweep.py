@@ -37,9 +37,12 @@ def run(velocity, end, ranks, drain, work):
     with open(path, "w") as f:
         json.dump(p, f)
     start = time.perf_counter()
-    subprocess.run(["mpirun", "--allow-run-as-root", "-np", str(ranks), EXE, "run", path], check=True,
-                   stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, env=dict(os.environ, CI="1"))
-    print(f"U = {velocity:g} m/s: {time.perf_counter() - start:.0f} s in all", flush=True)
+    done = subprocess.run(["mpirun", "--allow-run-as-root", "-np", str(ranks), EXE, "run", path],
+                          stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True, env=dict(os.environ, CI="1"))
+    print(f"U = {velocity:g} m/s: {time.perf_counter() - start:.0f} s in all, exit status {done.returncode}", flush=True)
+    if done.returncode != 0:
+        print("  " + "".join(line for line in done.stderr.splitlines(True) if "frostwall" in line).strip(), flush=True)
+        return None
     return directory
 
 
@@ -113,6 +116,7 @@ def main():
         work = tempfile.mkdtemp(prefix="frostwall-leak-sweep-")
         print(f"runs in {work}", flush=True)
         dirs = [(u, run(u, args.end, args.ranks, args.drain, work)) for u in args.velocities]
+        dirs = [(u, d) for u, d in dirs if d]
     table(dirs)
 
 

@@ -235,9 +235,10 @@ TEST_CASE("CFD-DEM: a settled packing is cached, and the next run starts from it
   CHECK_FALSE(first["packing"]["read_from_cache"].get<bool>());
   CHECK(second["packing"]["read_from_cache"].get<bool>());
   CHECK(second["packing"]["cache"] == first["packing"]["cache"]);
-  // The same grains, to the digits LAMMPS writes (17 significant); the
-  // contacts' tangential springs start unloaded after the cache (a data
-  // file), so 0.02 s later the bed differs by its relaxation, 1e-4 of it.
+  // The same grains (a restart file holds them in binary, with their
+  // contacts' springs). The first forces are computed afresh from the
+  // restart, so round-off parts the two paths and the dense bed's many
+  // contacts amplify it: 0.02 s later the beds agree to 1e-3.
   CHECK(second["series_start"]["bed_length_m"].get<double>() ==
         Approx(first["series_start"]["bed_length_m"].get<double>()).epsilon(1e-12));
   CHECK(second["series_start"]["porosity"].get<double>() ==

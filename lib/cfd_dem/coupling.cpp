@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <mpi.h>
 #include <numbers>
 
@@ -50,12 +51,19 @@ CfdDemCoupling::CfdDemCoupling(const project::CfdDem& c, dem::LammpsSession& lam
             c.fluid.min_porosity),
       forces_(pore_water::make_fluid_forces(c.forces)) {
   size_by_id();
-  lammps_.set_external_force(dem::fluid_fix, [this](int n, const int* ids, double**, double** force) {
-    for (int i = 0; i < n; ++i) {
-      const auto f = fluid_force(ids[i]);  // none before the first update
-      for (int k = 0; k < 3; ++k) force[i][k] = f[k];
-    }
-  });
+  lammps_.set_external_force(dem::fluid_fix,
+                             [this](int n, const int* ids, double**, double** force) { apply(n, ids, force); });
+}
+
+void CfdDemCoupling::apply(int n, const int* ids, double** force) const {
+  // Before the first update every held value is zero.
+  double** v = lammps_.velocity();
+  for (int i = 0; i < n; ++i) {
+    const auto& f = held_[ids[i]];
+    const double K = drag_k_[ids[i]];
+    const auto& u = drag_u_[ids[i]];
+    for (int k = 0; k < 3; ++k) force[i][k] = f[k] + K * (u[k] - v[i][k]);
+  }
 }
 
 pore_water::SolveReport CfdDemCoupling::update(double inflow_velocity) {
@@ -80,17 +88,34 @@ pore_water::SolveReport CfdDemCoupling::update(double inflow_velocity) {
   const auto report = grid_.solve(1e-10, 1e-3);
   const pore_water::Fluid fluid{c_.fluid.density, c_.fluid.viscosity};
   const Vec3 g(c_.gravity[0], c_.gravity[1], c_.gravity[2]);
+  const bool semi_implicit = c_.coupling.drag == project::DragCoupling::semi_implicit;
+  shortest_relaxation_ = std::numeric_limits<double>::infinity();
   for (int i = 0; i < n; ++i) {
     const Vec3 xi(x[i][0], x[i][1], x[i][2]), vi(v[i][0], v[i][1], v[i][2]);
     const auto sample = grid_.sample(xi);
-    auto& kinds = by_kind_[ids[i]];
+    const int id = ids[i];
+    auto& kinds = by_kind_[id];
     kinds = {};
-    std::array<double, 3> total{};
+    std::array<double, 3> total{}, held{};
+    double K = 0.0;
+    Vec3 u = Vec3::Zero();
     for (const auto& force : forces_) {
       const Vec3 f = force->force(fluid, g, 2.0 * r[i], vi, sample);
-      for (int k = 0; k < 3; ++k) kinds[kind_index(force->kind())][k] += f[k], total[k] += f[k];
+      const auto linear = force->linear_drag(fluid, 2.0 * r[i], vi, sample);
+      const bool implicit = semi_implicit && linear;
+      if (linear) K += linear->coefficient;
+      if (implicit) u += linear->coefficient * linear->velocity;  // K-weighted: one K (u - v) for all drags
+      for (int k = 0; k < 3; ++k) {
+        kinds[kind_index(force->kind())][k] += f[k], total[k] += f[k];
+        if (!implicit) held[k] += f[k];
+      }
     }
-    held_[ids[i]] = total;
+    const double mass = c_.grains.density * std::numbers::pi / 6.0 * std::pow(2.0 * r[i], 3);
+    if (K > 0.0) shortest_relaxation_ = std::min(shortest_relaxation_, mass / K);
+    shown_[id] = total;
+    held_[id] = held;
+    drag_k_[id] = semi_implicit && K > 0.0 ? K : 0.0;
+    for (int k = 0; k < 3; ++k) drag_u_[id][k] = drag_k_[id] > 0.0 ? u[k] / K : 0.0;
   }
   coupling_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return report;
@@ -105,7 +130,11 @@ void CfdDemCoupling::size_by_id() {
   int largest = 0;
   for (int i = 0; i < n; ++i) largest = std::max(largest, ids[i]);
   if (lammps_.ranks() > 1) MPI_Allreduce(MPI_IN_PLACE, &largest, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
-  if (held_.size() < static_cast<std::size_t>(largest) + 1) held_.resize(largest + 1), by_kind_.resize(largest + 1);
+  const std::size_t size = static_cast<std::size_t>(largest) + 1;
+  if (held_.size() < size) {
+    held_.resize(size), shown_.resize(size), by_kind_.resize(size);
+    drag_k_.resize(size), drag_u_.resize(size);
+  }
 }
 
 void CfdDemCoupling::hold_buoyancy_only() {
@@ -117,7 +146,8 @@ void CfdDemCoupling::hold_buoyancy_only() {
   const Vec3 g(c_.gravity[0], c_.gravity[1], c_.gravity[2]);
   for (int i = 0; i < n; ++i) {
     const Vec3 f = buoyancy.force(fluid, g, 2.0 * r[i], Vec3::Zero(), pore_water::FluidSample{});
-    held_[ids[i]] = {f[0], f[1], f[2]};
+    held_[ids[i]] = shown_[ids[i]] = {f[0], f[1], f[2]};
+    drag_k_[ids[i]] = 0.0;
     by_kind_[ids[i]] = {};
     by_kind_[ids[i]][kind_index(pore_water::ForceKind::buoyancy)] = held_[ids[i]];
   }
@@ -131,7 +161,25 @@ const std::array<std::array<double, 3>, 3>& CfdDemCoupling::force_by_kind(int id
 void CfdDemCoupling::advance(long steps) { lammps_.run(steps); }
 
 std::array<double, 3> CfdDemCoupling::fluid_force(int id) const {
-  return static_cast<std::size_t>(id) < held_.size() ? held_[id] : std::array<double, 3>{};
+  return static_cast<std::size_t>(id) < shown_.size() ? shown_[id] : std::array<double, 3>{};
+}
+
+CfdDemCoupling::Motion CfdDemCoupling::motion() const {
+  const int n = lammps_.local_count();
+  double** v = lammps_.velocity();
+  const double* r = lammps_.radius();
+  double sums[2] = {0.0, 0.0}, fastest = 0.0;  // energy, mass; the largest v^2
+  for (int i = 0; i < n; ++i) {
+    const double v2 = v[i][0] * v[i][0] + v[i][1] * v[i][1] + v[i][2] * v[i][2];
+    const double mass = c_.grains.density * std::numbers::pi / 6.0 * std::pow(2.0 * r[i], 3);
+    sums[0] += 0.5 * mass * v2, sums[1] += mass;
+    fastest = std::max(fastest, v2);
+  }
+  if (lammps_.ranks() > 1) {
+    MPI_Allreduce(MPI_IN_PLACE, sums, 2, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
+    MPI_Allreduce(MPI_IN_PLACE, &fastest, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
+  }
+  return {sums[0], std::sqrt(fastest), sums[1]};
 }
 
 double CfdDemCoupling::lost(const double* x) const { return dem::in_cavity(c_, x) ? 1.0 : 0.0; }

@@ -4,6 +4,10 @@
 // Allreduce combines the sums, every rank solves the same flow, and each
 // grain's fluid force is found from the grid and held for the next
 // `interval` DEM steps (added every step through LAMMPS's fix external).
+// With the semi-implicit drag (the default) what is held of the drag is its
+// coefficient K and fluid velocity u, and every step applies K (u - v) at
+// the grain's velocity v of that step: the held force then cannot
+// overshoot however short the drag's relaxation time m / K.
 #pragma once
 
 #include <array>
@@ -43,6 +47,15 @@ class CfdDemCoupling {
   std::array<double, 3> fluid_force(int id) const;
   const std::array<std::array<double, 3>, 3>& force_by_kind(int id) const;
   double coupling_seconds() const { return coupling_seconds_; }
+  // The shortest drag relaxation time m / K of this rank's grains at the
+  // last update (s; infinite without a drag).
+  double shortest_relaxation() const { return shortest_relaxation_; }
+  // Collective: the grains' kinetic energy (J, all ranks), the fastest
+  // grain's speed (m/s) and the grains' mass (kg).
+  struct Motion {
+    double energy = 0.0, fastest = 0.0, mass = 0.0;
+  };
+  Motion motion() const;
   // 1 for a grain that has left the soil region (its centre in the cavity), else 0.
   double lost(const double* x) const;
 
@@ -51,10 +64,15 @@ class CfdDemCoupling {
   dem::LammpsSession& lammps_;
   pore_water::FluidGrid grid_;
   std::vector<std::unique_ptr<pore_water::FluidForce>> forces_;
-  std::vector<std::array<double, 3>> held_;                    // by grain id
+  std::vector<std::array<double, 3>> held_;    // by grain id: applied as is every step
+  std::vector<std::array<double, 3>> shown_;   // by grain id: the whole force at the update
+  std::vector<double> drag_k_;                 // by grain id: K of a semi-implicit drag (N s/m)
+  std::vector<std::array<double, 3>> drag_u_;  // by grain id: its fluid velocity (m/s)
+  double shortest_relaxation_ = 0.0;
   std::vector<std::array<std::array<double, 3>, 3>> by_kind_;  // by grain id
   double coupling_seconds_ = 0.0;
-  void size_by_id();  // held_ and by_kind_ reach the largest grain id (once: ids are never reused)
+  void apply(int n, const int* ids, double** force) const;  // every DEM step
+  void size_by_id();  // the by-id arrays reach the largest grain id (once: ids are never reused)
 };
 
 // The fluid grid's faces for a project: the flow's inflow and outflow, or

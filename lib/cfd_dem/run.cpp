@@ -26,6 +26,7 @@
 #include "cfd_dem/results.hpp"
 #include "cfd_dem/setup.hpp"
 #include "cfd_dem/soil.hpp"
+#include "cfd_dem/stability.hpp"
 
 namespace frostwall::cfd_dem {
 
@@ -147,7 +148,7 @@ struct FlowRecord {
 // The coupled steps to the end time: a sample 200 times, the snapshots on
 // their times, and the grains that leave counted after every chunk.
 void run_flow(const project::Project& p, dem::LammpsSession& lammps, CfdDemCoupling& coupling, const SoilWatch& soil,
-              CavityWatch& cavity, double dt, int interval, long total_steps, const fs::path& out,
+              CavityWatch& cavity, StabilityWatch& stability, double dt, long total_steps, const fs::path& out,
               const std::function<void(double, double)>& progress, FlowRecord& rec) {
   const auto& c = *p.cfd_dem;
   const bool root = lammps.rank() == 0;
@@ -189,7 +190,7 @@ void run_flow(const project::Project& p, dem::LammpsSession& lammps, CfdDemCoupl
     }
     if (progress && root) progress(std::min(t, p.time.end), p.time.end);
     if (last) break;
-    long steps = std::min<long>(interval, total_steps - step);
+    long steps = std::min<long>(stability.interval(), total_steps - step);
     // A snapshot lands on its time: the chunk before it is cut short.
     if (next_snapshot < snapshots.size()) {
       const long to_snapshot = std::lround(std::ceil((snapshots[next_snapshot] - t) / dt - 1e-9));
@@ -205,17 +206,19 @@ void run_flow(const project::Project& p, dem::LammpsSession& lammps, CfdDemCoupl
     else cavity.observe();
     rec.lost_outflow += static_cast<double>(before - after_run);
     rec.lost_cavity += static_cast<double>(after_run - lammps.grain_count());
+    const double t_end = step * dt;
+    stability.check(t_end, coupling, next_sample < samples.size() && t_end >= samples[next_sample] - 0.5 * dt);
   }
 }
 
-// The set-up as LAMMPS input (runs and the cache's write_data left out):
+// The set-up as LAMMPS input (runs and the cache's write_restart left out):
 // `lmp -in dem_commands.txt` rebuilds the assembly from this directory's
 // working directory.
 std::string dem_commands(const dem::LammpsSession& lammps, const project::CfdDem& c, int interval, long total_steps) {
   std::string commands =
       fmt::format("# frostwall {}: the LAMMPS commands of this run's grain assembly\n", FROSTWALL_VERSION);
   for (const auto& line : lammps.commands())
-    if (!line.starts_with("run ") && !line.starts_with("write_data ") && line != dem::delete_in_cavity)
+    if (!line.starts_with("run ") && !line.starts_with("write_restart ") && line != dem::delete_in_cavity)
       commands += line + "\n";
   commands +=
       fmt::format("# then, every {} steps: the fluid grid is solved and each grain's fluid force set\n"
@@ -256,6 +259,9 @@ void run_cfd_dem(const project::Project& p, const project::RunOptions& options) 
   if (root && !options.project_text.empty()) io::write_text_file(out / "project.json", options.project_text);
   const GrainSetup setup = set_up_grains(p, lammps, grains, out, dt, settle_interval, note);
   CfdDemCoupling coupling(c, lammps);
+  // A cached packing continues as it was settled: its fluid forces are in
+  // place before LAMMPS computes the first forces, which the first step uses.
+  if (setup.cached) coupling.update(c.flow ? c.flow->velocity_at(0.0) : 0.0);
   lammps.command("run 0 post no");  // forces, neighbour lists and computes set up before anything reads them
   note(fmt::format("cfd-dem: {} grains on {} rank(s), DEM step {:.3g} s, fluid every {} steps", lammps.grain_count(),
                    lammps.ranks(), dt, interval));
@@ -276,12 +282,14 @@ void run_cfd_dem(const project::Project& p, const project::RunOptions& options) 
   CavityWatch cavity(c, lammps);
   cavity.observe();  // none as settled: the wall held the void open
   const long total_steps = std::max(1L, std::lround(p.time.end / dt));
-  run_flow(p, lammps, coupling, soil, cavity, dt, interval, total_steps, out, options.progress, rec);
+  StabilityWatch stability(c, dt, interval);
+  run_flow(p, lammps, coupling, soil, cavity, stability, dt, total_steps, out, options.progress, rec);
 
   const auto now = std::chrono::steady_clock::now();
   const double wall = std::chrono::duration<double>(now - wall_start).count();
   const double flow_wall = std::chrono::duration<double>(now - flow_start).count();
   const double coupling_seconds = coupling.coupling_seconds() - coupling_before;
+  const json stability_summary = stability.summary(coupling);  // collective
   if (!root) return;
   if (p.output.vtk) {
     io::write_pvd(out / "grains.pvd", rec.grain_pvd);
@@ -310,6 +318,7 @@ void run_cfd_dem(const project::Project& p, const project::RunOptions& options) 
       {"coupling_seconds", coupling_seconds},
       {"coupling_share", flow_wall > 0 ? coupling_seconds / flow_wall : 0.0}};
   auto summary = rec.results.summary(facts);
+  summary["stability"] = stability_summary;
   summary["soil"] =
       rec.soil_record.summary(packing_regime(c, std::max(0.0, rec.start_volume)), soil.bins(), soil.initial_surface());
   if (c.heap)

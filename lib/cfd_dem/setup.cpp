@@ -33,17 +33,16 @@ GrainSetup set_up_grains(const project::Project& p, dem::LammpsSession& lammps, 
   auto contact = dem::dem_contact(c);
   const bool settling_here = setup.settle && !setup.cached;
   if (settling_here && c.grains.settle_friction) contact.friction = *c.grains.settle_friction;
-  // The packing's geometry and velocities come back from the cache, not
-  // its contacts' tangential springs: LAMMPS 2021 restarts of this pair
-  // style with its histories threw the grains apart here (lost atoms at
-  // the first step), so the cache is a data file and the springs start
-  // unloaded (the bed then moves by some 1e-4 of its length).
+  // The cache is a LAMMPS restart file: the packing's geometry, velocities
+  // and spins, and its contacts' tangential and rolling springs, which the
+  // same pair style and walls (same fix ids) below pick up again.
   const auto box = setup.cached ? dem::dem_box(c) : dem::settling_box(c);
-  for (const auto& s : dem::setup_commands(box, project::gravity_axis(c))) lammps.command(s);
   if (setup.cached) {
     note("packing: settled grains read from the cache " + setup.cache.string());
-    lammps.command(dem::read_data_command(setup.cache.string()));
+    for (const auto& s : dem::restart_setup_commands(project::gravity_axis(c))) lammps.command(s);
+    lammps.command(dem::read_restart_command(setup.cache.string()));
   } else {
+    for (const auto& s : dem::setup_commands(box, project::gravity_axis(c))) lammps.command(s);
     if (lammps.rank() == 0) io::write_text_file(out / "dem_initial.data", dem::data_file(box, grains));
     MPI_Barrier(MPI_COMM_WORLD);
     lammps.command(dem::read_data_command((out / "dem_initial.data").string()));
@@ -99,7 +98,7 @@ void settle_grains(const project::Project& p, dem::LammpsSession& lammps, CfdDem
   const fs::path tmp = setup.cache.string() + fmt::format(".tmp-{}", getpid());
   if (lammps.rank() == 0) fs::create_directories(setup.cache.parent_path());
   MPI_Barrier(MPI_COMM_WORLD);
-  lammps.command(dem::write_data_command(tmp.string()));
+  lammps.command(dem::write_restart_command(tmp.string()));
   if (lammps.rank() == 0) fs::rename(tmp, setup.cache);
   note("packing: settled for " + fmt::format("{:g}", c.grains.settle_time) + " s, cached as " + setup.cache.string());
 }

@@ -17,12 +17,14 @@ std::string contact_model(const Contact& c) {
 
 std::vector<std::string> setup_commands(const Box& box, int settle_axis) {
   auto bc = [&](int k) { return box.periodic[k] ? "p" : "f"; };
-  std::vector<std::string> c = {"units si",
-                                "atom_style sphere",
-                                "atom_modify map array",
-                                fmt::format("boundary {} {} {}", bc(0), bc(1), bc(2)),
-                                "newton off",
-                                "comm_modify vel yes"};
+  std::vector<std::string> c = {"units si", "atom_style sphere", fmt::format("boundary {} {} {}", bc(0), bc(1), bc(2)),
+                                "newton off"};
+  for (auto&& s : restart_setup_commands(settle_axis)) c.push_back(std::move(s));
+  return c;
+}
+
+std::vector<std::string> restart_setup_commands(int settle_axis) {
+  std::vector<std::string> c = {"atom_modify map array", "comm_modify vel yes"};
   auto ranks = [&](int k) { return k == settle_axis ? "1" : "*"; };
   if (settle_axis >= 0 && settle_axis < 3)
     c.push_back(fmt::format("processors {} {} {}", ranks(0), ranks(1), ranks(2)));
@@ -149,6 +151,8 @@ std::string data_file(const Box& box, const std::vector<Grain>& grains) {
 
 std::string read_data_command(const std::string& file) { return "read_data " + file; }
 std::string write_data_command(const std::string& file) { return "write_data " + file + " nocoeff"; }
+std::string read_restart_command(const std::string& file) { return "read_restart " + file; }
+std::string write_restart_command(const std::string& file) { return "write_restart " + file; }
 
 std::vector<std::string> motion_commands(const std::array<double, 3>& g, double timestep, bool held) {
   const double magnitude = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);

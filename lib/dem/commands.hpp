@@ -37,6 +37,9 @@ struct Grain {
 // With a settle_axis (0, 1, 2) the ranks split the box only across it:
 // grains settle along it, and slabs along it would leave ranks empty.
 std::vector<std::string> setup_commands(const Box& box, int settle_axis = -1);
+// What precedes a restart file, which brings its own units, atom style,
+// boundaries and box: the atom map, the ghosts' velocities, the ranks' split.
+std::vector<std::string> restart_setup_commands(int settle_axis = -1);
 // The box and one atom type (when the grains are not read from a file).
 std::vector<std::string> create_box_commands(const Box& box);
 // Neighbour lists: skin (m), steps between the moved-half-the-skin checks,
@@ -66,6 +69,12 @@ std::vector<std::string> grain_commands(const Grain& grain, long id);
 std::string data_file(const Box& box, const std::vector<Grain>& grains);
 std::string read_data_command(const std::string& file);
 std::string write_data_command(const std::string& file);
+// A restart file keeps what a data file loses: the contacts' tangential
+// and rolling springs (the pair's and the walls' per-atom histories).
+// After read_restart the same pair style and walls (same fix ids) pick
+// their histories up again.
+std::string read_restart_command(const std::string& file);
+std::string write_restart_command(const std::string& file);
 // A sphere (centre, radius) the grains are kept out of by a wall while
 // they settle (fix `cavity_wall`), and the commands that take it away.
 std::vector<std::string> cavity_wall_commands(const std::array<double, 3>& centre, double radius,

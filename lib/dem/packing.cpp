@@ -156,6 +156,10 @@ std::filesystem::path packing_cache_file(const project::CfdDem& c, double timest
   if (c.heap) key += " heap container";
   key += fmt::format(" {} {} {} {} {}", c.fluid.density, c.fluid.viscosity, c.fluid.min_porosity, timestep, interval);
   for (const auto& f : c.forces) key += " " + f;
+  // The drag's coupling shapes a packing that settles under the grid (a
+  // settling column feels only buoyancy).
+  if (!has_settling_column(c))
+    key += c.coupling.drag == project::DragCoupling::semi_implicit ? " semi-implicit drag" : " explicit drag";
   std::uint64_t hash = 1469598103934665603ULL;  // FNV-1a
   for (unsigned char ch : key) hash = (hash ^ ch) * 1099511628211ULL;
   std::filesystem::path dir;
@@ -163,7 +167,7 @@ std::filesystem::path packing_cache_file(const project::CfdDem& c, double timest
   else if (const char* x = std::getenv("XDG_CACHE_HOME"); x && *x) dir = std::filesystem::path(x) / "frostwall";
   else if (const char* h = std::getenv("HOME"); h && *h) dir = std::filesystem::path(h) / ".cache" / "frostwall";
   else dir = std::filesystem::temp_directory_path() / "frostwall-cache";
-  return dir / fmt::format("packing-{:016x}.data", hash);
+  return dir / fmt::format("packing-{:016x}.restart", hash);
 }
 
 Box dem_box(const project::CfdDem& c) { return {c.box.low, c.box.high, c.box.periodic}; }

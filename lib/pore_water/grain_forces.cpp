@@ -13,6 +13,21 @@ Vec3 DragForce::force(const Fluid& fluid, const Vec3&, double d, const Vec3& v, 
   return law_->force(fluid, d, s.porosity, s.fluid_velocity - v);
 }
 
+std::optional<LinearDrag> DragForce::linear_drag(const Fluid& fluid, double d, const Vec3& v,
+                                                 const FluidSample& s) const {
+  // The laws' force lies along the slip: K = |F| / |slip|, at a vanishing
+  // slip the limit of the law's creeping-flow branch.
+  constexpr double tiny = 1e-9;  // m/s
+  const Vec3 slip = s.fluid_velocity - v;
+  const double w = slip.norm();
+  const Vec3 probe = w > tiny ? slip : Vec3(tiny, 0.0, 0.0);
+  return LinearDrag{law_->force(fluid, d, s.porosity, probe).norm() / probe.norm(), s.fluid_velocity};
+}
+
+std::optional<LinearDrag> GridDragForce::linear_drag(const Fluid&, double d, const Vec3&, const FluidSample& s) const {
+  return LinearDrag{sphere_volume(d) * s.drag_coefficient, s.drag_velocity};
+}
+
 Vec3 GridDragForce::force(const Fluid&, const Vec3&, double d, const Vec3& v, const FluidSample& s) const {
   return sphere_volume(d) * s.drag_coefficient * (s.drag_velocity - v);
 }

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -16,6 +17,14 @@ namespace frostwall::pore_water {
 
 enum class ForceKind { drag, pressure_gradient, buoyancy };
 
+// A drag written as K (u - v): the coefficient K (N s/m) and the fluid
+// velocity u it pulls the grain towards. Held with the grain's velocity of
+// each DEM step, it is the semi-implicit momentum exchange.
+struct LinearDrag {
+  double coefficient = 0.0;
+  Vec3 velocity = Vec3::Zero();
+};
+
 class FluidForce {
  public:
   virtual ~FluidForce() = default;
@@ -23,6 +32,10 @@ class FluidForce {
   // The force (N) on a grain of diameter d moving at v, where the fluid
   // is as sampled; gravity in m/s2.
   virtual Vec3 force(const Fluid& fluid, const Vec3& gravity, double d, const Vec3& v, const FluidSample& s) const = 0;
+  // A drag's K and u at this slip (force() = K (u - v)); none for the other kinds.
+  virtual std::optional<LinearDrag> linear_drag(const Fluid&, double, const Vec3&, const FluidSample&) const {
+    return std::nullopt;
+  }
 };
 
 // Drag from a drag law on the interstitial slip u_f - v at the local porosity.
@@ -31,6 +44,8 @@ class DragForce final : public FluidForce {
   explicit DragForce(std::unique_ptr<DragLaw> law) : law_(std::move(law)) {}
   ForceKind kind() const override { return ForceKind::drag; }
   Vec3 force(const Fluid& fluid, const Vec3& gravity, double d, const Vec3& v, const FluidSample& s) const override;
+  std::optional<LinearDrag> linear_drag(const Fluid& fluid, double d, const Vec3& v,
+                                        const FluidSample& s) const override;
 
  private:
   std::unique_ptr<DragLaw> law_;
@@ -45,6 +60,8 @@ class GridDragForce final : public FluidForce {
  public:
   ForceKind kind() const override { return ForceKind::drag; }
   Vec3 force(const Fluid& fluid, const Vec3& gravity, double d, const Vec3& v, const FluidSample& s) const override;
+  std::optional<LinearDrag> linear_drag(const Fluid& fluid, double d, const Vec3& v,
+                                        const FluidSample& s) const override;
 };
 
 // -V_p grad p (excess pressure).

@@ -94,9 +94,16 @@ struct FlowSettings {
 // The fluid forces on a grain, by name (lib/pore_water/grain_forces.hpp).
 inline const std::vector<std::string> default_fluid_forces{"difelice_drag", "pressure_gradient", "buoyancy"};
 
+// How the drag between updates is applied: `semi_implicit` holds each
+// grain's drag coefficient K and its fluid velocity u and applies
+// K (u - v) with the grain's velocity v of every DEM step (CFDEMcoupling's
+// implicit momentum exchange); `explicit` holds the force itself.
+enum class DragCoupling { semi_implicit, explicit_force };
+
 struct CouplingSettings {
   std::optional<int> interval;         // DEM steps per fluid update (nullopt: chosen)
   std::optional<double> dem_timestep;  // s (nullopt: 0.2 of the Rayleigh time)
+  DragCoupling drag = DragCoupling::semi_implicit;
 };
 
 // LAMMPS' neighbour lists. The list is always rebuilt once a grain has

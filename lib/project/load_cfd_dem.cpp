@@ -341,9 +341,13 @@ void read_cfd_dem(const Node& root, Project& project) {
       heap.problem("a heap needs gravity along -z");
     c.heap = h;
   }
-  if (const Node cp = root["coupling"]; cp.object({"interval", "dem_timestep"})) {
+  if (const Node cp = root["coupling"]; cp.object({"interval", "dem_timestep", "drag"})) {
     if (const auto k = cp["interval"].count()) c.coupling.interval = *k;
     c.coupling.dem_timestep = cp["dem_timestep"].positive();
+    c.coupling.drag = cp["drag"]
+                          .choice<DragCoupling>("drag coupling", {{"semi_implicit", DragCoupling::semi_implicit},
+                                                                  {"explicit", DragCoupling::explicit_force}})
+                          .value_or(c.coupling.drag);
   }
   if (const Node nb = root["neighbour"]; nb.object({"skin", "every", "bin_size"})) {
     c.neighbour.skin = nb["skin"].positive();
