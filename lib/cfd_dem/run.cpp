@@ -220,12 +220,15 @@ std::string dem_commands(const dem::LammpsSession& lammps, const project::CfdDem
   for (const auto& line : lammps.commands())
     if (!line.starts_with("run ") && !line.starts_with("write_restart ") && line != dem::delete_in_cavity)
       commands += line + "\n";
-  commands +=
-      fmt::format("# then, every {} steps: the fluid grid is solved and each grain's fluid force set\n"
-                  "# (fix {} external, from frostwall), and `run {}` follows; {} steps in all.\n"
-                  "# To run the grains without the water: unfix {}\n{}",
-                  interval, dem::fluid_fix, interval, total_steps, dem::fluid_fix,
-                  c.cavity && c.cavity->drain ? fmt::format("# after every run: {}\n", dem::delete_in_cavity) : "");
+  commands += fmt::format(
+      "# then, every {} steps: the fluid grid is solved and each grain's fluid force set\n"
+      "# (fix {} external, from frostwall; {}), and `run {}` follows; {} steps in all.\n"
+      "# To run the grains without the water: unfix {}\n{}",
+      interval, dem::fluid_fix,
+      c.coupling.drag == project::DragCoupling::semi_implicit ? "the drag as K (u - v) with each step's grain velocity"
+                                                              : "held as a force",
+      interval, total_steps, dem::fluid_fix,
+      c.cavity && c.cavity->drain ? fmt::format("# after every run: {}\n", dem::delete_in_cavity) : "");
   return commands;
 }
 
