@@ -119,6 +119,17 @@ TEST_CASE("leak, scaled: a cached packing continues as the settled one within th
              s["peak_kinetic_energy_J"].get<double>(), s["peak_kinetic_energy_at_s"].get<double>(), mass * 9.81 * 0.1,
              s["fastest_grain_m_s"].get<double>());
   CHECK(s["drag"] == "semi_implicit");
+  // The chosen interval holds the forces for at most half the bed's
+  // relaxation time rho_p / beta met at each update, and never longer than
+  // its cap.
+  CHECK_FALSE(s["interval_steps"]["given"].get<bool>());
+  CHECK(s["held_over_bed_relaxation"].get<double>() <= 0.5 + 1e-9);
+  CHECK(s["interval_steps"]["shortest"].get<int>() <= s["interval_steps"]["longest"].get<int>());
+  fmt::print("  interval {}-{} steps, held at most {:.2f} of the bed's relaxation time ({:.3g} s) and {:.2f} of a "
+             "grain's drag relaxation time\n",
+             s["interval_steps"]["shortest"].get<int>(), s["interval_steps"]["longest"].get<int>(),
+             s["held_over_bed_relaxation"].get<double>(), s["shortest_bed_relaxation_s"].get<double>(),
+             s["held_over_drag_relaxation"].get<double>());
   CHECK(s["peak_kinetic_energy_J"].get<double>() < mass * 9.81 * 0.1);
   CHECK(s["fastest_grain_m_s"].get<double>() < 3.0 * s["speed_bound_m_s"].get<double>());
   CHECK(s["series"].size() > 100);
@@ -182,9 +193,9 @@ TEST_CASE("cfd-dem: a drag held far beyond its relaxation time stops with the di
   // make it (the held pressure gradient and water velocity still lag, so
   // the grains overshoot Stokes' terminal velocity: the chosen interval,
   // not this one, is the accurate one).
-  CHECK(s["held_over_relaxation"].get<double>() > 5.0);
+  CHECK(s["held_over_drag_relaxation"].get<double>() > 5.0);
   const double stokes = (2650.0 - 1000.0) * 9.81 * 0.006 * 0.006 / 18.0;  // m/s, Re well below 1
   fmt::print("viscous settling: held {:.1f} relaxation times; fastest grain {:.3g} m/s (Stokes {:.3g} m/s)\n",
-             s["held_over_relaxation"].get<double>(), s["fastest_grain_m_s"].get<double>(), stokes);
+             s["held_over_drag_relaxation"].get<double>(), s["fastest_grain_m_s"].get<double>(), stokes);
   CHECK(s["fastest_grain_m_s"].get<double>() < std::sqrt(2.0 * 9.81 * 0.06));
 }

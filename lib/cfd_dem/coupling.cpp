@@ -89,7 +89,7 @@ pore_water::SolveReport CfdDemCoupling::update(double inflow_velocity) {
   const pore_water::Fluid fluid{c_.fluid.density, c_.fluid.viscosity};
   const Vec3 g(c_.gravity[0], c_.gravity[1], c_.gravity[2]);
   const bool semi_implicit = c_.coupling.drag == project::DragCoupling::semi_implicit;
-  shortest_relaxation_ = std::numeric_limits<double>::infinity();
+  shortest_relaxation_.fill(std::numeric_limits<double>::infinity());
   for (int i = 0; i < n; ++i) {
     const Vec3 xi(x[i][0], x[i][1], x[i][2]), vi(v[i][0], v[i][1], v[i][2]);
     const auto sample = grid_.sample(xi);
@@ -111,12 +111,19 @@ pore_water::SolveReport CfdDemCoupling::update(double inflow_velocity) {
       }
     }
     const double mass = c_.grains.density * std::numbers::pi / 6.0 * std::pow(2.0 * r[i], 3);
-    if (K > 0.0) shortest_relaxation_ = std::min(shortest_relaxation_, mass / K);
+    if (K > 0.0) shortest_relaxation_[0] = std::min(shortest_relaxation_[0], mass / K);
+    // beta = K_v (1 - eps) / eps^2 with K_v the grid's drag per grain volume.
+    const double eps = sample.porosity;
+    if (sample.drag_coefficient > 0.0 && eps < 1.0)
+      shortest_relaxation_[1] =
+          std::min(shortest_relaxation_[1], c_.grains.density * eps * eps / (sample.drag_coefficient * (1.0 - eps)));
     shown_[id] = total;
     held_[id] = held;
     drag_k_[id] = semi_implicit && K > 0.0 ? K : 0.0;
     for (int k = 0; k < 3; ++k) drag_u_[id][k] = drag_k_[id] > 0.0 ? u[k] / K : 0.0;
   }
+  if (lammps_.ranks() > 1)
+    MPI_Allreduce(MPI_IN_PLACE, shortest_relaxation_.data(), 2, MPI_DOUBLE, MPI_MIN, MPI_COMM_WORLD);
   coupling_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return report;
 }

@@ -47,9 +47,14 @@ class CfdDemCoupling {
   std::array<double, 3> fluid_force(int id) const;
   const std::array<std::array<double, 3>, 3>& force_by_kind(int id) const;
   double coupling_seconds() const { return coupling_seconds_; }
-  // The shortest drag relaxation time m / K of this rank's grains at the
-  // last update (s; infinite without a drag).
-  double shortest_relaxation() const { return shortest_relaxation_; }
+  // The shortest relaxation times among all grains at the last update (s;
+  // infinite without a drag): a grain's own drag, m / K, and the bed's
+  // through the water's resistance, rho_p / beta (beta the grid's Ergun /
+  // Wen-Yu resistance, -grad p = beta U_slip: grains that move together
+  // drive the water through their neighbours' pores, and the held pressure
+  // gradient answers one interval late).
+  double shortest_relaxation() const { return shortest_relaxation_[0]; }
+  double shortest_bed_relaxation() const { return shortest_relaxation_[1]; }
   // Collective: the grains' kinetic energy (J, all ranks), the fastest
   // grain's speed (m/s) and the grains' mass (kg).
   struct Motion {
@@ -68,7 +73,7 @@ class CfdDemCoupling {
   std::vector<std::array<double, 3>> shown_;   // by grain id: the whole force at the update
   std::vector<double> drag_k_;                 // by grain id: K of a semi-implicit drag (N s/m)
   std::vector<std::array<double, 3>> drag_u_;  // by grain id: its fluid velocity (m/s)
-  double shortest_relaxation_ = 0.0;
+  std::array<double, 2> shortest_relaxation_{};
   std::vector<std::array<std::array<double, 3>, 3>> by_kind_;  // by grain id
   double coupling_seconds_ = 0.0;
   void apply(int n, const int* ids, double** force) const;  // every DEM step

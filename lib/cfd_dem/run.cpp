@@ -190,7 +190,7 @@ void run_flow(const project::Project& p, dem::LammpsSession& lammps, CfdDemCoupl
     }
     if (progress && root) progress(std::min(t, p.time.end), p.time.end);
     if (last) break;
-    long steps = std::min<long>(stability.interval(), total_steps - step);
+    long steps = std::min<long>(stability.next_interval(coupling), total_steps - step);
     // A snapshot lands on its time: the chunk before it is cut short.
     if (next_snapshot < snapshots.size()) {
       const long to_snapshot = std::lround(std::ceil((snapshots[next_snapshot] - t) / dt - 1e-9));
