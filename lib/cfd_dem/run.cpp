@@ -68,6 +68,22 @@ void check_cfd_dem_resources(const project::CfdDem& c) {
 
 namespace {
 
+// The output directory checked by rank 0 alone (the check makes and removes
+// it, which ranks doing at once would race over); every rank stops alike.
+void check_output_directory_once(const std::string& directory) {
+  std::string problem;
+  if (dem::world_rank() == 0) try {
+      io::check_output_directory(directory);
+    } catch (const project::ProjectError& e) {
+      problem = e.problems().empty() ? e.what() : e.problems().front();
+    }
+  int size = static_cast<int>(problem.size());
+  MPI_Bcast(&size, 1, MPI_INT, 0, MPI_COMM_WORLD);
+  problem.resize(size);
+  MPI_Bcast(problem.data(), size, MPI_CHAR, 0, MPI_COMM_WORLD);
+  if (size > 0) throw project::ProjectError({problem});
+}
+
 // Every rank's grains gathered on rank 0, by id: the snapshot's grain file.
 void write_grains(const fs::path& file, const io::Labels& labels, dem::LammpsSession& lammps,
                   const CfdDemCoupling& coupling, const SoilWatch& soil, const CavityWatch& cavity) {
@@ -239,7 +255,7 @@ void run_cfd_dem(const project::Project& p, const project::RunOptions& options) 
   const auto& c = *p.cfd_dem;
   check_cfd_dem_resources(c);
   const auto grains = dem::initial_grains(c);  // refuses a count that does not fit
-  io::check_output_directory(p.output.directory);
+  check_output_directory_once(p.output.directory);
   const double dt = dem_timestep(c);
   const int interval = coupling_interval(c, dt, true);
   // Settling is in still water at the interval chosen for it, whatever the
