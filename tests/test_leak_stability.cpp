@@ -119,11 +119,11 @@ TEST_CASE("leak, scaled: a cached packing continues as the settled one within th
              s["peak_kinetic_energy_J"].get<double>(), s["peak_kinetic_energy_at_s"].get<double>(), mass * 9.81 * 0.1,
              s["fastest_grain_m_s"].get<double>());
   CHECK(s["drag"] == "semi_implicit");
-  // The chosen interval holds the forces for at most half the bed's
+  // The chosen interval holds the forces for at most a fifth of the bed's
   // relaxation time rho_p / beta met at each update, and never longer than
   // its cap.
   CHECK_FALSE(s["interval_steps"]["given"].get<bool>());
-  CHECK(s["held_over_bed_relaxation"].get<double>() <= 0.5 + 1e-9);
+  CHECK(s["held_over_bed_relaxation"].get<double>() <= 0.2 + 1e-9);
   CHECK(s["interval_steps"]["shortest"].get<int>() <= s["interval_steps"]["longest"].get<int>());
   fmt::print("  interval {}-{} steps, held at most {:.2f} of the bed's relaxation time ({:.3g} s) and {:.2f} of a "
              "grain's drag relaxation time\n",

@@ -286,6 +286,12 @@ void run_cfd_dem(const project::Project& p, const project::RunOptions& options) 
                    lammps.ranks(), dt, interval));
 
   settle_grains(p, lammps, coupling, setup, dt, settle_interval, options.progress, note);
+  if (setup.settle && !setup.cached) {
+    // Settled here: the flow starts as it would from the cache just written
+    // (the fluid forces in place, then LAMMPS's set-up), so both starts agree.
+    coupling.update(c.flow ? c.flow->velocity_at(0.0) : 0.0);
+    lammps.command("run 0 post no");
+  }
   if (c.heap) {  // the container's sides lifted off the settled block
     const auto [low, high] = dem::heap_container(c);
     for (const auto& s : dem::lifted_block_commands(low, high, dem::dem_contact(c), c.heap->lift_speed, lammps.time()))

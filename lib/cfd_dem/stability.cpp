@@ -31,13 +31,19 @@ StabilityWatch::StabilityWatch(const project::CfdDem& c, double dt, int interval
   fall_speed_ = std::sqrt(2.0 * g * height);
 }
 
+// The share of the relaxation time a chosen interval may hold the forces
+// for. rho_p / beta estimates the bed's collective time only to its order
+// (it leaves out the porosity factors of the bed moving as a whole); a
+// fifth of it keeps the hold well inside the explicit limit of two.
+constexpr double bed_share = 0.2;
+
 int StabilityWatch::next_interval(const CfdDemCoupling& coupling) {
   const bool explicit_drag = c_.coupling.drag == project::DragCoupling::explicit_force;
   const double drag = coupling.shortest_relaxation(), bed = coupling.shortest_bed_relaxation();
   int steps = interval_;
   if (!given_) {
     const double limit = explicit_drag ? std::min(drag, bed) : bed;
-    if (std::isfinite(limit)) steps = std::clamp(static_cast<int>(0.5 * limit / dt_), 1, interval_);
+    if (std::isfinite(limit)) steps = std::clamp(static_cast<int>(bed_share * limit / dt_), 1, interval_);
   }
   ++updates_;
   last_ = steps;
@@ -92,7 +98,7 @@ void StabilityWatch::check(double t, const CfdDemCoupling& coupling, bool sample
         "the drag is held for {} steps ({:.3g} s), {:.2f} of the shortest drag relaxation time m/K ({:.3g} s): "
         "use \"coupling.drag\": \"semi_implicit\" or a coupling.interval below {}",
         last_, held, held / relaxation, relaxation, below(relaxation));
-  else if (std::isfinite(bed) && held > 0.5 * bed)
+  else if (std::isfinite(bed) && held > bed_share * bed)
     cause = fmt::format(
         "the pressure gradient is held for {} steps ({:.3g} s), {:.2f} of the bed's relaxation time rho_p/beta "
         "({:.3g} s): a coupling.interval below {}, or none (chosen)",

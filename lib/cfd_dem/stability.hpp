@@ -33,10 +33,9 @@ class StabilityWatch {
   // `interval`: coupling.interval as given, else the chosen cap.
   StabilityWatch(const project::CfdDem& c, double dt, int interval);
   // DEM steps until the next fluid update: coupling.interval as given;
-  // chosen, at most the cap and half the shortest relaxation time the held
-  // forces answer to (the bed's, and a grain's own drag when it is held
-  // explicitly), which keeps the held terms well inside their explicit
-  // limit of two relaxation times.
+  // chosen, at most the cap and a fifth of the shortest relaxation time the
+  // held forces answer to (the bed's, and a grain's own drag when it is
+  // held explicitly).
   int next_interval(const CfdDemCoupling& coupling);
   // Collective. Throws UnstableRun naming the time, the energy, the
   // fastest grain, the bound and the likely cause; else keeps the peak,
