@@ -169,9 +169,10 @@ json viscous_settling(const std::string& drag) {
 
 }  // namespace
 
-TEST_CASE("cfd-dem: a drag held far beyond its relaxation time stops with the diagnosis, exit 1 and no summary; the "
-          "semi-implicit drag runs it",
-          "[cfd_dem][stability]") {
+TEST_CASE(
+    "cfd-dem: a drag held far beyond its relaxation time stops with the diagnosis, exit 1 and no summary, and the "
+    "semi-implicit drag runs it",
+    "[cfd_dem][stability]") {
   frostwall::test::TempDir cache;
   const Outcome held = run_with_cache(viscous_settling("explicit"), cache.path);
   INFO(held.said);

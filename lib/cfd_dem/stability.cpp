@@ -91,7 +91,7 @@ void StabilityWatch::check(double t, const CfdDemCoupling& coupling, bool sample
   const double relaxation = coupling.shortest_relaxation(), bed = coupling.shortest_bed_relaxation();
   const double held = last_ * dt_;
   const bool explicit_drag = c_.coupling.drag == project::DragCoupling::explicit_force;
-  auto below = [&](double tau) { return std::max(1, static_cast<int>(0.25 * tau / dt_)); };
+  auto below = [&](double tau) { return std::max(1, static_cast<int>(bed_share * tau / dt_)); };
   std::string cause;
   if (explicit_drag && std::isfinite(relaxation) && held > 0.5 * relaxation)
     cause = fmt::format(
