@@ -150,7 +150,6 @@ std::string data_file(const Box& box, const std::vector<Grain>& grains) {
 }
 
 std::string read_data_command(const std::string& file) { return "read_data " + file; }
-std::string write_data_command(const std::string& file) { return "write_data " + file + " nocoeff"; }
 std::string read_restart_command(const std::string& file) { return "read_restart " + file; }
 std::string write_restart_command(const std::string& file) { return "write_restart " + file; }
 

@@ -68,7 +68,6 @@ std::vector<std::string> grain_commands(const Grain& grain, long id);
 // A LAMMPS data file's text (atom_style sphere) holding these grains, ids 1..n.
 std::string data_file(const Box& box, const std::vector<Grain>& grains);
 std::string read_data_command(const std::string& file);
-std::string write_data_command(const std::string& file);
 // A restart file keeps what a data file loses: the contacts' tangential
 // and rolling springs (the pair's and the walls' per-atom histories).
 // After read_restart the same pair style and walls (same fix ids) pick
