@@ -11,6 +11,7 @@ point A's grains), and which of the paper's trends the runs reproduce.
   python3 bench/leak_sweep.py                       # the four velocities, 1 s each
   python3 bench/leak_sweep.py --velocities 0.1 --end 0.2
   python3 bench/leak_sweep.py --drain               # grains that fall in deleted (a leak into a pipe)
+  python3 bench/leak_sweep.py --soften 5.3          # Young's modulus / 5.3, the DEM step x 2.3 (bench/leak_stiffness.py)
   python3 bench/leak_sweep.py --reuse DIR           # only the tables, from the runs in DIR
 """
 import argparse, json, math, os, subprocess, tempfile, time
@@ -24,9 +25,11 @@ def norm(v):
     return math.sqrt(sum(x * x for x in v))
 
 
-def run(velocity, end, ranks, drain, work):
+def run(velocity, end, ranks, drain, soften, work):
     with open(os.path.join(ROOT, "projects", "leak_cavity.json")) as f:
         p = json.load(f)
+    p["grains"]["youngs_modulus"] /= soften
+    p["coupling"]["dem_timestep"] *= math.sqrt(soften)
     p["flow"]["darcy_velocity"] = velocity
     p["time"] = {"end": end, "unit": "s", "snapshots": [end / 4 * k for k in range(1, 5)]}
     directory = os.path.join(work, f"U{velocity:g}")
@@ -46,14 +49,24 @@ def run(velocity, end, ranks, drain, work):
     return directory
 
 
+def interval(stability):
+    steps = stability.get("interval_steps")
+    if not steps:
+        return "-"
+    if steps["given"]:
+        return f"{steps['longest']} (given)"
+    return f"{steps['shortest']}-{steps['longest']}"
+
+
 def table(directories):
     rows = {}
     for velocity, directory in directories:
         with open(os.path.join(directory, "summary.json")) as f:
             rows[velocity] = json.load(f)
     print("\n| U (m/s) | flow wall s | DEM steps | lost to the cavity | in it at the end | the void holds | "
-          "zone porosity (end) | crater depth, width, slope | trough m3 | slip surface | settlement max |")
-    print("|---|---|---|---|---|---|---|---|---|---|---|")
+          "zone porosity (end) | crater depth, width, slope | trough m3 | slip surface | settlement max | "
+          "interval steps | peak KE J (at s) |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|---|")
     for u, s in rows.items():
         soil = s["soil"]
         end = soil["series"][-1]
@@ -64,7 +77,8 @@ def table(directories):
               f"{soil.get('cavity', {}).get('capacity_grains', float('nan')):.0f} | {end['zone_porosity']:.3f} | "
               f"{fmt(cr.get('depth_m'), '{:.3f}')} m, {fmt(cr.get('width_m'), '{:.3f}')} m, {fmt(cr.get('slope_deg'), '{:.1f}')} deg | "
               f"{fmt(cr.get('volume_m3'), '{:.2e}')} | {fmt(soil.get('slip_surface_angle_deg'), '{:.0f}')} deg | "
-              f"{1e3 * end['settlement_max_m']:.1f} mm |")
+              f"{1e3 * end['settlement_max_m']:.1f} mm | {interval(s['stability'])} | "
+              f"{s['stability']['peak_kinetic_energy_J']:.3g} ({s['stability']['peak_kinetic_energy_at_s']:.2f}) |")
     print("\nThe paper's series at the output times (every 0.1 s):")
     print("\n| U (m/s) | t (s) | loss rate | contact change | zone porosity | dP inflow to A (Pa) | drag at A (N) | "
           "pressure-gradient force at A (N) | buoyancy at A (N) |")
@@ -108,6 +122,7 @@ def main():
     parser.add_argument("--end", type=float, default=1.0)
     parser.add_argument("--ranks", type=int, default=2)
     parser.add_argument("--drain", action="store_true")
+    parser.add_argument("--soften", type=float, default=1.0, help="divide Young's modulus by this, the step grows as its root")
     parser.add_argument("--reuse", help="a directory holding U<velocity>/ runs: tables only")
     args = parser.parse_args()
     if args.reuse:
@@ -115,7 +130,7 @@ def main():
     else:
         work = tempfile.mkdtemp(prefix="frostwall-leak-sweep-")
         print(f"runs in {work}", flush=True)
-        dirs = [(u, run(u, args.end, args.ranks, args.drain, work)) for u in args.velocities]
+        dirs = [(u, run(u, args.end, args.ranks, args.drain, args.soften, work)) for u in args.velocities]
         dirs = [(u, d) for u, d in dirs if d]
     table(dirs)
 

@@ -1,0 +1,107 @@
+#!/usr/bin/env python3
+"""The CFD-DEM paper's model-size check: the leak case (projects/leak_cavity.json,
+grains of 4 mm over a 5 cm cavity that keeps what falls in) in cubes of 15,
+20, 30 and 40 cm faces, the cavity in the middle, the grains as many as fill
+the cube at the 20 cm case's packing, the same inflow velocity. Every run on
+2 MPI ranks, its packing cached in ~/.cache/frostwall. Prints, per face, the
+wall time, the loss, the crater and the settlement at the end, and the loss
+rate over time.
+
+The grains grow as the cube: 49 000 at 15 cm, 116 000 at 20, 392 000 at 30
+and 929 000 at 40, and the settling and the flow cost grow with them (at 20
+cm about 17 minutes of settling and 36 of flow for 1 s on 2 ranks of this
+machine).
+
+  python3 bench/leak_size.py                          # 15-40 cm, 1 s each
+  python3 bench/leak_size.py --faces 0.15 0.2 --end 0.3
+  python3 bench/leak_size.py --reuse DIR --faces 0.15 0.2
+"""
+import argparse, json, math, os, subprocess, tempfile, time
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+EXE = os.path.join(ROOT, "build", "app", "frostwall")
+
+
+def project(face, velocity, end):
+    with open(os.path.join(ROOT, "projects", "leak_cavity.json")) as f:
+        p = json.load(f)
+    base = p["box"]["high"][0]
+    radius = p["cavity"]["radius"]
+    solid = lambda l: l ** 3 - 4 / 3 * math.pi * radius ** 3
+    g = p["grains"]
+    g["count"] = round(g["count"] * solid(face) / solid(base))
+    g["fill"] = {"low": [0, 0, 0], "high": [face, face, face * g["fill"]["high"][2] / base]}
+    p["box"] = {"low": [0, 0, 0], "high": [face] * 3}
+    p["cavity"]["centre"] = [face / 2] * 3
+    p["point_a"] = [face / 2, face / 2, face - 0.04]
+    p["flow"]["darcy_velocity"] = velocity
+    p["time"] = {"end": end, "unit": "s", "snapshots": [end / 2, end]}
+    return p
+
+
+def run(face, velocity, end, ranks, work):
+    directory = os.path.join(work, f"L{face:g}")
+    p = project(face, velocity, end)
+    p["output"] = {"directory": directory, "vtk": True, "report": True}
+    path = directory + ".json"
+    with open(path, "w") as f:
+        json.dump(p, f)
+    start = time.perf_counter()
+    done = subprocess.run(["mpirun", "--allow-run-as-root", "-np", str(ranks), EXE, "run", path],
+                          stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True, env=dict(os.environ, CI="1"))
+    print(f"L = {face:g} m ({p['grains']['count']} grains): {time.perf_counter() - start:.0f} s in all, "
+          f"exit status {done.returncode}", flush=True)
+    if done.returncode != 0:
+        print("  " + "".join(line for line in done.stderr.splitlines(True) if "frostwall" in line).strip(), flush=True)
+        return None
+    return directory
+
+
+def table(directories):
+    print("\n| face (m) | grains | flow wall s | lost to the cavity | lost / void capacity | zone porosity (end) | "
+          "crater depth, width, slope | settlement max | peak KE J |")
+    print("|---|---|---|---|---|---|---|---|---|")
+    rates = {}
+    for face, directory in directories:
+        with open(os.path.join(directory, "summary.json")) as f:
+            s = json.load(f)
+        soil, end = s["soil"], s["soil"]["series"][-1]
+        cr = soil.get("crater", {})
+        fmt = lambda v, f: (f.format(v) if isinstance(v, (int, float)) else "-")
+        print(f"| {face:g} | {s['grains']} | {s['run_wall_time_s']:.0f} | {soil['lost_to_cavity']:.0f} | "
+              f"{soil['lost_to_cavity'] / soil['cavity']['capacity_grains']:.2f} | {end['zone_porosity']:.3f} | "
+              f"{fmt(cr.get('depth_m'), '{:.3f}')} m, {fmt(cr.get('width_m'), '{:.3f}')} m, "
+              f"{fmt(cr.get('slope_deg'), '{:.1f}')} deg | {1e3 * end['settlement_max_m']:.1f} mm | "
+              f"{s['stability']['peak_kinetic_energy_J']:.3g} |")
+        rates[face] = [(r["time"], r.get("loss_rate", 0.0)) for r in soil["series"]]
+    print("\nThe loss rate (grains lost in a period over the count at the previous period) at every 0.1 s:\n")
+    faces = list(rates)
+    print("| t (s) | " + " | ".join(f"{f:g} m" for f in faces) + " |")
+    print("|---|" + "---|" * len(faces))
+    times = [t for t, _ in rates[faces[0]]] if faces else []
+    for k, t in enumerate(times):
+        if k % 20 == 0 or k == len(times) - 1:
+            print(f"| {t:.2f} | " + " | ".join(
+                f"{rates[f][k][1]:.2e}" if k < len(rates[f]) else "-" for f in faces) + " |")
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--faces", type=float, nargs="+", default=[0.15, 0.2, 0.3, 0.4])
+    parser.add_argument("--velocity", type=float, default=0.1)
+    parser.add_argument("--end", type=float, default=1.0)
+    parser.add_argument("--ranks", type=int, default=2)
+    parser.add_argument("--reuse", help="a directory holding L<face>/ runs: tables only")
+    args = parser.parse_args()
+    if args.reuse:
+        dirs = [(f, os.path.join(args.reuse, f"L{f:g}")) for f in args.faces]
+    else:
+        work = tempfile.mkdtemp(prefix="frostwall-leak-size-")
+        print(f"runs in {work}", flush=True)
+        dirs = [(f, run(f, args.velocity, args.end, args.ranks, work)) for f in args.faces]
+        dirs = [(f, d) for f, d in dirs if d]
+    table(dirs)
+
+
+if __name__ == "__main__":
+    main()
