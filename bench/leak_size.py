@@ -1,16 +1,19 @@
 #!/usr/bin/env python3
 """The CFD-DEM paper's model-size check: the leak case (projects/leak_cavity.json,
-grains of 4 mm over a 5 cm cavity that keeps what falls in) in cubes of 15,
-20, 30 and 40 cm faces, the cavity in the middle, the grains as many as fill
-the cube at the 20 cm case's packing, the same inflow velocity. Every run on
-2 MPI ranks, its packing cached in ~/.cache/frostwall. Prints, per face, the
-wall time, the loss, the crater and the settlement at the end, and the loss
-rate over time.
+grains of 4 mm over a 5 cm cavity that keeps what falls in) with inflow faces
+of 15, 20, 30 and 40 cm square, the flow path still 20 cm long. The cavity
+keeps its place under the surface (its crown 5 cm down, midway across the
+face and along the flow) and point A its 4 cm depth over it; the grains are
+as many as fill the box at the 20 cm case's packing; the inflow velocity is
+the same. Every run on 2 MPI ranks, its packing cached in ~/.cache/frostwall.
+Prints, per face, the wall time, the loss, the crater and the settlement at
+the end, and the loss rate over time.
 
-The grains grow as the cube: 49 000 at 15 cm, 116 000 at 20, 392 000 at 30
-and 929 000 at 40, and the settling and the flow cost grow with them (at 20
-cm about 17 minutes of settling and 36 of flow for 1 s on 2 ranks of this
-machine).
+The grains grow as the face: 62 000 at 15 cm, 116 000 at 20, 271 000 at 30
+and 488 000 at 40, and the settling and the flow cost grow with them (at
+20 cm about 17 minutes of settling and 36 of flow for 1 s on 2 ranks of this
+machine). At 15 cm the cavity would touch the floor: it stands a grain above
+it, its crown 4.6 cm down instead of 5.
 
   python3 bench/leak_size.py                          # 15-40 cm, 1 s each
   python3 bench/leak_size.py --faces 0.15 0.2 --end 0.3
@@ -25,15 +28,16 @@ EXE = os.path.join(ROOT, "build", "app", "frostwall")
 def project(face, velocity, end):
     with open(os.path.join(ROOT, "projects", "leak_cavity.json")) as f:
         p = json.load(f)
-    base = p["box"]["high"][0]
-    radius = p["cavity"]["radius"]
-    solid = lambda l: l ** 3 - 4 / 3 * math.pi * radius ** 3
+    (x0, y0, z0), length = p["box"]["high"], p["box"]["high"][1]
+    radius, depth = p["cavity"]["radius"], z0 - p["cavity"]["centre"][2]
+    solid = lambda l: l * length * l - 4 / 3 * math.pi * radius ** 3
     g = p["grains"]
-    g["count"] = round(g["count"] * solid(face) / solid(base))
-    g["fill"] = {"low": [0, 0, 0], "high": [face, face, face * g["fill"]["high"][2] / base]}
-    p["box"] = {"low": [0, 0, 0], "high": [face] * 3}
-    p["cavity"]["centre"] = [face / 2] * 3
-    p["point_a"] = [face / 2, face / 2, face - 0.04]
+    g["count"] = round(g["count"] * solid(face) / solid(x0))
+    g["fill"] = {"low": [0, 0, 0], "high": [face, length, face * g["fill"]["high"][2] / z0]}
+    p["box"] = {"low": [0, 0, 0], "high": [face, length, face]}
+    # The crown as deep as at 20 cm, but the cavity a grain clear of the floor.
+    p["cavity"]["centre"] = [face / 2, length / 2, max(face - depth, radius + g["diameter"])]
+    p["point_a"] = [face / 2, length / 2, face - 0.04]
     p["flow"]["darcy_velocity"] = velocity
     p["time"] = {"end": end, "unit": "s", "snapshots": [end / 2, end]}
     return p
