@@ -19,16 +19,17 @@ it, its crown 4.6 cm down instead of 5.
   python3 bench/leak_size.py --faces 0.15 0.2 --end 0.3
   python3 bench/leak_size.py --reuse DIR --faces 0.15 0.2
 """
-import argparse, json, math, os, subprocess, tempfile, time
+import argparse, json, math, os
+
+from leak_sweep import run_all, run_project
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-EXE = os.path.join(ROOT, "build", "app", "frostwall")
 
 
 def project(face, velocity, end):
     with open(os.path.join(ROOT, "projects", "leak_cavity.json")) as f:
         p = json.load(f)
-    (x0, y0, z0), length = p["box"]["high"], p["box"]["high"][1]
+    x0, length, z0 = p["box"]["high"]
     radius, depth = p["cavity"]["radius"], z0 - p["cavity"]["centre"][2]
     solid = lambda l: l * length * l - 4 / 3 * math.pi * radius ** 3
     g = p["grains"]
@@ -47,18 +48,7 @@ def run(face, velocity, end, ranks, work):
     directory = os.path.join(work, f"L{face:g}")
     p = project(face, velocity, end)
     p["output"] = {"directory": directory, "vtk": True, "report": True}
-    path = directory + ".json"
-    with open(path, "w") as f:
-        json.dump(p, f)
-    start = time.perf_counter()
-    done = subprocess.run(["mpirun", "--allow-run-as-root", "-np", str(ranks), EXE, "run", path],
-                          stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True, env=dict(os.environ, CI="1"))
-    print(f"L = {face:g} m ({p['grains']['count']} grains): {time.perf_counter() - start:.0f} s in all, "
-          f"exit status {done.returncode}", flush=True)
-    if done.returncode != 0:
-        print("  " + "".join(line for line in done.stderr.splitlines(True) if "frostwall" in line).strip(), flush=True)
-        return None
-    return directory
+    return run_project(p, directory, ranks, f"L = {face:g} m ({p['grains']['count']} grains)")
 
 
 def table(directories):
@@ -97,13 +87,8 @@ def main():
     parser.add_argument("--ranks", type=int, default=2)
     parser.add_argument("--reuse", help="a directory holding L<face>/ runs: tables only")
     args = parser.parse_args()
-    if args.reuse:
-        dirs = [(f, os.path.join(args.reuse, f"L{f:g}")) for f in args.faces]
-    else:
-        work = tempfile.mkdtemp(prefix="frostwall-leak-size-")
-        print(f"runs in {work}", flush=True)
-        dirs = [(f, run(f, args.velocity, args.end, args.ranks, work)) for f in args.faces]
-        dirs = [(f, d) for f, d in dirs if d]
+    dirs = run_all(args.faces, lambda f: f"L{f:g}", args.reuse, "frostwall-leak-size-",
+                   lambda f, work: run(f, args.velocity, args.end, args.ranks, work))
     table(dirs)
 
 

@@ -102,7 +102,7 @@ def measures(case, s):
             "peak KE J": s["stability"]["peak_kinetic_energy_J"]}
 
 
-def table(case, results):
+def table(case, results, softenings):
     rows = [(seed, s2, wall, summary) for c, seed, s2, wall, summary in results if c == case and summary]
     if not rows:
         return
@@ -112,7 +112,7 @@ def table(case, results):
         f"{n}: mean, spread, change" for n in names) + " |")
     print("|---|---|---|---|" + "---|" * len(names))
     stiff = {}
-    for s2 in SOFTENINGS:
+    for s2 in softenings:
         mine = [r for r in rows if r[1] == s2]
         if not mine:
             continue
@@ -134,14 +134,13 @@ def main():
     parser.add_argument("--softenings", type=float, nargs="+", default=SOFTENINGS)
     parser.add_argument("--jobs", type=int, default=2)
     args = parser.parse_args()
-    SOFTENINGS[:] = args.softenings
     work = tempfile.mkdtemp(prefix="frostwall-stiffness-")
     print(f"runs in {work}", flush=True)
-    jobs = [(c, seed, s2) for c in args.cases for s2 in SOFTENINGS for seed in args.seeds]
+    jobs = [(c, seed, s2) for c in args.cases for s2 in args.softenings for seed in args.seeds]
     with concurrent.futures.ThreadPoolExecutor(args.jobs) as pool:
         results = list(pool.map(lambda j: run(*j, work), jobs))
     for case in args.cases:
-        table(case, results)
+        table(case, results, args.softenings)
 
 
 if __name__ == "__main__":

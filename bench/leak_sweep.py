@@ -36,17 +36,32 @@ def run(velocity, end, ranks, drain, soften, work):
     p["output"] = {"directory": directory, "vtk": True, "report": True}
     if drain:
         p["cavity"]["drain"] = True
-    path = os.path.join(work, f"U{velocity:g}.json")
+    return run_project(p, directory, ranks, f"U = {velocity:g} m/s")
+
+
+def run_project(p, directory, ranks, label):
+    """Runs project p (its output in directory) on `ranks` MPI ranks; directory, or None if it failed."""
+    path = directory + ".json"
     with open(path, "w") as f:
         json.dump(p, f)
     start = time.perf_counter()
     done = subprocess.run(["mpirun", "--allow-run-as-root", "-np", str(ranks), EXE, "run", path],
                           stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True, env=dict(os.environ, CI="1"))
-    print(f"U = {velocity:g} m/s: {time.perf_counter() - start:.0f} s in all, exit status {done.returncode}", flush=True)
+    print(f"{label}: {time.perf_counter() - start:.0f} s in all, exit status {done.returncode}", flush=True)
     if done.returncode != 0:
         print("  " + "".join(line for line in done.stderr.splitlines(True) if "frostwall" in line).strip(), flush=True)
         return None
     return directory
+
+
+def run_all(keys, name, reuse, prefix, run_one):
+    """(key, run directory) of every run that succeeded: directory/<name(key)>, from `reuse` or a new
+    temporary directory in which run_one(key, work) runs each."""
+    if reuse:
+        return [(k, os.path.join(reuse, name(k))) for k in keys]
+    work = tempfile.mkdtemp(prefix=prefix)
+    print(f"runs in {work}", flush=True)
+    return [(k, d) for k, d in ((k, run_one(k, work)) for k in keys) if d]
 
 
 def interval(stability):
@@ -125,13 +140,8 @@ def main():
     parser.add_argument("--soften", type=float, default=1.0, help="divide Young's modulus by this, the step grows as its root")
     parser.add_argument("--reuse", help="a directory holding U<velocity>/ runs: tables only")
     args = parser.parse_args()
-    if args.reuse:
-        dirs = [(u, os.path.join(args.reuse, f"U{u:g}")) for u in args.velocities]
-    else:
-        work = tempfile.mkdtemp(prefix="frostwall-leak-sweep-")
-        print(f"runs in {work}", flush=True)
-        dirs = [(u, run(u, args.end, args.ranks, args.drain, args.soften, work)) for u in args.velocities]
-        dirs = [(u, d) for u, d in dirs if d]
+    dirs = run_all(args.velocities, lambda u: f"U{u:g}", args.reuse, "frostwall-leak-sweep-",
+                   lambda u, work: run(u, args.end, args.ranks, args.drain, args.soften, work))
     table(dirs)
 
 
