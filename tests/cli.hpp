@@ -16,6 +16,7 @@
 #include <sys/wait.h>
 
 #include "temp_dir.hpp"
+#include "paths.hpp"
 
 namespace frostwall::test {
 
@@ -33,7 +34,7 @@ struct CliOptions {
 inline CliRun frostwall_cli(const std::filesystem::path& dir, const std::string& arguments, const CliOptions& o = {}) {
   const std::string timeout = o.timeout_seconds > 0 ? "timeout " + std::to_string(o.timeout_seconds) + " " : "";
   const std::string command = "cd '" + dir.string() + "' && " + timeout + o.launcher + (o.launcher.empty() ? "" : " ") +
-                              "'" FROSTWALL_EXE "' " + arguments + " >cli_stdout.txt 2>cli_stderr.txt";
+                              "'" + std::string(FROSTWALL_EXE) + "' " + arguments + " >cli_stdout.txt 2>cli_stderr.txt";
   const int status = std::system(command.c_str());
   CliRun run;
   if (status != -1 && WIFEXITED(status)) run.exit_status = WEXITSTATUS(status);

@@ -10,6 +10,7 @@
 
 #include "report/report.hpp"
 #include "run/run_project.hpp"
+#include "paths.hpp"
 
 namespace frostwall::test {
 

@@ -96,6 +96,7 @@ inline double observed_order(double coarse_error, double fine_error) { return st
 #include <nlohmann/json.hpp>
 
 #include "freezing/closure_tracker.hpp"
+#include "paths.hpp"
 
 namespace frostwall::test {
 

@@ -5,6 +5,7 @@
 
 #include "cli.hpp"
 #include "temp_dir.hpp"
+#include "paths.hpp"
 
 #include <cstdlib>
 #include <filesystem>

@@ -20,6 +20,7 @@
 #include "study/study_report.hpp"
 #include "shipped_run.hpp"
 #include "temp_dir.hpp"
+#include "paths.hpp"
 
 using namespace frostwall;
 namespace fs = std::filesystem;

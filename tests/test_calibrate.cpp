@@ -25,6 +25,7 @@
 #include "report/templates.hpp"
 #include "report_view_check.hpp"
 #include "temp_dir.hpp"
+#include "paths.hpp"
 
 using namespace frostwall;
 
@@ -107,7 +108,7 @@ using nlohmann::json;
 
 // tests/data/calibrate_twin_ring.json with `parameters` to fit.
 json twin_ring(const json& parameters) {
-  json p = json::parse(std::ifstream(FROSTWALL_SOURCE_DIR "/tests/data/calibrate_twin_ring.json"));
+  json p = json::parse(std::ifstream(std::string(FROSTWALL_SOURCE_DIR) + "/tests/data/calibrate_twin_ring.json"));
   p["calibrate"]["parameters"] = parameters;
   return p;
 }

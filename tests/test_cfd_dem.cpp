@@ -24,6 +24,7 @@
 
 #include "cli.hpp"
 #include "temp_dir.hpp"
+#include "paths.hpp"
 
 namespace fs = std::filesystem;
 using nlohmann::json;

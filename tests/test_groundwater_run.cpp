@@ -22,6 +22,7 @@
 #include "report_view_check.hpp"
 #include "cli.hpp"
 #include "temp_dir.hpp"
+#include "paths.hpp"
 
 namespace fs = std::filesystem;
 using nlohmann::json;

@@ -6,6 +6,7 @@
 #include <catch2/catch.hpp>
 
 #include "text_file.hpp"
+#include "paths.hpp"
 
 #include <filesystem>
 #include <fstream>

@@ -12,6 +12,7 @@
 #include "geometry/layout.hpp"
 #include "geometry/symmetry.hpp"
 #include "project/project.hpp"
+#include "paths.hpp"
 
 namespace fs = std::filesystem;
 using namespace frostwall;

@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "project/project.hpp"
+#include "paths.hpp"
 
 namespace fs = std::filesystem;
 using namespace frostwall::project;

@@ -29,6 +29,7 @@
 #include "run/run_project.hpp"
 #include "support.hpp"
 #include "temp_dir.hpp"
+#include "paths.hpp"
 
 using namespace frostwall;
 using test::has_key;

@@ -15,6 +15,7 @@
 #include "study/study_file.hpp"
 #include "study/study_report.hpp"
 #include "temp_dir.hpp"
+#include "paths.hpp"
 
 using namespace frostwall;
 namespace fs = std::filesystem;
