@@ -21,6 +21,7 @@
 #include <future>
 #include <nlohmann/json.hpp>
 
+#include "paths.hpp"
 #include "temp_dir.hpp"
 
 namespace fs = std::filesystem;
@@ -54,10 +55,12 @@ json scaled_case(double rolling, double velocity) {
   return p;
 }
 
-// One cache for the whole test run: the settled packings are shared.
+// One cache for the whole test run, shared by the test processes (the
+// cache's files are keyed by the packing and written atomically): a packing
+// settled by one test is read by the next.
 const fs::path& cache() {
-  static frostwall::test::TempDir dir("frostwall-leak-cache");
-  return dir.path;
+  static const fs::path dir = fs::path(FROSTWALL_ARTIFACT_DIR) / "leak-packing-cache";
+  return dir;
 }
 
 // `frostwall <command> <file>` in dir with the shared cache; it must succeed.
@@ -112,7 +115,7 @@ std::pair<json, json> run_both(const json& a, const json& b) {
 }  // namespace
 
 TEST_CASE("leak, scaled: a strong packing stands without flow, and flow carries grains into the cavity",
-          "[cfd_dem][leak]") {
+          "[cfd_dem][leak][two_cores]") {
   // Two pairs side by side: the first pair settles the packing (both alike,
   // one rank, the same seed), the second reads it from the cache.
   const auto [without_flow, fastest] = run_both(scaled_case(0.5, 0.0), scaled_case(0.5, 0.3));
@@ -321,7 +324,7 @@ TEST_CASE("leak, scaled: a kept cavity holds what falls in, and the crater's fla
 }
 
 TEST_CASE("leak, scaled: the grains' heap stands at a published angle of repose, the same for a second seed",
-          "[cfd_dem][leak][repose]") {
+          "[cfd_dem][leak][repose][two_cores]") {
   const auto [first, second] = run_both(scaled_heap(1), scaled_heap(2));
   const double a = first["angle_of_repose_deg"], b = second["angle_of_repose_deg"];
   fmt::print("heap: angle of repose {:.1f} deg (seed 1), {:.1f} deg (seed 2), {:.1f} mm high\n", a, b,

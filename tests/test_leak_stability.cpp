@@ -87,7 +87,7 @@ double lost_at(const json& summary, double t) {
 
 TEST_CASE("leak, scaled: a cached packing continues as the settled one within the seed spread, and 0.3 m/s runs 1 s "
           "with bounded energy and every grain accounted for",
-          "[cfd_dem][leak][stability]") {
+          "[cfd_dem][leak][stability][two_cores]") {
   frostwall::test::TempDir cache_1, cache_2;
   // Seeds 1 and 2 settled in the run, side by side (the machine's two cores).
   auto second = std::async(std::launch::async, run_with_cache, scaled_leak(2, 0.5), cache_2.path);
