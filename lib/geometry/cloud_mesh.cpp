@@ -2,9 +2,8 @@
 
 #include <algorithm>
 #include <stdexcept>
-#include <utility>
 
-#include "geometry/delaunay.hpp"
+#include "geometry/triangulation.hpp"
 
 namespace frostwall::geometry {
 
@@ -17,15 +16,9 @@ std::vector<Triangle> cloud_triangles(const std::vector<particles::Vec<2>>& P, c
   auto limit = [&](std::uint32_t i) { return one ? max_edge_at[0] : max_edge_at[i]; };
   for (const auto& x : P)
     if (!x.allFinite()) throw std::invalid_argument("triangles: non-finite point");
-  std::vector<std::pair<Kernel2::Point_2, std::size_t>> input;
-  input.reserve(P.size());
-  for (std::size_t i = 0; i < P.size(); ++i) input.emplace_back(Kernel2::Point_2(P[i][0], P[i][1]), i);
-  const IndexedDelaunay dt(input.begin(), input.end());
   std::vector<Triangle> triangles;
-  for (auto f = dt.finite_faces_begin(); f != dt.finite_faces_end(); ++f) {
-    Triangle v;
+  for (const Triangle& v : delaunay_faces(P)) {
     double longest2 = 0.0;
-    for (int k = 0; k < 3; ++k) v[k] = static_cast<std::uint32_t>(f->vertex(k)->info());
     for (int k = 0; k < 3; ++k) longest2 = std::max(longest2, (P[v[k]] - P[v[(k + 1) % 3]]).squaredNorm());
     const double m = std::max({limit(v[0]), limit(v[1]), limit(v[2])});
     if (longest2 <= m * m) triangles.push_back(v);  // inf stays inf
