@@ -56,7 +56,7 @@ class GapClosure {
   GapClosure(const particles::ParticleSet<2>& particles, const std::vector<geometry::Pipe2>& pipes, double pipe_radius);
   // latent_left: H / H_latent per particle, at time t (s).
   void observe(double t, const std::vector<double>& latent_left);
-  // The flow through each gap from the pair fluxes Q_e (pore_water::
+  // The flow through each gap from the pair fluxes Q_e (groundwater::
   // DarcyCloud): the sum over the pairs whose segment crosses the one
   // between the pipe centres, from one side to the other. The pair fluxes
   // balance at every particle and pipes carry none, so this is the water
