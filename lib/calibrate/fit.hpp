@@ -5,13 +5,11 @@
 //
 // The steps are wide on purpose. A simulated sensor's temperature ripples
 // with the parameters on a small scale (each particle that freezes is a
-// step in time), so a narrow difference measures the ripple: on the
-// single ring, where a forward-difference fit stalled, the latent heat's derivative
-// of the misfit was +6.6 by a forward difference over 0.3 % of the
-// bounds, -1.1 by one over 2 % and +1.4 by a central one over 2 %, and
-// only the last gradient pointed towards the truth. A central difference
-// over a few per cent of the bounds sees the trend, without the forward
-// difference's bias from the curvature.
+// step in time), so a narrow difference measures the ripple and its
+// gradient can point away from the truth (bench/README.md, "Calibration
+// from thermometers"). A central difference over a few per cent of the
+// bounds sees the trend, without the forward difference's bias from the
+// curvature.
 #pragma once
 
 #include <Eigen/Dense>

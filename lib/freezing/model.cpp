@@ -33,15 +33,12 @@ double narrowest_gap(const project::ShaftSection& s) {
 double default_spacing(const project::Project& p) {
   if (const auto* r = std::get_if<project::Rectangle>(&p.geometry))
     return std::min(std::max(r->width, r->height) / 200.0, std::min(r->width, r->height) / 4.0);
-  // Shaft sections: a pipe disc of 127 mm should be several particles
-  // across. Graded: 2 cm at the pipes and through the wall band. On the
-  // single ring that puts the closure day within 0.5 % and the wall
-  // thickness within 1 cm of converged, as 1.8 or 1.5 cm do, with fewer
-  // particles (bench/README.md); the lattice's 2.5 cm is within about 2 cm.
-  // Closure is decided in the narrowest gap between two pipe walls: a
-  // fixed number of particles across it (25) keeps the closure day within
-  // about 1 % where pipes stand close (the four-hole inner ring's 0.38 m:
-  // 1.5 cm; at 2 cm it closed 0.03 d late). bench/README.md has the numbers.
+  // Shaft sections: a pipe disc should be several particles across.
+  // Graded: 2 cm at the pipes and through the wall band; a lattice 2.5 cm.
+  // Closure is decided in the narrowest gap between two pipe walls, so a
+  // fixed number of particles stands across it (25) where pipes stand
+  // close. How near converged each choice comes: bench/README.md,
+  // "Convergence of the closure day in the spacing".
   const auto& s = std::get<project::ShaftSection>(p.geometry);
   const double gap = narrowest_gap(s);
   if (p.numerics.placement == project::Placement::graded) return std::min({0.02, 0.3 * s.pipe.diameter, gap / 25.0});
@@ -198,9 +195,8 @@ Model build_model(const project::Project& p, Model cloud) {
     // Under flow each step moves about a latent heat (the coupled step's
     // step change): Newton stops at 1e-5 of it, still far below what the
     // step itself costs in accuracy, and is inexact, each linear solve
-    // cutting the residual a hundredfold. On the seepage reference to day
-    // 60 every gap's day moved by at most 0.03 d against exact solves to
-    // 1e-7, in 0.69 of the time (bench/README.md).
+    // cutting the residual a hundredfold. What that changes and saves on
+    // the seepage reference: bench/README.md, "Solver levers".
     if (p.groundwater && p.groundwater->advection == project::Advection::coupled && p.groundwater->speed() > 0.0) {
       settings.newton_tolerance = 1e-5;
       settings.linear_tolerance = 1e-2;

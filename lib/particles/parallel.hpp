@@ -28,8 +28,8 @@ void for_each_particle(std::size_t n, Body&& body) {
 // costs more than it saves. No parallel region inside is active, also
 // those that ask for a thread count of their own: CHOLMOD's supernodal
 // factorization forks 4 threads (its compiled-in CHOLMOD_OMP_NUM_THREADS)
-// to clear each supernode, which on 2 cores cost a seepage run a third of
-// its time in waking and parking threads (bench/README.md).
+// to clear each supernode: on a machine with fewer cores, much of a run's
+// time goes to waking and parking threads (bench/README.md, "Solver levers").
 template <class Body>
 decltype(auto) serially(Body&& body) {
   struct Restore {
@@ -94,8 +94,8 @@ double max_over_particles(std::size_t n, Body&& body) {
 
 // Flush denormal numbers to zero in this thread and every OpenMP thread.
 // Far ahead of a cooling front the temperature perturbation decays through
-// 1e-308 into denormals, which x86 handles ~100x slower; they carry no
-// physics. (Measured: a shaft run went from 108 s to ~2 s.)
+// 1e-308 into denormals, which x86 handles far more slowly than normal
+// numbers; they carry no physics (bench/README.md, "Denormals").
 inline void flush_denormals_to_zero() {
   constexpr unsigned ftz_daz = 0x8040;  // MXCSR flush-to-zero | denormals-are-zero
   _mm_setcsr(_mm_getcsr() | ftz_daz);
