@@ -19,6 +19,7 @@
 
 #include "io/atomic_file.hpp"
 #include "io/labels.hpp"
+#include "io/xml_escape.hpp"
 
 namespace frostwall::io {
 
@@ -143,33 +144,13 @@ void write_vtu(const fs::path& file, const PointCloudFrame& frame) {
   });
 }
 
-namespace {
-
-// File names are arbitrary strings; escape them so the XML stays well formed.
-std::string xml_escape(const std::string& s) {
-  std::string out;
-  out.reserve(s.size());
-  for (char c : s) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&apos;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
-
-}  // namespace
-
 void write_pvd(const fs::path& file, const std::vector<PvdEntry>& entries) {
   std::string xml = "<?xml version=\"1.0\"?>\n"
                     "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
                     "  <Collection>\n";
   for (const auto& e : entries) {
-    // {:.17g} round-trips every double, so ParaView sees the exact times.
+    // {:.17g} round-trips every double, so ParaView sees the exact times;
+    // file names are arbitrary strings, escaped so the XML stays well formed.
     xml += fmt::format("    <DataSet timestep=\"{:.17g}\" group=\"\" part=\"0\" file=\"{}\"/>\n", e.time,
                        xml_escape(e.file));
   }

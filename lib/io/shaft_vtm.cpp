@@ -14,6 +14,7 @@
 #include <vtkXMLUnstructuredGridWriter.h>
 
 #include "io/atomic_file.hpp"
+#include "io/xml_escape.hpp"
 
 namespace frostwall::io {
 
@@ -69,13 +70,6 @@ void write_pipes(const fs::path& file, const std::vector<ShaftVtmPipe>& pipes) {
     writer->SetInputData(data);
     if (writer->Write() != 1) throw std::runtime_error("shaft.vtm: VTK failed to write " + tmp.string());
   });
-}
-
-std::string xml_escape(const std::string& s) {
-  std::string out;
-  for (char c : s)
-    out += c == '&' ? "&amp;" : c == '<' ? "&lt;" : c == '>' ? "&gt;" : c == '"' ? "&quot;" : std::string(1, c);
-  return out;
 }
 
 }  // namespace

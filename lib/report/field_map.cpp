@@ -5,6 +5,7 @@
 #include <limits>
 #include <numbers>
 
+#include "io/xml_escape.hpp"
 #include "post/field_sampler.hpp"
 #include "project/project.hpp"
 #include "report/nice_scale.hpp"
@@ -221,10 +222,10 @@ std::string map_html(const RgbaImage& image, const MapWindow& window, const std:
   };
   // The raster is an <img>; the vectors lie over it in an SVG of the same size.
   std::string o = fmt::format(R"(<div class="map"><img src="{}" width="{}" height="{}" alt="{} map, {}">)",
-                              png_data_uri(image), n, n, svg::escape(what), svg::escape(title));
+                              png_data_uri(image), n, n, io::xml_escape(what), io::xml_escape(title));
   o += fmt::format(
       R"(<svg viewBox="0 0 {0} {0}" width="{0}" height="{0}" role="img" font-family="{1}" font-size="13"><title>{2}</title>)",
-      n, svg::font_family, svg::escape(title));
+      n, svg::font_family, io::xml_escape(title));
   if (overlay.domain_radius > 0.0) {
     const auto [cx, cy] = px(Vec2::Zero());
     o += fmt::format(R"(<circle cx="{}" cy="{}" r="{}" fill="none" stroke="#888" stroke-width="0.8"/>)", num(cx),
@@ -279,7 +280,7 @@ std::string map_html(const RgbaImage& image, const MapWindow& window, const std:
   const double metres = bar.step, len = metres * scale;
   o += fmt::format(
       R"(<rect x="6" y="6" width="{}" height="20" fill="#fff" fill-opacity="0.85"/><text x="11" y="21">{}</text>)",
-      num(svg::text_width(title, 13) + 12), svg::escape(title));
+      num(svg::text_width(title, 13) + 12), io::xml_escape(title));
   o += fmt::format(R"(<rect x="6" y="{0}" width="{1}" height="26" fill="#fff" fill-opacity="0.85"/>)"
                    R"(<path d="M12 {2} v5 h{3} v-5" fill="none" stroke="#111" stroke-width="1.5"/>)"
                    R"(<text x="{4}" y="{5}" text-anchor="middle" font-size="11">{6} m</text>)",

@@ -5,12 +5,13 @@
 #include <fmt/core.h>
 #include <numbers>
 
+#include "io/xml_escape.hpp"
 #include "report/nice_scale.hpp"
 #include "report/svg.hpp"
 
 namespace frostwall::report {
 
-using svg::escape;
+using io::xml_escape;
 using svg::num;
 
 std::string layout_svg(const LayoutDrawing& dw, int size) {
@@ -76,7 +77,7 @@ std::string layout_svg(const LayoutDrawing& dw, int size) {
   for (const auto& p : dw.pipes)
     if (!p.failed)
       o += fmt::format(R"(<circle cx="{}" cy="{}" r="{}"><title>{} (pipe {})</title></circle>)", num(X(p.x)),
-                       num(Y(p.y)), num(pr), escape(p.label), p.number);
+                       num(Y(p.y)), num(pr), xml_escape(p.label), p.number);
   o += "</g>";
   for (const auto& p : dw.pipes)
     if (p.failed)
@@ -95,7 +96,7 @@ std::string layout_svg(const LayoutDrawing& dw, int size) {
   for (const auto& s : dw.sensors)
     o += fmt::format(
         R"(<path d="M{} {} l-4 6 h8 z" fill="#009E73"/><text x="{}" y="{}" fill="#006b4e" font-size="11">{}</text>)",
-        num(X(s.x)), num(Y(s.y) - 3), num(X(s.x) + 6), num(Y(s.y) - 4), escape(s.name));
+        num(X(s.x)), num(Y(s.y) - 3), num(X(s.x) + 6), num(Y(s.y) - 4), xml_escape(s.name));
   // Scale bar.
   const NiceScale bar = nice_scale(0.0, extent / 2.5, 1);
   const double len = bar.step * scale;
@@ -123,12 +124,12 @@ std::string rectangle_svg(const project::Rectangle& r, int width) {
   o += fmt::format(R"(<rect x="{}" y="{}" width="{}" height="{}" fill="#f3efe6" stroke="#333"/>)", x0, y0, num(w),
                    num(h));
   o += fmt::format(R"(<text x="{}" y="{}" text-anchor="end">{}</text>)", x0 - 6, num(y0 + h / 2 + 4),
-                   escape(side(r.left)));
-  o += fmt::format(R"(<text x="{}" y="{}">{}</text>)", num(x0 + w + 6), num(y0 + h / 2 + 4), escape(side(r.right)));
+                   xml_escape(side(r.left)));
+  o += fmt::format(R"(<text x="{}" y="{}">{}</text>)", num(x0 + w + 6), num(y0 + h / 2 + 4), xml_escape(side(r.right)));
   o += fmt::format(R"(<text x="{}" y="{}" text-anchor="middle">{}</text>)", num(x0 + w / 2), y0 - 8,
-                   escape(side(r.top)));
+                   xml_escape(side(r.top)));
   o += fmt::format(R"(<text x="{}" y="{}" text-anchor="middle">{}</text>)", num(x0 + w / 2), num(y0 + h + 18),
-                   escape(side(r.bottom)));
+                   xml_escape(side(r.bottom)));
   o += fmt::format(R"(<text x="{}" y="{}" text-anchor="middle" fill="#555">{:g} m × {:g} m</text></svg>)",
                    num(x0 + w / 2), num(y0 + h + 38), r.width, r.height);
   return o;

@@ -18,7 +18,6 @@ using nlohmann::json;
 
 namespace detail {
 
-std::string number(double v, int decimals) { return std::isfinite(v) ? tick_label(v, decimals) : "–"; }
 std::string metres(double v, int decimals) {
   return !std::isfinite(v) || v == 0.0 || std::abs(v) >= 1e-3 ? number(v, decimals) : fmt::format("{:.4g}", v);
 }
@@ -29,16 +28,15 @@ double smoothing_length(const json& run_facts) {
     throw std::runtime_error("summary.json: run.smoothing_length is missing; it is needed to draw the maps");
   return h->get<double>();
 }
-std::string number(const json& v, int decimals) { return v.is_number() ? number(v.get<double>(), decimals) : "–"; }
 
 std::string with_error(const json& value, const json& error, int decimals) {
   if (!value.is_number() || !error.is_number()) return number(value, decimals);
   return report::with_error(value.get<double>(), error.get<double>(), decimals);
 }
 
-namespace {
-
 json row(const std::string& label, const std::string& value) { return {{"label", label}, {"value", value}}; }
+
+namespace {
 
 std::string extent(const json& stretch) {
   if (!stretch.is_object() || !stretch["inner"].is_number()) return "–";

@@ -4,11 +4,9 @@
 #include <cmath>
 #include <filesystem>
 #include <fmt/format.h>
-#include <fstream>
-#include <map>
-#include <sstream>
 
 #include "report/report_sections.hpp"
+#include "report/run_files.hpp"
 #include "report/svg_chart.hpp"
 
 namespace frostwall::report::detail {
@@ -17,27 +15,6 @@ namespace fs = std::filesystem;
 using nlohmann::json;
 
 namespace {
-
-json row(const std::string& label, const std::string& value) { return {{"label", label}, {"value", value}}; }
-
-// series.csv as columns by header name.
-std::map<std::string, std::vector<double>> read_columns(const fs::path& file) {
-  std::map<std::string, std::vector<double>> columns;
-  std::ifstream in(file);
-  std::string line;
-  if (!std::getline(in, line)) return columns;
-  std::vector<std::string> names;
-  for (std::stringstream header(line); std::getline(header, line, ',');) names.push_back(line);
-  while (std::getline(in, line)) {
-    std::stringstream values(line);
-    for (const auto& name : names) {
-      std::string cell;
-      std::getline(values, cell, ',');
-      columns[name].push_back(cell.empty() ? NAN : std::stod(cell));
-    }
-  }
-  return columns;
-}
 
 Series line(const std::string& label, const std::vector<double>& x, const std::vector<double>& y) {
   Series s;
@@ -51,27 +28,8 @@ json chart(const std::string& id, const Chart& c, const std::string& caption) {
   return {{"id", id}, {"title", c.title}, {"svg", render_svg(c)}, {"caption", caption}};
 }
 
-}  // namespace
-
-Chart line_chart(const std::string& title, const std::string& x_label, const std::string& y_label,
-                 std::vector<Series> series) {
-  Chart c;
-  c.title = title;
-  c.x_label = x_label;
-  c.y_label = y_label;
-  c.series = std::move(series);
-  return c;
-}
-
-void add_cfd_dem(const RunRecord& run, json& view) {
-  const json& s = run.summary;
-  view["cfd_dem"] = true;
-  view["has_cfd_dem"] = true;
-  view["cfd_dem_note"] = fmt::format(
-      "{} grains, {} fluid cells; fluid forces: {}. The bed is measured along {} from the face it rests on; "
-      "the pressure is the excess over hydrostatic.",
-      s.value("grains", 0L), s.contains("fluid_cells") ? s["fluid_cells"].dump() : "?",
-      s.contains("fluid_forces") ? s["fluid_forces"].dump() : "?", s.value("bed_axis", std::string("z")));
+// One row per snapshot: the bed and the fluid's force on it.
+json snapshot_rows(const json& s) {
   json snapshots = json::array();
   for (const auto& sn : s.value("snapshots", json::array())) {
     const auto& f = sn["mean_fluid_force_N"];
@@ -84,7 +42,11 @@ void add_cfd_dem(const RunRecord& run, json& view) {
          {"force", fmt::format("{:.3e}", std::hypot(f[0].get<double>(), f[1].get<double>(), f[2].get<double>()))},
          {"pressure_drop", number(sn["pressure_drop_Pa"], 2)}});
   }
-  view["cfd_dem_snapshots"] = snapshots;
+  return snapshots;
+}
+
+// Minimum fluidisation, when the run measured it (else no rows).
+json fluidisation_rows(const json& s) {
   json fluid_rows = json::array();
   if (const auto it = s.find("minimum_fluidisation"); it != s.end()) {
     const json& f = *it;
@@ -103,14 +65,18 @@ void add_cfd_dem(const RunRecord& run, json& view) {
         row("bed as settled: porosity, length",
             number(f["porosity"], 4) + ", " + number(f["bed_length_m"].get<double>() * 1000.0, 2) + " mm"));
   }
-  view["has_fluidisation"] = !fluid_rows.empty();
-  view["fluidisation_rows"] = fluid_rows;
+  return fluid_rows;
+}
 
-  const auto columns = read_columns(run.dir / "series.csv");
+// The curves over time from series.csv (none without the file).
+json series_charts(const RunRecord& run) {
+  const json& s = run.summary;
   json charts = json::array();
+  if (!fs::exists(run.dir / "series.csv")) return charts;
+  const CsvTable columns = read_csv(run.dir / "series.csv");
   auto column = [&](const std::string& name) {
-    const auto it = columns.find(name);
-    return it == columns.end() ? std::vector<double>{} : it->second;
+    const auto* c = columns.column(name);
+    return c ? *c : std::vector<double>{};
   };
   const auto t = column("time_s");
   if (!t.empty()) {
@@ -145,8 +111,11 @@ void add_cfd_dem(const RunRecord& run, json& view) {
                                 {line("", t, column("settling_velocity_m_s"))});
     charts.push_back(chart("settling", settling, "The grains' volume-weighted mean velocity along gravity."));
   }
-  view["charts"] = charts;
+  return charts;
+}
 
+// The run's table: sizes, steps, time and where the packing came from.
+json run_rows(const json& s) {
   json rows = json::array();
   rows.push_back(row("grains", fmt::format("{}", s.value("grains", 0L))));
   rows.push_back(row("MPI ranks", fmt::format("{}", s.value("ranks", 1))));
@@ -159,7 +128,11 @@ void add_cfd_dem(const RunRecord& run, json& view) {
     rows.push_back(row(
         "packing", s["packing"].value("read_from_cache", false) ? "read from the cache" : "placed and settled here"));
   rows.push_back(row("frostwall version", s.value("frostwall_version", "?")));
-  view["run_rows"] = rows;
+  return rows;
+}
+
+// Links to the files of the run that are there, each with what it holds.
+json run_file_links(const fs::path& dir) {
   const std::vector<std::pair<std::string, std::string>> known{
       {"summary.json", "results in machine-readable form"},
       {"series.csv", "the bed and the flow over time"},
@@ -171,8 +144,38 @@ void add_cfd_dem(const RunRecord& run, json& view) {
       {"lammps.log", "LAMMPS's own log"}};
   json files = json::array();
   for (const auto& [name, what] : known)
-    if (fs::exists(run.dir / name)) files.push_back({{"name", name}, {"href", name}, {"description", what}});
-  view["files"] = files;
+    if (fs::exists(dir / name)) files.push_back({{"name", name}, {"href", name}, {"description", what}});
+  return files;
+}
+
+}  // namespace
+
+Chart line_chart(const std::string& title, const std::string& x_label, const std::string& y_label,
+                 std::vector<Series> series) {
+  Chart c;
+  c.title = title;
+  c.x_label = x_label;
+  c.y_label = y_label;
+  c.series = std::move(series);
+  return c;
+}
+
+void add_cfd_dem(const RunRecord& run, json& view) {
+  const json& s = run.summary;
+  view["cfd_dem"] = true;
+  view["has_cfd_dem"] = true;
+  view["cfd_dem_note"] = fmt::format(
+      "{} grains, {} fluid cells; fluid forces: {}. The bed is measured along {} from the face it rests on; "
+      "the pressure is the excess over hydrostatic.",
+      s.value("grains", 0L), s.contains("fluid_cells") ? s["fluid_cells"].dump() : "?",
+      s.contains("fluid_forces") ? s["fluid_forces"].dump() : "?", s.value("bed_axis", std::string("z")));
+  view["cfd_dem_snapshots"] = snapshot_rows(s);
+  const json fluid_rows = fluidisation_rows(s);
+  view["has_fluidisation"] = !fluid_rows.empty();
+  view["fluidisation_rows"] = fluid_rows;
+  view["charts"] = series_charts(run);
+  view["run_rows"] = run_rows(s);
+  view["files"] = run_file_links(run.dir);
   add_erosion(run, view);
 }
 

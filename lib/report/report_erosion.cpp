@@ -22,10 +22,6 @@ using nlohmann::json;
 
 namespace {
 
-double get(const json& j, const char* key) {
-  return j.contains(key) && j[key].is_number() ? j[key].get<double>() : NAN;
-}
-
 Series series_of(const json& rows, const std::string& label, const std::function<double(const json&)>& y) {
   Series s;
   s.label = label;
@@ -132,34 +128,38 @@ void add_crater_flanks(const json& s, Chart& profile) {
   }
 }
 
-}  // namespace
-
-void add_erosion(const RunRecord& run, json& view) {
-  const json& s = run.summary.value("soil", json::object());
-  const bool cavity = run.project && run.project->cfd_dem && run.project->cfd_dem->cavity;
-  view["has_erosion"] = cavity && s.contains("series");
-  if (!view["has_erosion"].get<bool>()) return;
-  const auto& c = *run.project->cfd_dem;
-  const json& regime = s.value("regime", json::object());
-  view["erosion_regime"] =
-      regime.value("note", fmt::format("packing porosity {:.3f}, critical gradient {:.2f}, "
-                                       "Ergun's minimum fluidisation velocity {:.3g} m/s (still water)",
-                                       get(regime, "porosity"), get(regime, "critical_gradient"),
-                                       get(regime, "minimum_fluidisation_velocity_m_s")));
-  view["erosion_boils"] = regime.value("above_fluidisation", false);
-  view["erosion_facts"] = erosion_facts(s, c.cavity->drain);
-  // The headline: the loss and the crater.
+// The headline: the loss and the crater.
+json erosion_cards(const json& s, bool drain) {
   json cards = json::array();
-  cards.push_back(card("Fell into the cavity", fmt::format("{:.0f} grains", get(s, "lost_to_cavity")),
-                       fmt::format("of {:.0f} at the start{}", get(s, "grains_at_start"),
-                                   c.cavity->drain ? "; the leak takes them away" : "")));
+  cards.push_back(card(
+      "Fell into the cavity", fmt::format("{:.0f} grains", get(s, "lost_to_cavity")),
+      fmt::format("of {:.0f} at the start{}", get(s, "grains_at_start"), drain ? "; the leak takes them away" : "")));
   cards.push_back(card("Washed out", fmt::format("{:.0f} grains", get(s, "washed_out")), "through the outflow face"));
   if (const json& cr = s.value("crater", json::object()); !cr.empty())
     cards.push_back(
         card("Crater", or_dash(cr["depth_m"], "{:.1f} mm", 1e3) + " deep",
              or_dash(cr["width_m"], "{:.0f} mm", 1e3) + " wide, flanks at " + or_dash(cr["slope_deg"], "{:.1f} deg")));
-  view["cards"] = cards;
-  view["has_cards"] = true;
+  return cards;
+}
+
+// The surface's settlement along x through the cavity at each profile's
+// time, with the crater's flanks at the end.
+Chart settlement_profile(const json& s, const project::CfdDem& c) {
+  Chart profile = line_chart("Surface settlement over the cavity", "x (m)", "settlement (mm)", {});
+  for (const auto& p : s.value("surface_profiles", json::array())) {
+    Series line;
+    line.label = fmt::format("{:.2f} s", p["time"].get<double>());
+    for (const auto& b : p["settlement"])
+      line.x.push_back(b[0].get<double>()), line.y.push_back(1e3 * b[1].get<double>());
+    profile.series.push_back(line);
+  }
+  profile.guides.push_back({true, c.cavity->centre[0], "cavity"});
+  add_crater_flanks(s, profile);
+  return profile;
+}
+
+// The curves over time of soil.series, and the settlement profile.
+json erosion_charts(const json& s, const project::CfdDem& c) {
   const json& rows = s["series"];
   json charts = json::array();
   auto add = [&](const std::string& id, const Chart& ch, const std::string& caption) {
@@ -205,17 +205,7 @@ void add_erosion(const RunRecord& run, json& view) {
                               return std::hypot(f[0].get<double>(), f[1].get<double>(), f[2].get<double>());
                             })}),
       "");
-  Chart profile = line_chart("Surface settlement over the cavity", "x (m)", "settlement (mm)", {});
-  for (const auto& p : s.value("surface_profiles", json::array())) {
-    Series line;
-    line.label = fmt::format("{:.2f} s", p["time"].get<double>());
-    for (const auto& b : p["settlement"])
-      line.x.push_back(b[0].get<double>()), line.y.push_back(1e3 * b[1].get<double>());
-    profile.series.push_back(line);
-  }
-  profile.guides.push_back({true, c.cavity->centre[0], "cavity"});
-  add_crater_flanks(s, profile);
-  add("settlement", profile,
+  add("settlement", settlement_profile(s, c),
       "Along x through the cavity: the surface's drop since the run started (its highest grain in bins of two "
       "diameters). Dashed: the crater's flanks at the end, the straight line through 10 % and 90 % of its depth "
       "below the surrounding ground on each side (from columns one diameter wide), down to that ground.");
@@ -224,9 +214,12 @@ void add_erosion(const RunRecord& run, json& view) {
   add("collapse", cone,
       "The boundary of the grains moved more than one diameter, fitted against height, is the slip surface "
       "(slip_surface_angle_deg in summary.json; cone_angle_deg is the same for two diameters).");
-  view["erosion_charts"] = charts;
+  return charts;
+}
 
-  // Displacement on the mid-section x = cavity centre, one map per snapshot.
+// Displacement on the mid-section x = cavity centre, one map per
+// snapshot, the last snapshot in 3-D, and their colour bar.
+void add_displacement_maps(const RunRecord& run, const project::CfdDem& c, json& view) {
   std::vector<fs::path> files;
   for (const auto& e : fs::directory_iterator(run.dir))
     if (e.path().filename().string().starts_with("grains_") && e.path().extension() == ".vtu")
@@ -254,6 +247,28 @@ void add_erosion(const RunRecord& run, json& view) {
     view["erosion_views"] = grain_views(snaps.back(), c, colours);
   view["has_erosion_views"] = !view["erosion_views"].empty();
   view["erosion_colour_bar"] = maps.empty() ? "" : colours.colour_bar_svg(320, "displacement (m)");
+}
+
+}  // namespace
+
+void add_erosion(const RunRecord& run, json& view) {
+  const json& s = run.summary.value("soil", json::object());
+  const bool cavity = run.project && run.project->cfd_dem && run.project->cfd_dem->cavity;
+  view["has_erosion"] = cavity && s.contains("series");
+  if (!view["has_erosion"].get<bool>()) return;
+  const auto& c = *run.project->cfd_dem;
+  const json& regime = s.value("regime", json::object());
+  view["erosion_regime"] =
+      regime.value("note", fmt::format("packing porosity {:.3f}, critical gradient {:.2f}, "
+                                       "Ergun's minimum fluidisation velocity {:.3g} m/s (still water)",
+                                       get(regime, "porosity"), get(regime, "critical_gradient"),
+                                       get(regime, "minimum_fluidisation_velocity_m_s")));
+  view["erosion_boils"] = regime.value("above_fluidisation", false);
+  view["erosion_facts"] = erosion_facts(s, c.cavity->drain);
+  view["cards"] = erosion_cards(s, c.cavity->drain);
+  view["has_cards"] = true;
+  view["erosion_charts"] = erosion_charts(s, c);
+  add_displacement_maps(run, c, view);
 }
 
 }  // namespace frostwall::report::detail

@@ -18,8 +18,6 @@ namespace {
 
 constexpr double day = 86400.0;
 
-json row(const std::string& label, const std::string& value) { return {{"label", label}, {"value", value}}; }
-
 std::string pattern_name(project::Pattern p) {
   switch (p) {
     case project::Pattern::single: return "single ring";

@@ -12,6 +12,7 @@
 #include "project/project.hpp"
 #include "report/colour_scale.hpp"
 #include "report/svg_chart.hpp"
+#include "report/view_numbers.hpp"
 
 namespace frostwall::report::detail {
 
@@ -32,17 +33,14 @@ struct RunRecord {
   bool phase_change() const { return !project || frost() || project->soil.latent_heat > 0.0; }
 };
 
-// "1.23" with a true minus sign; "–" for null/NaN.
 // The run's smoothing length (summary.json run.smoothing_length, m): the
 // maps sample the particles' fields with the run's own kernel width.
 // Throws std::runtime_error when the summary lacks it.
 double smoothing_length(const nlohmann::json& run_facts);
 
-std::string number(double v, int decimals);
 // A length in m: `decimals` places from a millimetre up, four significant
 // digits below (a plate of micrometres).
 std::string metres(double v, int decimals);
-std::string number(const nlohmann::json& v, int decimals);
 // A number with its estimated error, "13.88 ± 0.16": the error to one
 // significant digit (two when it starts with 1), the value to the same
 // place. Without an error (null, missing): number(value, decimals).
@@ -69,6 +67,8 @@ double triangle_edge(const nlohmann::json& run_facts);
 std::optional<std::pair<double, double>> last_front(const nlohmann::json& summary);
 // A card of the headline.
 nlohmann::json card(const std::string& label, const std::string& value, const std::string& note);
+// A row of a two-column table: {"label": ..., "value": ...}.
+nlohmann::json row(const std::string& label, const std::string& value);
 
 void add_project(const RunRecord& run, nlohmann::json& view);    // layout, soil, schedule, numerics, design
 void add_headline(const RunRecord& run, nlohmann::json& view);   // closure, thickness, design check, table

@@ -1,14 +1,12 @@
-// Small helpers for SVG written by hand: text escaping, compact numbers,
-// ids unique within one HTML page (inline SVGs share the page's ids).
+// Small helpers for SVG written by hand: compact numbers, ids unique
+// within one HTML page (inline SVGs share the page's ids), the font and a
+// text's rough width. Text goes in through io::xml_escape.
 #pragma once
 
 #include <string>
 #include <string_view>
 
 namespace frostwall::report::svg {
-
-// &, <, >, " and ' as entities.
-std::string escape(std::string_view text);
 
 // A coordinate with two decimals at most, trailing zeros dropped.
 std::string num(double v);

@@ -6,6 +6,7 @@
 #include <fmt/core.h>
 #include <limits>
 
+#include "io/xml_escape.hpp"
 #include "report/nice_scale.hpp"
 #include "report/svg.hpp"
 
@@ -13,7 +14,7 @@ namespace frostwall::report {
 
 namespace {
 
-using svg::escape;
+using io::xml_escape;
 using svg::num;
 
 constexpr double font = 12.0, small_font = 10.5, tick_length = 4.0, legend_swatch = 22.0, legend_row = 17.0;
@@ -104,12 +105,12 @@ std::string guides_svg(const Chart& chart, const Px& px, const Py& py, const Plo
     if (g.label.empty()) continue;
     if (g.vertical && px(g.value) > left + 0.7 * pw)  // near the right edge: label to the left of the line
       o += fmt::format(R"(<text x="{}" y="{}" text-anchor="end">{}</text>)", num(px(g.value) - 3), num(top + 11),
-                       escape(g.label));
+                       xml_escape(g.label));
     else if (g.vertical)
-      o += fmt::format(R"(<text x="{}" y="{}">{}</text>)", num(px(g.value) + 3), num(top + 11), escape(g.label));
+      o += fmt::format(R"(<text x="{}" y="{}">{}</text>)", num(px(g.value) + 3), num(top + 11), xml_escape(g.label));
     else
       o += fmt::format(R"(<text x="{}" y="{}" text-anchor="end">{}</text>)", num(left + pw - 3), num(py(g.value) - 4),
-                       escape(g.label));
+                       xml_escape(g.label));
   }
   o += "</g>\n";
   return o;
@@ -126,7 +127,7 @@ std::string legend_svg(const Chart& chart, const std::vector<std::string>& colou
     o += fmt::format(R"(<line x1="{0}" y1="{2}" x2="{1}" y2="{2}" stroke="{3}" stroke-width="2"{4}/>)", num(lx),
                      num(lx + legend_swatch), num(y), colour_of[k], s.dashed ? R"( stroke-dasharray="6 3")" : "");
     o += fmt::format(R"(<text x="{}" y="{}" fill="#222">{}</text>)", num(lx + legend_swatch + 6), num(y + 4),
-                     escape(s.label));
+                     xml_escape(s.label));
   }
   o += "</g>\n";
   return o;
@@ -208,7 +209,7 @@ std::string render_svg(const Chart& chart) {
   std::string o = fmt::format(
       R"(<svg class="chart" viewBox="0 0 {} {}" width="{}" height="{}" role="img" font-family="{}" font-size="{}">)"
       "\n<title>{}</title>\n",
-      W, H, W, H, svg::font_family, num(font), escape(chart.title));
+      W, H, W, H, svg::font_family, num(font), xml_escape(chart.title));
   o += fmt::format(R"(<defs><clipPath id="{}"><rect x="{}" y="{}" width="{}" height="{}"/></clipPath></defs>)"
                    "\n",
                    clip, num(left), num(top), num(pw), num(ph));
@@ -224,9 +225,9 @@ std::string render_svg(const Chart& chart) {
     o += fmt::format(R"(<text x="{}" y="{}" text-anchor="end">{}</text>)", num(left - tick_length - 3), num(py(v) + 4),
                      tick_label(v, ys.decimals));
   o += fmt::format(R"(<text x="{}" y="{}" text-anchor="middle">{}</text>)", num(left + pw / 2), num(H - 6),
-                   escape(chart.x_label));
+                   xml_escape(chart.x_label));
   o += fmt::format(R"svg(<text transform="translate({},{}) rotate(-90)" text-anchor="middle">{}</text>)svg", num(13),
-                   num(top + ph / 2), escape(chart.y_label));
+                   num(top + ph / 2), xml_escape(chart.y_label));
   o += "</g>\n";
 
   o += guides_svg(chart, px, py, {left, top, pw, ph}, clip);
@@ -256,7 +257,7 @@ std::string render_svg(const Chart& chart) {
   o += "</g>\n";
   if (!has_points)
     o += fmt::format(R"(<text x="{}" y="{}" text-anchor="middle" fill="#777">{}</text>)", num(left + pw / 2),
-                     num(top + ph / 2), escape(chart.empty_note));
+                     num(top + ph / 2), xml_escape(chart.empty_note));
 
   if (!legend.empty()) o += legend_svg(chart, colour_of, left + pw + 14, top);
   o += "</svg>";
@@ -286,7 +287,7 @@ std::string render_svg(const BarChart& chart) {
   std::string o = fmt::format(
       R"(<svg class="chart bars" viewBox="0 0 {} {}" width="{}" height="{}" role="img" font-family="{}" font-size="{}">)"
       "\n<title>{}</title>\n",
-      W, num(H), W, num(H), svg::font_family, num(font), escape(chart.title));
+      W, num(H), W, num(H), svg::font_family, num(font), xml_escape(chart.title));
   o += fmt::format(R"(<defs><clipPath id="{}"><rect x="{}" y="{}" width="{}" height="{}"/></clipPath>)", clip,
                    num(left), num(top), num(pw), num(ph));
   o += fmt::format(R"(<linearGradient id="{0}" x1="0" x2="1" y1="0" y2="0"><stop offset="0" stop-color="{1}"/>)"
@@ -299,9 +300,9 @@ std::string render_svg(const BarChart& chart) {
   o += "</g>\n<g fill=\"#222\">" + x_axis.labels();
   for (std::size_t k = 0; k < chart.bars.size(); ++k)
     o += fmt::format(R"(<text x="{}" y="{}" text-anchor="end">{}</text>)", num(left - tick_length - 2),
-                     num(row_y(k) + 4), escape(chart.bars[k].label));
+                     num(row_y(k) + 4), xml_escape(chart.bars[k].label));
   o += fmt::format(R"(<text x="{}" y="{}" text-anchor="middle">{}</text>)", num(left + pw / 2), num(H - 6),
-                   escape(chart.x_label));
+                   xml_escape(chart.x_label));
   o += "</g>\n";
 
   // The bars; an unended one fades out towards open_end and has no right edge.
@@ -312,7 +313,7 @@ std::string render_svg(const BarChart& chart) {
     const double y0 = row_y(k) - thick / 2;
     if (!std::isfinite(b.start)) {
       o += fmt::format(R"(<g class="bar never"><text x="{}" y="{}" fill="#777" font-size="{}">{}</text></g>)",
-                       num(left + 4), num(row_y(k) + 4), num(small_font), escape(chart.never_started));
+                       num(left + 4), num(row_y(k) + 4), num(small_font), xml_escape(chart.never_started));
       continue;
     }
     const bool open = !std::isfinite(b.end);
@@ -323,10 +324,10 @@ std::string render_svg(const BarChart& chart) {
       o += fmt::format(
           R"svg(<g class="bar open"><title>{0}</title><rect x="{1}" y="{2}" width="{3}" height="{4}" fill="url(#{5})"/>)svg"
           R"(<path d="M{6} {2}H{1}V{7}H{6}" fill="none" stroke="{8}" stroke-width="1"/></g>)",
-          escape(tip), num(x0), num(y0), num(x1 - x0), num(thick), fade, num(x1), num(y0 + thick), chart.colour);
+          xml_escape(tip), num(x0), num(y0), num(x1 - x0), num(thick), fade, num(x1), num(y0 + thick), chart.colour);
     else
       o += fmt::format(R"(<g class="bar"><title>{}</title><rect x="{}" y="{}" width="{}" height="{}" fill="{}"/></g>)",
-                       escape(tip), num(x0), num(y0), num(x1 - x0), num(thick), chart.colour);
+                       xml_escape(tip), num(x0), num(y0), num(x1 - x0), num(thick), chart.colour);
   }
   o += "</g>\n";
   // Reference lines over the bars, labelled above the plot.
@@ -341,7 +342,7 @@ std::string render_svg(const BarChart& chart) {
                        px(g.value) > left + 0.7 * pw   ? "end"
                        : px(g.value) < left + 0.3 * pw ? "start"
                                                        : "middle",
-                       escape(g.label));
+                       xml_escape(g.label));
   o += "</g>\n";
   if (chart.bars.empty())
     o += fmt::format(R"(<text x="{}" y="{}" text-anchor="middle" fill="#777">no bars</text>)", num(left + pw / 2),

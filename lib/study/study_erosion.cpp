@@ -7,6 +7,7 @@
 #include "io/atomic_file.hpp"
 #include "report/nice_scale.hpp"
 #include "report/svg_chart.hpp"
+#include "report/view_numbers.hpp"
 
 namespace frostwall::study {
 
@@ -14,10 +15,8 @@ using nlohmann::json;
 
 namespace {
 
-std::string number(double v, int decimals) { return std::isfinite(v) ? report::tick_label(v, decimals) : "–"; }
-double get(const json& j, const char* key) {
-  return j.contains(key) && j[key].is_number() ? j[key].get<double>() : NAN;
-}
+using report::get;
+using report::number;
 const json& soil(const VariantOutcome& v) { return v.summary["soil"]; }
 
 // Lost grains over the count at the start, per second of the run.

@@ -10,6 +10,7 @@
 #include "report/nice_scale.hpp"
 #include "report/run_files.hpp"
 #include "report/svg_chart.hpp"
+#include "report/view_numbers.hpp"
 #include "report/templates.hpp"
 #include "study/study_erosion.hpp"
 #include "study/study_seepage.hpp"
@@ -38,7 +39,7 @@ double at_day(const report::CsvTable& t, const char* column, double day) {
   return a + f * (b - a);
 }
 
-std::string number(double v, int decimals) { return std::isfinite(v) ? report::tick_label(v, decimals) : "–"; }
+using report::number;
 std::string csv_number(double v) { return std::isfinite(v) ? fmt::format("{:.6g}", v) : ""; }
 std::string csv_text(const std::string& s) {
   if (s.find_first_of(",\"\n") == std::string::npos) return s;

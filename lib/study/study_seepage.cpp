@@ -4,8 +4,8 @@
 #include <cmath>
 #include <fmt/core.h>
 
-#include "report/nice_scale.hpp"
 #include "report/svg_chart.hpp"
+#include "report/view_numbers.hpp"
 
 namespace frostwall::study {
 
@@ -13,10 +13,8 @@ using nlohmann::json;
 
 namespace {
 
-std::string number(double v, int decimals) { return std::isfinite(v) ? report::tick_label(v, decimals) : "–"; }
-double get(const json& j, const char* key) {
-  return j.contains(key) && j[key].is_number() ? j[key].get<double>() : NAN;
-}
+using report::get;
+using report::number;
 
 // |q| in m/d; 0 for still water.
 double seepage(const json& summary) {
