@@ -46,7 +46,7 @@ GroundwaterFlow::GroundwaterFlow(const project::Groundwater& water, Model& m)
       darcy_(m.model->pairs(), m.particles().volume, fixed_potentials(water, m)),
       heat_(water.water_density * water.water_heat_capacity, {}, scheme_of(water.advection)),
       k_(m.particles().size(), 1.0) {
-  if (water.advection == project::Advection::coupled && water.speed() > 0.0) {
+  if (water.flows_coupled()) {
     auto* implicit = thermal::find_integrator<thermal::BackwardEuler>(conduction_.get());
     if (!implicit) throw std::logic_error("GroundwaterFlow: the coupled scheme needs the backward-Euler integrator");
     implicit->couple(&heat_);

@@ -197,7 +197,7 @@ Model build_model(const project::Project& p, Model cloud) {
     // step itself costs in accuracy, and is inexact, each linear solve
     // cutting the residual a hundredfold. What that changes and saves on
     // the seepage reference: bench/README.md, "Solver levers".
-    if (p.groundwater && p.groundwater->advection == project::Advection::coupled && p.groundwater->speed() > 0.0) {
+    if (p.groundwater && p.groundwater->flows_coupled()) {
       settings.newton_tolerance = 1e-5;
       settings.linear_tolerance = 1e-2;
     }

@@ -54,6 +54,9 @@ struct Groundwater {
   double speed() const;                 // |q|, m/s
   double permeability_m2() const;       // k, m^2 (from K when K was given)
   double conductivity_m_per_s() const;  // K, m/s (from k when k was given)
+  // Water flows (|q| > 0) and its heat is stepped by the coupled scheme,
+  // inside the conduction's backward-Euler step.
+  bool flows_coupled() const;
 };
 
 }  // namespace frostwall::project

@@ -7,6 +7,8 @@ namespace frostwall::project {
 
 double Groundwater::speed() const { return std::hypot(darcy_flux[0], darcy_flux[1]); }
 
+bool Groundwater::flows_coupled() const { return advection == Advection::coupled && speed() > 0.0; }
+
 double Groundwater::permeability_m2() const {
   if (permeability) return *permeability;
   return hydraulic_conductivity.value_or(0.0) * water_viscosity / (water_density * 9.81);

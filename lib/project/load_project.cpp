@@ -250,7 +250,7 @@ void read_groundwater_block(const Node& root, bool shaft, Project& project) {
           water["advection"].problem(R"("coupled" needs "numerics": {"integrator": "implicit"} (or no integrator))");
         g.advection = Advection::limited;
       }
-      if (g.advection == Advection::coupled && g.speed() > 0.0) {
+      if (g.flows_coupled()) {
         project.numerics.integrator = IntegratorKind::implicit;
         // A latent heat a step: the step is then held by the run's longest
         // step (a 200th of it) and, while a gap freezes, by the gap's own

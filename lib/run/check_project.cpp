@@ -126,8 +126,7 @@ std::vector<std::string> check_heat(const project::Project& p, Engine engine) {
   const char* integrator = p.numerics.integrator == project::IntegratorKind::rkl2 ? "rkl2" : "implicit";
   lines.push_back(fmt::format("time step: adaptive ({}) to {}; the explicit limit would be {:.3g} s ({:.3g} steps)",
                               integrator, end, dt, explicit_steps));
-  const bool coupled = p.groundwater && p.groundwater->advection == project::Advection::coupled &&
-                       p.groundwater->speed() > 0.0;
+  const bool coupled = p.groundwater && p.groundwater->flows_coupled();
   if (p.numerics.integrator == project::IntegratorKind::implicit && !coupled)
     return lines.push_back(estimate(work / implicit_still_rate, "scaled from the single ring's implicit run")), lines;
   if (p.numerics.integrator == project::IntegratorKind::implicit)
