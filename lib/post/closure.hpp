@@ -40,6 +40,7 @@
 
 #include "particles/particle_set.hpp"
 #include "particles/vec.hpp"
+#include "post/link_graph.hpp"
 
 namespace frostwall::post {
 
@@ -66,15 +67,18 @@ class ClosureDetector {
   ClosureDetector(const particles::ParticleSet<2>& particles, double far_field_radius);
   // -infinity when nothing joins the axis to the far field at any level.
   double bottleneck(const std::vector<double>& g) const;
-  std::size_t links() const { return link_.size(); }
+  std::size_t links() const { return links_.link.size(); }
   // Liquid fractions: the columns touch (some path frozen to f <= 0.5).
   bool touching(const std::vector<double>& liquid_fraction) const { return bottleneck(liquid_fraction) <= 0.5; }
 
  private:
-  std::vector<std::size_t> start_;
-  std::vector<std::uint32_t> link_;
-  std::vector<char> far_field_;  // 1 for particles next to the far-field circle
-  std::uint32_t axis_ = 0;       // the free particle nearest the shaft axis
+  static constexpr char far_field_bit = 1, axis_bit = 2;
+  // Marks the ends of the path: the far field (1 for each free particle
+  // next to the far-field circle) and the free particle nearest the axis.
+  void set_ends(const std::vector<particles::Vec<2>>& free, std::vector<char> far_field);
+
+  LinkGraph links_;
+  std::vector<char> ends_;  // far_field_bit, axis_bit per free particle
 };
 
 // Follows the bottleneck of g = H / H_latent in time and interpolates the

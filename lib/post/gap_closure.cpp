@@ -6,8 +6,6 @@
 #include <map>
 #include <numeric>
 
-#include "geometry/delaunay.hpp"
-
 namespace frostwall::post {
 
 namespace {
@@ -27,7 +25,8 @@ void find_sector(Gap& gap, const particles::ParticleSet<2>& P, double pipe_radiu
   const particles::MirrorPlane<2>* cut = nullptr;
   for (const auto& m : P.mirrors)
     if ((gap.from - m.point).dot(m.normal) * (gap.to - m.point).dot(m.normal) < 0.0) cut = &m;
-  std::vector<std::pair<geometry::Kernel2::Point_2, std::size_t>> points;
+  std::vector<particles::Vec<2>> where;
+  std::vector<double> spacing;
   for (std::size_t i = 0; i < P.n_free; ++i) {
     const particles::Vec<2>& x = P.position[i];
     const double r = x.norm();
@@ -38,25 +37,14 @@ void find_sector(Gap& gap, const particles::ParticleSet<2>& P, double pipe_radiu
     if ((x - gap.to).norm() <= near) touch |= 2;
     if (cut && std::abs((x - cut->point).dot(cut->normal)) <= 0.75 * P.spacing_of(i))
       touch |= (gap.inside_from == gap.from) ? 2 : 1;
-    points.emplace_back(geometry::Kernel2::Point_2(x[0], x[1]), gap.sector.size());
+    where.push_back(x);
+    spacing.push_back(P.spacing_of(i));
     gap.sector.push_back(std::uint32_t(i));
     gap.touches.push_back(touch);
   }
-  const geometry::IndexedDelaunay dt(points.begin(), points.end());
-  std::vector<std::vector<std::uint32_t>> near(gap.sector.size());
-  for (auto e = dt.finite_edges_begin(); e != dt.finite_edges_end(); ++e) {
-    const std::size_t u = e->first->vertex(dt.cw(e->second))->info();
-    const std::size_t v = e->first->vertex(dt.ccw(e->second))->info();
-    const std::uint32_t i = gap.sector[u], j = gap.sector[v];
-    if ((P.position[i] - P.position[j]).norm() > 3.0 * std::max(P.spacing_of(i), P.spacing_of(j))) continue;
-    near[u].push_back(std::uint32_t(v));
-    near[v].push_back(std::uint32_t(u));
-  }
-  gap.link_start.assign(1, 0);
-  for (const auto& n : near) {
-    gap.link.insert(gap.link.end(), n.begin(), n.end());
-    gap.link_start.push_back(std::uint32_t(gap.link.size()));
-  }
+  std::vector<std::uint32_t> source(where.size());
+  std::iota(source.begin(), source.end(), 0u);
+  gap.links = delaunay_links(where, source, where.size(), spacing);
 }
 
 }  // namespace
@@ -102,34 +90,14 @@ GapClosure::GapClosure(const particles::ParticleSet<2>& P, const std::vector<geo
 
 double GapClosure::bottleneck(const Gap& gap, const std::vector<double>& g) {
   // Kruskal-like: add the sector's particles from the most frozen up,
-  // joining linked ones (union-find); the level at which one component
-  // first touches both walls is the bottleneck.
-  const std::size_t n = gap.sector.size();
-  order_.resize(n);
+  // joining linked ones; the level at which one component first touches
+  // both walls is the bottleneck.
+  order_.resize(gap.sector.size());
   std::iota(order_.begin(), order_.end(), 0u);
   std::sort(order_.begin(), order_.end(),
             [&](std::uint32_t u, std::uint32_t v) { return g[gap.sector[u]] < g[gap.sector[v]]; });
-  parent_.resize(n);
-  std::iota(parent_.begin(), parent_.end(), 0u);
-  added_.assign(n, 0);
-  flags_.assign(gap.touches.begin(), gap.touches.end());
-  auto root = [&](std::uint32_t u) {
-    while (parent_[u] != u) u = parent_[u] = parent_[parent_[u]];
-    return u;
-  };
-  for (const std::uint32_t u : order_) {
-    added_[u] = 1;
-    for (std::uint32_t e = gap.link_start[u]; e < gap.link_start[u + 1]; ++e) {
-      const std::uint32_t v = gap.link[e];
-      if (!added_[v]) continue;
-      const std::uint32_t rv = root(v), ru = root(u);
-      if (rv == ru) continue;
-      parent_[rv] = ru;
-      flags_[ru] |= flags_[rv];
-    }
-    if (flags_[root(u)] == 3) return g[gap.sector[u]];
-  }
-  return std::numeric_limits<double>::infinity();  // the walls are not linked at any level
+  const auto last = join_.first_holding(gap.links, order_, gap.touches, 3);
+  return last ? g[gap.sector[*last]] : std::numeric_limits<double>::infinity();  // the walls are not linked
 }
 
 std::optional<double> GapClosure::time_to_fall(double change) const {

@@ -22,6 +22,7 @@
 #include "geometry/layout.hpp"
 #include "particles/pair_weights.hpp"
 #include "particles/particle_set.hpp"
+#include "post/link_graph.hpp"
 
 namespace frostwall::post {
 
@@ -36,7 +37,8 @@ struct Gap {
   std::vector<std::uint32_t> along;  // free particles on the segment
   // The sector's free particles, their Delaunay links (local indices) and
   // which wall each touches (bit 1: the first pipe's, bit 2: the second's).
-  std::vector<std::uint32_t> sector, link_start, link;
+  std::vector<std::uint32_t> sector;
+  LinkGraph links;
   std::vector<char> touches;
   std::optional<double> closed;         // s: a fully frozen path between the walls
   std::optional<double> bridge_closed;  // s: the straight bridge fully frozen
@@ -78,8 +80,8 @@ class GapClosure {
   double bottleneck(const Gap& gap, const std::vector<double>& g);
   std::vector<Gap> gaps_;
   double last_t_ = 0.0;
-  std::vector<std::uint32_t> order_, parent_;  // bottleneck scratch
-  std::vector<char> flags_, added_;
+  std::vector<std::uint32_t> order_;  // bottleneck scratch
+  ComponentJoin join_;
 };
 
 }  // namespace frostwall::post
