@@ -1,15 +1,11 @@
 #include "calibrate/forward.hpp"
 
 #include <algorithm>
-#include <atomic>
-#include <exception>
 #include <fstream>
-#include <mutex>
 #include <numeric>
-#include <omp.h>
-#include <thread>
 
 #include "freezing/heat_run.hpp"
+#include "particles/side_by_side.hpp"
 #include "freezing/sensor_points.hpp"
 #include "post/field_sampler.hpp"
 
@@ -83,31 +79,7 @@ ForwardResult run_forward(project::Project p, const std::vector<Reading>& readin
 std::vector<ForwardResult> side_by_side(const std::vector<std::function<ForwardResult()>>& tasks, int jobs,
                                         int threads) {
   std::vector<ForwardResult> results(tasks.size());
-  std::atomic<std::size_t> next{0};
-  std::exception_ptr failure;
-  std::mutex failure_lock;
-  auto worker = [&] {
-    omp_set_num_threads(std::max(1, threads));
-    for (std::size_t i; (i = next++) < tasks.size();) {
-      try {
-        results[i] = tasks[i]();
-      } catch (...) {
-        std::lock_guard lock(failure_lock);
-        if (!failure) failure = std::current_exception();
-      }
-    }
-  };
-  const int n = std::clamp(jobs, 1, std::max(1, static_cast<int>(tasks.size())));
-  if (n == 1) {
-    const int saved = omp_get_max_threads();
-    worker();
-    omp_set_num_threads(saved);
-  } else {
-    std::vector<std::thread> pool;
-    for (int j = 0; j < n; ++j) pool.emplace_back(worker);
-    for (auto& t : pool) t.join();
-  }
-  if (failure) std::rethrow_exception(failure);
+  particles::side_by_side(tasks.size(), jobs, threads, [&](std::size_t i) { results[i] = tasks[i](); });
   return results;
 }
 

@@ -1,6 +1,5 @@
 #include "study/run_study.hpp"
 
-#include <atomic>
 #include <chrono>
 #include <cstdlib>
 #include <fmt/core.h>
@@ -8,6 +7,7 @@
 #include <omp.h>
 #include <thread>
 
+#include "particles/side_by_side.hpp"
 #include "project/project.hpp"
 #include "report/report.hpp"
 #include "report/run_files.hpp"
@@ -110,20 +110,9 @@ StudyRun run_study(const Study& study, const StudyOptions& options) {
     std::lock_guard lock(note_lock);
     options.note(ranks.size > 1 ? fmt::format("rank {}: {}", ranks.rank, line) : line);
   };
-  std::atomic<std::size_t> next{0};
-  auto worker = [&] {
-    // Per-thread OpenMP setting: each worker's runs use this many threads.
-    omp_set_num_threads(result.threads);
-    for (std::size_t i; (i = next++) < mine.size();)
-      result.variants[mine[i]] = run_variant(study.variants[mine[i]], study.estimate_errors, note);
-  };
-  if (result.jobs == 1) {
-    worker();
-  } else {
-    std::vector<std::thread> pool;
-    for (int j = 0; j < result.jobs; ++j) pool.emplace_back(worker);
-    for (auto& t : pool) t.join();
-  }
+  particles::side_by_side(mine.size(), result.jobs, result.threads, [&](std::size_t i) {
+    result.variants[mine[i]] = run_variant(study.variants[mine[i]], study.estimate_errors, note);
+  });
   if (ranks.size > 1) {
     // Every rank's outcomes to every rank, back in the study's order.
     std::vector<std::string> texts;
