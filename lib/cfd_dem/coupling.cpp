@@ -7,7 +7,8 @@
 #include <cmath>
 #include <limits>
 #include <mpi.h>
-#include <numbers>
+
+#include "particles/sphere.hpp"
 
 namespace frostwall::cfd_dem {
 
@@ -24,8 +25,6 @@ pore_water::GridShape grid_shape(const project::CfdDem& c) {
 }
 
 int kind_index(pore_water::ForceKind k) { return static_cast<int>(k); }
-
-double sphere_volume(double radius) { return 4.0 / 3.0 * std::numbers::pi * radius * radius * radius; }
 
 }  // namespace
 
@@ -112,7 +111,7 @@ pore_water::SolveReport CfdDemCoupling::update(double inflow_velocity) {
         if (!implicit) held[k] += f[k];
       }
     }
-    const double mass = c_.grains.density * sphere_volume(r[i]);
+    const double mass = c_.grains.density * particles::sphere_volume_of_diameter(2.0 * r[i]);
     if (K > 0.0) shortest_relaxation_[0] = std::min(shortest_relaxation_[0], mass / K);
     // beta = K_v (1 - eps) / eps^2 with K_v the grid's drag per grain volume.
     const double eps = sample.porosity;
@@ -180,7 +179,7 @@ CfdDemCoupling::Motion CfdDemCoupling::motion() const {
   double sums[2] = {0.0, 0.0}, fastest = 0.0;  // energy, mass; the largest v^2
   for (int i = 0; i < n; ++i) {
     const double v2 = v[i][0] * v[i][0] + v[i][1] * v[i][1] + v[i][2] * v[i][2];
-    const double mass = c_.grains.density * sphere_volume(r[i]);
+    const double mass = c_.grains.density * particles::sphere_volume_of_diameter(2.0 * r[i]);
     sums[0] += 0.5 * mass * v2, sums[1] += mass;
     fastest = std::max(fastest, v2);
   }
@@ -202,7 +201,7 @@ GrainTotals CfdDemCoupling::totals() const {
   const double* r = lammps_.radius();
   const double* contacts = lammps_.contacts();
   for (int i = 0; i < n; ++i) {
-    const double volume = sphere_volume(r[i]);
+    const double volume = particles::sphere_volume_of_diameter(2.0 * r[i]);
     t.count += 1.0;
     t.in_cavity += lost(x[i]);
     t.volume += volume;

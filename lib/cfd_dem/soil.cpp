@@ -5,13 +5,13 @@
 #include <mpi.h>
 #include <numbers>
 
+#include "particles/sphere.hpp"
+
 namespace frostwall::cfd_dem {
 
 namespace {
 
 constexpr int heights = 8;  // height bins over the cavity's centre for the moved zones' boundaries
-
-double sphere_volume(double r) { return 4.0 / 3.0 * std::numbers::pi * r * r * r; }
 
 void sum_all(const dem::LammpsSession& l, double* data, int n) {
   if (l.ranks() > 1) MPI_Allreduce(MPI_IN_PLACE, data, n, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
@@ -104,7 +104,8 @@ SoilMeasures SoilWatch::measure(const CfdDemCoupling& coupling) const {
     if (c_.cavity) {
       const double dx = x[i][0] - c_.cavity->centre[0], dy = x[i][1] - c_.cavity->centre[1];
       const double rho = std::hypot(dx, dy);
-      if (rho < c_.cavity->radius && x[i][2] > c_.cavity->centre[2] + c_.cavity->radius) sums[0] += sphere_volume(r[i]);
+      if (rho < c_.cavity->radius && x[i][2] > c_.cavity->centre[2] + c_.cavity->radius)
+        sums[0] += particles::sphere_volume_of_diameter(2.0 * r[i]);
     }
     if (cell_a >= 0 && cell_of(x[i]) == cell_a) {
       sums[1] += 1.0;

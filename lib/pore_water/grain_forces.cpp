@@ -1,13 +1,12 @@
 #include "pore_water/grain_forces.hpp"
 
-#include <numbers>
 #include <stdexcept>
+
+#include "particles/sphere.hpp"
 
 namespace frostwall::pore_water {
 
-namespace {
-double sphere_volume(double d) { return std::numbers::pi / 6.0 * d * d * d; }
-}  // namespace
+using particles::sphere_volume_of_diameter;
 
 Vec3 DragForce::force(const Fluid& fluid, const Vec3&, double d, const Vec3& v, const FluidSample& s) const {
   return law_->force(fluid, d, s.porosity, s.fluid_velocity - v);
@@ -25,19 +24,19 @@ std::optional<LinearDrag> DragForce::linear_drag(const Fluid& fluid, double d, c
 }
 
 std::optional<LinearDrag> GridDragForce::linear_drag(const Fluid&, double d, const Vec3&, const FluidSample& s) const {
-  return LinearDrag{sphere_volume(d) * s.drag_coefficient, s.drag_velocity};
+  return LinearDrag{sphere_volume_of_diameter(d) * s.drag_coefficient, s.drag_velocity};
 }
 
 Vec3 GridDragForce::force(const Fluid&, const Vec3&, double d, const Vec3& v, const FluidSample& s) const {
-  return sphere_volume(d) * s.drag_coefficient * (s.drag_velocity - v);
+  return sphere_volume_of_diameter(d) * s.drag_coefficient * (s.drag_velocity - v);
 }
 
 Vec3 PressureGradientForce::force(const Fluid&, const Vec3&, double d, const Vec3&, const FluidSample& s) const {
-  return -sphere_volume(d) * s.pressure_gradient;
+  return -sphere_volume_of_diameter(d) * s.pressure_gradient;
 }
 
 Vec3 BuoyancyForce::force(const Fluid& fluid, const Vec3& gravity, double d, const Vec3&, const FluidSample&) const {
-  return -fluid.density * sphere_volume(d) * gravity;
+  return -fluid.density * sphere_volume_of_diameter(d) * gravity;
 }
 
 std::unique_ptr<FluidForce> make_fluid_force(const std::string& name) {
