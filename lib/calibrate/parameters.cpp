@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "project/units.hpp"
+
 namespace frostwall::calibrate {
 
 const char* parameter_unit(CalibratedParameter p) {
@@ -33,7 +35,7 @@ project::Project with_values(const project::Project& base, const std::vector<Fit
       case CalibratedParameter::darcy_flux: {
         auto& q = p.groundwater->darcy_flux;
         const double speed = std::hypot(q[0], q[1]);
-        for (auto& c : q) c *= v / 86400.0 / speed;
+        for (auto& c : q) c *= v / project::seconds_per_day / speed;
         p.groundwater->hydraulic_gradient.reset();
         break;
       }
@@ -72,7 +74,7 @@ std::string calibrated_project_text(const std::string& text, const project::Proj
     auto& g = j["groundwater"];
     g.erase("hydraulic_gradient");
     const auto& q = fitted.groundwater->darcy_flux;
-    g["darcy_flux"] = {q[0] * 86400.0, q[1] * 86400.0};
+    g["darcy_flux"] = {q[0] * project::seconds_per_day, q[1] * project::seconds_per_day};
     g["unit"] = "m/d";
   }
   j.erase("calibrate");

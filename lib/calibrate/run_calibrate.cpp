@@ -16,6 +16,7 @@
 #include "freezing/heat_run.hpp"
 #include "geometry/layout.hpp"
 #include "io/atomic_file.hpp"
+#include "project/units.hpp"
 #include "run/run_project.hpp"
 
 namespace frostwall::calibrate {
@@ -25,8 +26,6 @@ using project::Project;
 using project::ProjectError;
 
 namespace {
-
-constexpr double day = 86400.0;
 
 // Forward runs at once and threads each: the cores shared among the jobs.
 std::pair<int, int> share_cores(const CalibrateOptions& o, std::size_t runs) {
@@ -182,7 +181,8 @@ FitResult fit_readings(Context& ctx) {
   problem.note = ctx.options.note;
   const auto [jobs, threads] = share_cores(ctx.options, c.parameters.size());
   ctx.note(fmt::format("calibrate: {} readings to day {:g}, {} parameters; forward runs {} at a time on {} thread{}",
-                       c.readings.size(), ctx.last / day, c.parameters.size(), jobs, threads, threads > 1 ? "s" : ""));
+                       c.readings.size(), ctx.last / project::seconds_per_day, c.parameters.size(), jobs, threads,
+                       threads > 1 ? "s" : ""));
   FitResult fit = least_squares(problem);
   fs::remove_all(ctx.scratch);
   return fit;
@@ -245,7 +245,7 @@ nlohmann::ordered_json calibration_json(const Context& ctx, const FitResult& fit
   return {
       {"readings", c.file},
       {"reading_count", c.readings.size()},
-      {"last_reading_day", ctx.last / day},
+      {"last_reading_day", ctx.last / project::seconds_per_day},
       {"sensors", sensors},
       {"parameters", parameters_json(ctx.p, fit, iv)},
       {"correlation", {{"parameters", names}, {"matrix", correlation}}},
@@ -287,7 +287,7 @@ nlohmann::ordered_json run_calibration(const Project& p, const CalibrateOptions&
   std::ifstream in(ctx.out / "summary.json");
   nlohmann::ordered_json summary = nlohmann::ordered_json::parse(in);
   const Forecast f = forecast(nlohmann::json::parse(summary.dump()), runs.band, runs.steps, iv.covariance, iv.t,
-                              runs.design_time / day);
+                              runs.design_time / project::seconds_per_day);
   summary["calibration"] = calibration_json(ctx, fit, iv, f, fit_seconds);
   io::write_text_file(ctx.out / "calibration_fit.csv", fit_csv(p, fit.start_residuals, fit.residuals));
   io::write_text_file(ctx.out / "calibration.csv", parameters_csv(p, fit, iv));

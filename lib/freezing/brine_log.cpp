@@ -5,12 +5,9 @@
 
 #include "design/annulus_film.hpp"
 #include "io/atomic_file.hpp"
+#include "project/units.hpp"
 
 namespace frostwall::freezing {
-
-namespace {
-constexpr double day = 86400.0;
-}
 
 BrineLog::BrineLog(const project::Pipe& pipe, const thermal::ThermalModel& model, std::size_t boundary,
                    std::vector<double> sample_times)
@@ -38,7 +35,7 @@ BrineLog::Row BrineLog::row(const thermal::ThermalModel& model, double t, double
     pipes += perimeter_[g] / (M_PI * pipe_.diameter);
   }
   const double wall_mean = in_section > 0.0 ? wall_sum / in_section : brine;
-  return {t / day, brine, wall_mean, pipes > 0.0 ? section_rate / pipes : 0.0};
+  return {t / project::seconds_per_day, brine, wall_mean, pipes > 0.0 ? section_rate / pipes : 0.0};
 }
 
 void BrineLog::after_step(const thermal::ThermalModel& model, double t) {

@@ -7,10 +7,13 @@
 
 #include "groundwater/darcy_velocity.hpp"
 #include "post/flow_side.hpp"
+#include "project/units.hpp"
 #include "freezing/model.hpp"
 #include "thermal/backward_euler.hpp"
 
 namespace frostwall::freezing {
+
+using project::seconds_per_day;
 
 namespace {
 
@@ -120,11 +123,12 @@ const char* side_of(const particles::Vec<2>& middle, const std::array<double, 2>
 
 nlohmann::json gap_json(const post::Gap& gap, const std::array<double, 2>& q) {
   nlohmann::json days = nlohmann::json::array(), flow = nlohmann::json::array();
-  for (const auto& [t, through] : gap.flow) days.push_back(t / 86400.0), flow.push_back(through * 86400.0);
+  for (const auto& [t, through] : gap.flow)
+    days.push_back(t / seconds_per_day), flow.push_back(through * seconds_per_day);
   return {{"between", gap.between},
-          {"closure_day", gap.closed ? nlohmann::json(*gap.closed / 86400.0) : nlohmann::json(nullptr)},
+          {"closure_day", gap.closed ? nlohmann::json(*gap.closed / seconds_per_day) : nlohmann::json(nullptr)},
           {"bridge_closure_day",
-           gap.bridge_closed ? nlohmann::json(*gap.bridge_closed / 86400.0) : nlohmann::json(nullptr)},
+           gap.bridge_closed ? nlohmann::json(*gap.bridge_closed / seconds_per_day) : nlohmann::json(nullptr)},
           {"position", side_of(gap.middle, q)},
           {"middle", {gap.middle[0], gap.middle[1]}},
           {"flow", {{"days", days}, {"m3_per_day_per_m", flow}}}};
@@ -136,7 +140,7 @@ nlohmann::json groundwater_summary(const project::Groundwater& g, const Groundwa
                                    const post::GapClosure& gaps, const post::FrozenAreaTrend& frozen_area,
                                    std::optional<double> closure_time) {
   nlohmann::json s = {
-      {"darcy_flux_m_per_day", {g.darcy_flux[0] * 86400.0, g.darcy_flux[1] * 86400.0}},
+      {"darcy_flux_m_per_day", {g.darcy_flux[0] * seconds_per_day, g.darcy_flux[1] * seconds_per_day}},
       {"hydraulic_gradient", g.hydraulic_gradient ? nlohmann::json(*g.hydraulic_gradient) : nlohmann::json(nullptr)},
       {"permeability_m2", g.permeability_m2()},
       {"permeability_law", groundwater::permeability_law(g.law).name()},
@@ -150,9 +154,10 @@ nlohmann::json groundwater_summary(const project::Groundwater& g, const Groundwa
   s["last_gap"] = last ? gap_json(*last, g.darcy_flux) : nlohmann::json(nullptr);
   if (!closure_time) s["verdict"] = frozen_area.no_closure_verdict();
   else if (last && last->closed)
-    s["verdict"] = fmt::format("closed on day {:.1f}; the last gap, {} ({}), on day {:.1f}", *closure_time / 86400.0,
-                               last->between, side_of(last->middle, g.darcy_flux), *last->closed / 86400.0);
-  else s["verdict"] = fmt::format("closed on day {:.1f}", *closure_time / 86400.0);
+    s["verdict"] = fmt::format("closed on day {:.1f}; the last gap, {} ({}), on day {:.1f}",
+                               *closure_time / seconds_per_day, last->between, side_of(last->middle, g.darcy_flux),
+                               *last->closed / seconds_per_day);
+  else s["verdict"] = fmt::format("closed on day {:.1f}", *closure_time / seconds_per_day);
   s["frozen_area_growth_per_day"] = frozen_area.recent_growth_per_day();
   return s;
 }

@@ -22,6 +22,7 @@
 #include "post/frozen_area_trend.hpp"
 #include "post/front.hpp"
 #include "post/gap_closure.hpp"
+#include "project/units.hpp"
 #include "thermal/backward_euler.hpp"
 #include "thermal/super_time_stepping.hpp"
 #include "thermal/time_loop.hpp"
@@ -147,7 +148,7 @@ void HeatRun::after_step(const thermal::ThermalModel& m, double t) {
     }
     double area = 0.0;
     for (std::size_t i = 0; i < m.free_count(); ++i) area += m.volume()[i] * (1.0 - m.liquid_fraction()[i]);
-    frozen_area_.add(t / 86400.0, area);
+    frozen_area_.add(t / project::seconds_per_day, area);
   }
   if (closure_) closure_->after_step(m, t, gaps_ ? &*gaps_ : nullptr);
   if (brine_) brine_->after_step(m, t);
@@ -256,8 +257,10 @@ nlohmann::ordered_json HeatRun::summary(const thermal::TimeLoopResult& loop) con
   if (built_.shaft) {
     const auto closure_time = closure_->closure_time();
     const auto contact_time = closure_->contact_time();
-    summary["closure_time_days"] = closure_time ? nlohmann::json(*closure_time / 86400.0) : nlohmann::json(nullptr);
-    summary["front_contact_days"] = contact_time ? nlohmann::json(*contact_time / 86400.0) : nlohmann::json(nullptr);
+    summary["closure_time_days"] = closure_time ? nlohmann::json(*closure_time / project::seconds_per_day)
+                                                : nlohmann::json(nullptr);
+    summary["front_contact_days"] = contact_time ? nlohmann::json(*contact_time / project::seconds_per_day)
+                                                 : nlohmann::json(nullptr);
     const nlohmann::json parts = results_->finish(out_);
     for (const char* key : {"wall", "design", "monitoring", "interface"})
       if (parts.contains(key)) summary[key] = parts[key];

@@ -8,6 +8,7 @@
 #include "freezing/model.hpp"
 #include "groundwater/permeability_law.hpp"
 #include "io/output_directory.hpp"
+#include "project/units.hpp"
 #include "thermal/phase_change.hpp"
 
 namespace frostwall::freezing {
@@ -56,8 +57,8 @@ void check_explicit_advection(const Project& p) {
         "groundwater.darcy_flux: {:g} m/d needs about {:.2g} explicit advection steps of {:.3g} s with "
         "\"advection\": \"{}\" (more than {:g}); the coupled step follows any flux (\"advection\": \"coupled\" "
         "with the implicit integrator, the default)",
-        g.speed() * 86400.0, steps, step, g.advection == project::Advection::limited ? "limited" : "upwind",
-        most_steps)});
+        g.speed() * project::seconds_per_day, steps, step,
+        g.advection == project::Advection::limited ? "limited" : "upwind", most_steps)});
 }
 
 }  // namespace

@@ -12,6 +12,7 @@
 #include "post/closure.hpp"
 #include "post/flow_side.hpp"
 #include "post/isoline.hpp"
+#include "project/units.hpp"
 #include "freezing/design_check.hpp"
 #include "sph/laplacian.hpp"
 #include "freezing/output_frames.hpp"
@@ -22,7 +23,6 @@
 namespace frostwall::freezing {
 
 namespace {
-constexpr double day = 86400.0;
 using nlohmann::json;
 
 json or_null(const std::optional<double>& v) { return v ? json(*v) : json(nullptr); }
@@ -97,7 +97,7 @@ ShaftResults::Reading ShaftResults::read(double t, const std::vector<double>& li
                                          const std::vector<double>& temperature) const {
   const auto fan = fan_gauge_->measure(liquid_fraction, temperature);
   const auto planes = planes_gauge_->measure(liquid_fraction, temperature);
-  Reading r{t / day,
+  Reading r{t / project::seconds_per_day,
             planes.extents.OA(),
             planes.extents.OB(),
             fan.extents.min_thickness,
@@ -130,7 +130,7 @@ void ShaftResults::sample(double t, const std::vector<double>& liquid_fraction,
                           const std::vector<double>& temperature) {
   series_.push_back(read(t, liquid_fraction, temperature));
   const auto T = (*sensors_)(temperature);
-  for (std::size_t s = 0; s < T.size(); ++s) sensor_readings_[s].emplace_back(t / day, T[s]);
+  for (std::size_t s = 0; s < T.size(); ++s) sensor_readings_[s].emplace_back(t / project::seconds_per_day, T[s]);
 }
 
 void ShaftResults::snapshot(double t, const thermal::ThermalModel& model, const std::filesystem::path& out,
@@ -168,7 +168,7 @@ void ShaftResults::snapshot(double t, const thermal::ThermalModel& model, const 
                                          [&](const particles::Vec<2>& x) { return geometry::inside_wedge(wedge, x); });
   const std::string file = "interface" + stem.substr(5) + ".vtp";
   io::write_vtp(out / file, kept, io::file_labels(project_));
-  json entry = {{"day", t / day}, {"file", file}};
+  json entry = {{"day", t / project::seconds_per_day}, {"file", file}};
   if (!ring_points_.empty()) {
     const std::string ring_file = "interface_ring" + stem.substr(5) + ".vtp";
     if (!ring_mesh_) {

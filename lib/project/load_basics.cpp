@@ -5,6 +5,8 @@
 #include <array>
 #include <fmt/format.h>
 
+#include "project/units.hpp"
+
 namespace frostwall::project {
 
 using detail::Json;
@@ -12,7 +14,6 @@ using detail::Node;
 
 namespace {
 
-constexpr double seconds_per_day = 86400.0;
 constexpr double pure_water_latent_heat = 334000.0;  // J/kg
 
 std::array<double, 2> read_conductivity(const Node& n) {

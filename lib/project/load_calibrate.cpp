@@ -12,6 +12,7 @@
 #include <map>
 
 #include "project/csv_cells.hpp"
+#include "project/units.hpp"
 
 namespace frostwall::project {
 
@@ -38,7 +39,8 @@ constexpr CalibratedParameter all_parameters[] = {
 double start_value(CalibratedParameter which, const Project& project) {
   switch (which) {
     case CalibratedParameter::initial_temperature: return project.domain.initial_temperature;
-    case CalibratedParameter::darcy_flux: return project.groundwater ? project.groundwater->speed() * 86400.0 : 0.0;
+    case CalibratedParameter::darcy_flux:
+      return project.groundwater ? project.groundwater->speed() * seconds_per_day : 0.0;
     default: return 1.0;
   }
 }

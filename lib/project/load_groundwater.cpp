@@ -2,6 +2,7 @@
 #include <cmath>
 
 #include "project/load_groundwater.hpp"
+#include "project/units.hpp"
 
 namespace frostwall::project {
 
@@ -53,8 +54,9 @@ Groundwater read_groundwater(const Node& n) {
       g.law.floor = *floor;
     }
   }
-  double per_second = 1.0 / 86400.0;
-  if (const auto unit = n["unit"].choice<double>("unit", {{"m/d", 1.0 / 86400.0}, {"m/s", 1.0}})) per_second = *unit;
+  double per_second = 1.0 / seconds_per_day;
+  if (const auto unit = n["unit"].choice<double>("unit", {{"m/d", 1.0 / seconds_per_day}, {"m/s", 1.0}}))
+    per_second = *unit;
   if (n["darcy_flux"].present() == n["hydraulic_gradient"].present())
     n["darcy_flux"].problem(
         R"(give either "darcy_flux" (the regional flux) or "hydraulic_gradient" (the head's fall per metre))");

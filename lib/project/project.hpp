@@ -18,6 +18,7 @@
 #include "project/groundwater.hpp"
 #include "project/mechanics.hpp"
 #include "project/numerics.hpp"
+#include "project/units.hpp"
 
 namespace frostwall::project {
 

@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "project/project.hpp"
+#include "project/units.hpp"
 
 namespace frostwall::project {
 
@@ -24,7 +25,7 @@ double TimeSettings::unit_seconds() const {
   switch (unit) {
     case TimeUnit::s: return 1.0;
     case TimeUnit::h: return 3600.0;
-    case TimeUnit::d: return 86400.0;
+    case TimeUnit::d: return seconds_per_day;
   }
   return 1.0;  // unreachable; keeps -Wreturn-type quiet
 }

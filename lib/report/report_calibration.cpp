@@ -115,7 +115,8 @@ void add_calibration(const RunRecord& run, json& view) {
       c["reading_count"].get<int>(), c["sensors"].size(), c.value("readings", ""),
       unit == "d"
           ? "day " + number(c["last_reading_day"], 1)
-          : number(c["last_reading_day"].get<double>() * 86400.0 / (unit == "h" ? 3600.0 : 1.0), 1) + " " + unit,
+          : number(c["last_reading_day"].get<double>() * project::seconds_per_day / (unit == "h" ? 3600.0 : 1.0), 1) +
+                " " + unit,
       number(c["rms_misfit_before"], 3), number(c["rms_misfit_after"], 3), c["iterations"].get<int>(),
       c["forward_runs"].get<int>(), number(c["fit_seconds"], 0), number(c["t_quantile"], 2), number(c["noise"], 3),
       c["noise_given"].get<bool>() ? "as given" : "estimated from the misfit");

@@ -16,7 +16,7 @@ using nlohmann::json;
 
 namespace {
 
-constexpr double day = 86400.0;
+constexpr double day = project::seconds_per_day;
 
 std::string pattern_name(project::Pattern p) {
   switch (p) {

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "project/json_reader.hpp"
+#include "project/units.hpp"
 #include "study/json_path.hpp"
 
 namespace frostwall::study {
@@ -197,7 +198,7 @@ std::optional<double> last_snapshot_day(const json& base) {
         base["time"]["snapshots"].back().is_number()))
     return std::nullopt;
   const std::string unit = base["time"].value("unit", "d");
-  const double factor = unit == "s" ? 1.0 / 86400 : (unit == "h" ? 1.0 / 24 : 1.0);
+  const double factor = unit == "s" ? 1.0 / project::seconds_per_day : (unit == "h" ? 1.0 / 24 : 1.0);
   return base["time"]["snapshots"].back().get<double>() * factor;
 }
 
