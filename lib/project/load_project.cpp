@@ -73,16 +73,6 @@ TimeSettings detail::read_time(const Node& n) {
 
 namespace {
 
-std::string join(const std::vector<std::string>& lines) {
-  std::string text;
-  for (const auto& line : lines) text += (text.empty() ? "" : "\n") + line;
-  return text;
-}
-
-}  // namespace
-
-namespace {
-
 // A boundary is "adiabatic" or {"temperature": T}: returns the node of T, or
 // nullopt for adiabatic (and for a bad value, which is reported).
 std::optional<Node> side_temperature(const Node& n) {
@@ -396,9 +386,6 @@ Project read_project(const Node& root, const std::string& base_directory) {
 }
 
 }  // namespace
-
-ProjectError::ProjectError(std::vector<std::string> problems)
-    : std::runtime_error(join(problems)), problems_(std::move(problems)) {}
 
 Project parse_project(const std::string& json_text) { return parse_project(json_text, "project"); }
 

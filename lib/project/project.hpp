@@ -5,7 +5,6 @@
 
 #include <array>
 #include <optional>
-#include <stdexcept>
 #include <string>
 #include <utility>
 #include <variant>
@@ -16,6 +15,7 @@
 #include "project/cfd_dem.hpp"
 #include "project/design.hpp"
 #include "project/groundwater.hpp"
+#include "project/input_error.hpp"
 #include "project/mechanics.hpp"
 #include "project/numerics.hpp"
 #include "project/units.hpp"
@@ -246,13 +246,9 @@ struct Project {
 
 // Every problem found in a project file, one line each, in the form
 // "json.path: what is wrong". Thrown before any work is done.
-class ProjectError : public std::runtime_error {
+class ProjectError : public InputError {
  public:
-  explicit ProjectError(std::vector<std::string> problems);
-  const std::vector<std::string>& problems() const { return problems_; }
-
- private:
-  std::vector<std::string> problems_;
+  using InputError::InputError;
 };
 
 // The loader's spacing checks, as one problem each (nullopt: fine): a

@@ -21,12 +21,6 @@ namespace {
 
 constexpr std::size_t max_variants = 1000;  // a typo in a product list should not start a week of runs
 
-std::string join(const std::vector<std::string>& lines) {
-  std::string text;
-  for (const auto& line : lines) text += (text.empty() ? "" : "\n") + line;
-  return text;
-}
-
 std::optional<std::string> read_file(const fs::path& path, std::string& error) {
   std::error_code ec;
   if (fs::is_directory(path, ec)) {
@@ -152,9 +146,6 @@ std::vector<Parameter> read_product(const Node& n) {
 }
 
 }  // namespace
-
-StudyError::StudyError(std::vector<std::string> problems)
-    : std::runtime_error(join(problems)), problems_(std::move(problems)) {}
 
 bool variant_name_character(char c) {
   return std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '_' || c == '-' || c == '+' || c == '=';

@@ -18,9 +18,10 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <optional>
-#include <stdexcept>
 #include <string>
 #include <vector>
+
+#include "project/input_error.hpp"
 
 namespace frostwall::study {
 
@@ -44,13 +45,9 @@ struct Study {
 };
 
 // Every problem of a study file, "json.path: what is wrong", one per line.
-class StudyError : public std::runtime_error {
+class StudyError : public project::InputError {
  public:
-  explicit StudyError(std::vector<std::string> problems);
-  const std::vector<std::string>& problems() const { return problems_; }
-
- private:
-  std::vector<std::string> problems_;
+  using InputError::InputError;
 };
 
 // Reads the study file and the base project it names (as JSON: a variant's
