@@ -2,14 +2,13 @@
 
 #include <cmath>
 
+#include "project/json_numbers.hpp"
+
 namespace frostwall::calibrate {
 
-namespace {
+using project::number_at;
 
-std::optional<double> number_at(const nlohmann::json& j, const char* key) {
-  if (!j.is_object() || !j.contains(key) || !j[key].is_number()) return std::nullopt;
-  return j[key].get<double>();
-}
+namespace {
 
 const nlohmann::json* wall_entry(const nlohmann::json& summary, double day) {
   if (!summary.contains("wall") || !summary["wall"].is_array()) return nullptr;

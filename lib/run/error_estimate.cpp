@@ -8,6 +8,7 @@
 
 #include "io/atomic_file.hpp"
 #include "io/csv_table.hpp"
+#include "project/json_numbers.hpp"
 #include "run/error_law.hpp"
 
 namespace frostwall::run {
@@ -15,16 +16,13 @@ namespace frostwall::run {
 namespace fs = std::filesystem;
 using nlohmann::json;
 using nlohmann::ordered_json;
+using project::number_or_nan;
 
 namespace {
 
 constexpr double missing = std::numeric_limits<double>::quiet_NaN();
 constexpr const char* scratch_name = ".error_estimate";
 
-template <class J>
-double number(const J& v) {
-  return v.is_number() ? v.template get<double>() : missing;
-}
 ordered_json or_null(double e) { return std::isfinite(e) ? ordered_json(e) : ordered_json(nullptr); }
 
 // The member at a path of keys, or null.
@@ -59,7 +57,7 @@ struct Twins {
 // the nominal 1.5 when a summary lacks it.
 double twin_ratio(double h, const std::vector<json>& twins) {
   double ratio = 0.0;
-  for (const auto& s : twins) ratio += number(at(s, {"run", "spacing"})) / h / static_cast<double>(twins.size());
+  for (const auto& s : twins) ratio += number_or_nan(at(s, {"run", "spacing"})) / h / static_cast<double>(twins.size());
   return std::isfinite(ratio) && ratio > 1.0 ? ratio : 1.5;
 }
 
@@ -72,9 +70,9 @@ void number_entry(ordered_json& summary, const Twins& twins, const std::vector<s
   }
   if (!parent->is_object() || !parent->contains(path.back())) return;
   std::vector<double> coarse;
-  for (const auto* s : twins.summaries) coarse.push_back(number(at(*s, path)));
+  for (const auto* s : twins.summaries) coarse.push_back(number_or_nan(at(*s, path)));
   put_after(*parent, path.back(), path.back() + "_error",
-            or_null(number_error(number((*parent)[path.back()]), coarse, twins.ratio)));
+            or_null(number_error(number_or_nan((*parent)[path.back()]), coarse, twins.ratio)));
 }
 
 // A quantity of every wall entry (one per snapshot), as one series.
@@ -82,9 +80,9 @@ void wall_entry(ordered_json& wall, const std::vector<const json*>& twin_walls, 
                 const std::vector<std::string>& path) {
   std::vector<double> fine;
   std::vector<std::vector<double>> coarse(twin_walls.size());
-  for (const auto& w : wall) fine.push_back(number(at(w, path)));
+  for (const auto& w : wall) fine.push_back(number_or_nan(at(w, path)));
   for (std::size_t k = 0; k < twin_walls.size(); ++k)
-    for (const auto& w : *twin_walls[k]) coarse[k].push_back(number(at(w, path)));
+    for (const auto& w : *twin_walls[k]) coarse[k].push_back(number_or_nan(at(w, path)));
   const auto errors = series_errors(fine, coarse, ratio);
   const std::vector<std::string> parent_path(path.begin(), path.end() - 1);
   for (std::size_t t = 0; t < wall.size(); ++t) {
@@ -104,10 +102,11 @@ ordered_json row_errors(const ordered_json& rows, const std::vector<const json*>
   for (std::size_t c = 1; c < columns; ++c) {
     std::vector<double> fine;
     std::vector<std::vector<double>> coarse(twin_rows.size());
-    for (const auto& r : rows) fine.push_back(r.size() > c ? number(r[c]) : missing);
+    for (const auto& r : rows) fine.push_back(r.size() > c ? number_or_nan(r[c]) : missing);
     for (std::size_t k = 0; k < twin_rows.size(); ++k)
       if (twin_rows[k]->is_array())
-        for (const auto& r : *twin_rows[k]) coarse[k].push_back(r.is_array() && r.size() > c ? number(r[c]) : missing);
+        for (const auto& r : *twin_rows[k])
+          coarse[k].push_back(r.is_array() && r.size() > c ? number_or_nan(r[c]) : missing);
     errors[c] = series_errors(fine, coarse, ratio);
   }
   for (std::size_t t = 0; t < rows.size(); ++t) {
@@ -139,11 +138,11 @@ void gap_entries(ordered_json& summary, const Twins& twins) {
     for (const auto* s : twins.summaries) {
       double c = missing;
       for (const auto& g : at(*s, {"groundwater", "gaps"}))
-        if (g.value("between", json()) == json(gap["between"])) c = number(g.value("closure_day", json()));
+        if (g.value("between", json()) == json(gap["between"])) c = number_or_nan(g.value("closure_day", json()));
       coarse.push_back(c);
     }
     put_after(gap, "closure_day", "closure_day_error",
-              or_null(number_error(number(gap["closure_day"]), coarse, twins.ratio)));
+              or_null(number_error(number_or_nan(gap["closure_day"]), coarse, twins.ratio)));
   };
   auto& g = summary["groundwater"];
   if (g.contains("gaps"))
@@ -156,7 +155,7 @@ void gap_entries(ordered_json& summary, const Twins& twins) {
 void add_summary_errors(ordered_json& summary, const std::vector<json>& twin_summaries) {
   Twins twins;
   for (const auto& s : twin_summaries) twins.summaries.push_back(&s);
-  twins.ratio = twin_ratio(number(at(summary, {"run", "spacing"})), twin_summaries);
+  twins.ratio = twin_ratio(number_or_nan(at(summary, {"run", "spacing"})), twin_summaries);
   number_entry(summary, twins, {"closure_time_days"});
   number_entry(summary, twins, {"front_contact_days"});
   if (summary.contains("wall") && summary["wall"].is_array()) {
@@ -244,7 +243,7 @@ void add_error_estimate(const project::Project& p, const project::RunOptions& op
   const fs::path out = p.output.directory;
   const auto start = std::chrono::steady_clock::now();
   ordered_json summary = read_summary<ordered_json>(out / "summary.json");
-  const double h = number(at(summary, {"run", "spacing"}));
+  const double h = number_or_nan(at(summary, {"run", "spacing"}));
   Scratch scratch{out / scratch_name};
   std::vector<json> twins;
   std::string unavailable;
@@ -279,8 +278,8 @@ void add_error_estimate(const project::Project& p, const project::RunOptions& op
     add_summary_errors(summary, twins);
     std::vector<double> spacings, days;
     for (const auto& t : twins) {
-      spacings.push_back(number(at(t, {"run", "spacing"})));
-      days.push_back(number(t.value("closure_time_days", json())));
+      spacings.push_back(number_or_nan(at(t, {"run", "spacing"})));
+      days.push_back(number_or_nan(t.value("closure_time_days", json())));
     }
     summary["error_estimate"] = {{"status", "done"},
                                  {"covers", "the discretisation only (spacing and the time steps that follow it)"},
@@ -288,7 +287,7 @@ void add_error_estimate(const project::Project& p, const project::RunOptions& op
                                  {"spacings", spacings},
                                  {"order", method_order},
                                  {"coarse_seconds", seconds},
-                                 {"run_seconds", number(at(summary, {"run", "wall_seconds"}))}};
+                                 {"run_seconds", number_or_nan(at(summary, {"run", "wall_seconds"}))}};
     if (summary.contains("closure_time_days")) summary["error_estimate"]["coarse_closure_days"] = days;
     for (const char* table : {"wall.csv", "monitoring.csv"}) {
       std::vector<fs::path> files;
