@@ -182,98 +182,122 @@ void FluidGrid::update_faces() {
   }
 }
 
-SolveReport FluidGrid::solve(double tolerance, double picard_tolerance, int max_picard) {
-  using Matrix = Eigen::SparseMatrix<double>;
+namespace {
+
+// The pressure equation with the resistance beta: per cell, the sum over
+// its faces of the outward mixture flux = 0, the slip part T (p_c - p_nb)
+// with T = A / (h beta_f) in the matrix, the grains' flux and the fixed
+// inflows and pressures of the box's faces in the right-hand side.
+void assemble_pressure(const GridShape& shape, const std::array<FaceCondition, 6>& faces,
+                       const std::vector<double>& beta, const std::vector<Vec3>& grain_velocity,
+                       Eigen::SparseMatrix<double>& K, Eigen::VectorXd& rhs) {
+  const int n = shape.count();
+  std::vector<Eigen::Triplet<double>> entries;
+  entries.reserve(7 * std::size_t(n));
+  rhs = Eigen::VectorXd::Zero(n);
+  for (int c = 0; c < n; ++c) {
+    const Cell pc = coords(shape, c);
+    for (int a = 0; a < 3; ++a) {
+      const double h = shape.cell_size(a), area = shape.face_area(a);
+      if (pc[a] + 1 < shape.cells[a]) {
+        Cell q = pc;
+        q[a] += 1;
+        const int nb = flat(shape, q);
+        const double T = area / (h * 0.5 * (beta[c] + beta[nb]));
+        entries.emplace_back(c, c, T);
+        entries.emplace_back(nb, nb, T);
+        entries.emplace_back(c, nb, -T);
+        entries.emplace_back(nb, c, -T);
+        const double grains = area * 0.5 * (grain_velocity[c][a] + grain_velocity[nb][a]);
+        rhs[c] -= grains;
+        rhs[nb] += grains;
+      }
+      for (int side = 0; side < 2; ++side) {
+        if (pc[a] != (side == 0 ? 0 : shape.cells[a] - 1)) continue;
+        const FaceCondition& bc = faces[2 * a + side];
+        if (bc.kind == FaceKind::inflow_velocity) {
+          rhs[c] += area * bc.value;
+        } else if (bc.kind == FaceKind::pressure) {
+          const double T = area / (0.5 * h * beta[c]);
+          entries.emplace_back(c, c, T);
+          rhs[c] += T * bc.value;
+        }
+      }
+    }
+  }
+  K.resize(n, n);
+  K.setFromTriplets(entries.begin(), entries.end());
+}
+
+}  // namespace
+
+bool FluidGrid::solve_pressure(double linear_tolerance, SolveReport& report) {
   const int n = shape_.count();
+  Eigen::SparseMatrix<double> K;
+  Eigen::VectorXd rhs;
+  assemble_pressure(shape_, faces_, beta_, grain_velocity_, K, rhs);
+  if (!solver_) {
+    solver_ = std::make_unique<PressureSolver>();
+    solver_->cg.analyzePattern(K);
+  }
+  auto& cg = solver_->cg;
+  cg.setTolerance(linear_tolerance);
+  cg.factorize(K);
+  // Warm start from the last pressure.
+  Eigen::VectorXd p = Eigen::Map<const Eigen::VectorXd>(pressure_.data(), n);
+  bool linear_ok = cg.info() == Eigen::Success;
+  if (linear_ok) {
+    p = cg.solveWithGuess(rhs, p);
+    linear_ok = cg.info() == Eigen::Success;
+  }
+  report.linear_iterations += int(cg.iterations());
+  report.residual = cg.error();
+  std::copy(p.data(), p.data() + n, pressure_.begin());
+  update_faces();
+  return linear_ok;
+}
+
+double FluidGrid::next_resistance(std::vector<double>& next, std::vector<double>& last_step, bool damp) const {
+  const int n = shape_.count();
+  update_resistance(next);
+  // Where beta swings about the answer (the inertial, Forchheimer term
+  // rules: beta ~ |U| and plain Picard gives beta_k+1 = b G / beta_k),
+  // take the geometric mean of the old and the new, which lands on it;
+  // elsewhere (Darcy-like cells) plain Picard converges in a step or two.
+  for (int c = 0; c < n; ++c) {
+    const double step = next[c] - beta_[c];
+    if (damp && step * last_step[c] < 0.0) next[c] = std::sqrt(next[c] * beta_[c]);
+    last_step[c] = next[c] - beta_[c];
+  }
+  // The change in each cell's pressure gradient beta |U_slip| that the
+  // new beta makes, over the largest gradient in the grid: cells with
+  // next to no flow do not hold the iteration up.
+  double change = 0.0, largest = 0.0;
+  for (int c = 0; c < n; ++c) {
+    const double speed = face_mean(shape_, slip_, c).norm();
+    largest = std::max(largest, beta_[c] * speed);
+    change = std::max(change, std::abs(next[c] - beta_[c]) * speed);
+  }
+  return largest > 0.0 ? change / largest : 0.0;
+}
+
+SolveReport FluidGrid::solve(double tolerance, double picard_tolerance, int max_picard) {
   SolveReport report;
   // Warm start: beta from the last solution's slip, with the current grains.
   update_resistance(beta_);
-  Eigen::VectorXd p = Eigen::Map<const Eigen::VectorXd>(pressure_.data(), n);
-  std::vector<double> next, last_step(n, 0.0);
+  std::vector<double> next, last_step(shape_.count(), 0.0);
   // Inexact Picard: early solves only as tight as beta is settled, and one
   // last solve at the full tolerance with the final beta (the mass balance).
   double linear_tolerance = std::max(tolerance, 1e-6);
   bool final_pass = false;
   for (int it = 1; it <= max_picard + 1; ++it) {
-    // Per cell: sum over faces of the outward mixture flux = 0, the slip
-    // part T (p_c - p_nb) with T = A / (h beta_f) in the matrix.
-    std::vector<Eigen::Triplet<double>> entries;
-    entries.reserve(7 * std::size_t(n));
-    Eigen::VectorXd rhs = Eigen::VectorXd::Zero(n);
-    for (int c = 0; c < n; ++c) {
-      const Cell pc = coords(shape_, c);
-      for (int a = 0; a < 3; ++a) {
-        const double h = shape_.cell_size(a), area = shape_.face_area(a);
-        if (pc[a] + 1 < shape_.cells[a]) {
-          Cell q = pc;
-          q[a] += 1;
-          const int nb = flat(shape_, q);
-          const double T = area / (h * 0.5 * (beta_[c] + beta_[nb]));
-          entries.emplace_back(c, c, T);
-          entries.emplace_back(nb, nb, T);
-          entries.emplace_back(c, nb, -T);
-          entries.emplace_back(nb, c, -T);
-          const double grains = area * 0.5 * (grain_velocity_[c][a] + grain_velocity_[nb][a]);
-          rhs[c] -= grains;
-          rhs[nb] += grains;
-        }
-        for (int side = 0; side < 2; ++side) {
-          if (pc[a] != (side == 0 ? 0 : shape_.cells[a] - 1)) continue;
-          const FaceCondition& bc = faces_[2 * a + side];
-          if (bc.kind == FaceKind::inflow_velocity) {
-            rhs[c] += area * bc.value;
-          } else if (bc.kind == FaceKind::pressure) {
-            const double T = area / (0.5 * h * beta_[c]);
-            entries.emplace_back(c, c, T);
-            rhs[c] += T * bc.value;
-          }
-        }
-      }
-    }
-    Matrix K(n, n);
-    K.setFromTriplets(entries.begin(), entries.end());
-    if (!solver_) {
-      solver_ = std::make_unique<PressureSolver>();
-      solver_->cg.analyzePattern(K);
-    }
-    auto& cg = solver_->cg;
-    cg.setTolerance(linear_tolerance);
-    cg.factorize(K);
-    bool linear_ok = cg.info() == Eigen::Success;
-    if (linear_ok) {
-      p = cg.solveWithGuess(rhs, p);
-      linear_ok = cg.info() == Eigen::Success;
-    }
     report.picard_iterations = it;
-    report.linear_iterations += int(cg.iterations());
-    report.residual = cg.error();
-    std::copy(p.data(), p.data() + n, pressure_.begin());
-    update_faces();
-    if (!linear_ok) return report;
+    if (!solve_pressure(linear_tolerance, report)) return report;
     if (final_pass) {
       report.converged = true;
       break;
     }
-    update_resistance(next);
-    // Where beta swings about the answer (the inertial, Forchheimer term
-    // rules: beta ~ |U| and plain Picard gives beta_k+1 = b G / beta_k),
-    // take the geometric mean of the old and the new, which lands on it;
-    // elsewhere (Darcy-like cells) plain Picard converges in a step or two.
-    for (int c = 0; c < n; ++c) {
-      const double step = next[c] - beta_[c];
-      if (it > 1 && step * last_step[c] < 0.0) next[c] = std::sqrt(next[c] * beta_[c]);
-      last_step[c] = next[c] - beta_[c];
-    }
-    // The change in each cell's pressure gradient beta |U_slip| that the
-    // new beta makes, over the largest gradient in the grid: cells with
-    // next to no flow do not hold the iteration up.
-    double change = 0.0, largest = 0.0;
-    for (int c = 0; c < n; ++c) {
-      const double speed = face_mean(shape_, slip_, c).norm();
-      largest = std::max(largest, beta_[c] * speed);
-      change = std::max(change, std::abs(next[c] - beta_[c]) * speed);
-    }
-    change = largest > 0.0 ? change / largest : 0.0;
+    const double change = next_resistance(next, last_step, it > 1);
     // Stop with the beta the pressure was solved with, so the face fluxes
     // balance exactly.
     if (change < picard_tolerance || it >= max_picard) {

@@ -127,6 +127,14 @@ class FluidGrid {
   void check_faces() const;
   void update_resistance(std::vector<double>& beta) const;
   void update_faces();
+  // One Picard step's pressure solve with the present beta (warm started
+  // from the last pressure), then the faces' flows; false when the linear
+  // solver failed. Adds its iterations and residual to `report`.
+  bool solve_pressure(double linear_tolerance, SolveReport& report);
+  // The next beta from the last solve's slip, damped where it swings
+  // (`damp`: from the second step on; last_step: each cell's last change),
+  // and the change it makes, relative to the largest pressure gradient.
+  double next_resistance(std::vector<double>& next, std::vector<double>& last_step, bool damp) const;
   void update_drag();
   double cell_outflow(int cell) const;
   Vec3 centre_velocity(int cell) const;
