@@ -291,7 +291,7 @@ constexpr double repose_low = 20.0, repose_high = 35.0;
 }  // namespace
 
 TEST_CASE("leak, scaled: a kept cavity holds what falls in, and the crater's flanks stand near the angle of repose",
-          "[cfd_dem][leak]") {
+          "[cfd_dem][leak][two_cores]") {
   const auto [summary, heap] = run_both(kept_collapse(), scaled_heap(1));
   const json& soil = summary["soil"];
   CHECK(soil["cavity"]["mode"] == "keep");
