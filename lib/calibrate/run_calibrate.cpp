@@ -6,12 +6,12 @@
 #include <cmath>
 #include <fmt/format.h>
 #include <fstream>
-#include <omp.h>
 
 #include "calibrate/fit.hpp"
 #include "calibrate/forecast.hpp"
 #include "calibrate/forward.hpp"
 #include "calibrate/intervals.hpp"
+#include "particles/side_by_side.hpp"
 #include "calibrate/parameters.hpp"
 #include "freezing/heat_run.hpp"
 #include "geometry/layout.hpp"
@@ -29,7 +29,7 @@ namespace {
 
 // Forward runs at once and threads each: the cores shared among the jobs.
 std::pair<int, int> share_cores(const CalibrateOptions& o, std::size_t runs) {
-  const int cores = std::max(1, omp_get_num_procs());
+  const int cores = particles::usable_cores();
   const int jobs = std::clamp(o.jobs > 0 ? o.jobs : cores, 1, std::max<int>(1, static_cast<int>(runs)));
   const int threads = o.threads > 0 ? o.threads : std::max(1, cores / jobs);
   return {jobs, threads};

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cstdlib>
 #include <exception>
 #include <mutex>
 #include <omp.h>
@@ -9,6 +10,16 @@
 #include <vector>
 
 namespace frostwall::particles {
+
+int usable_cores() {
+  int cores = std::max(1, omp_get_num_procs());
+  if (const char* limit = std::getenv("OMP_NUM_THREADS"); limit && *limit) {
+    char* end = nullptr;
+    const long n = std::strtol(limit, &end, 10);
+    if (end != limit && n > 0) cores = std::min(cores, static_cast<int>(std::min<long>(n, cores)));
+  }
+  return cores;
+}
 
 void side_by_side(std::size_t count, int jobs, int threads, const std::function<void(std::size_t)>& task) {
   std::atomic<std::size_t> next{0};

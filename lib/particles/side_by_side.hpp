@@ -16,4 +16,9 @@ namespace frostwall::particles {
 // first failure is rethrown on the caller's thread.
 void side_by_side(std::size_t count, int jobs, int threads, const std::function<void(std::size_t)>& task);
 
+// The cores whole tasks may share: the machine's processors, or fewer when
+// the environment's OMP_NUM_THREADS says so (as a batch system or a test
+// runner that runs several programs at once sets it). At least 1.
+int usable_cores();
+
 }  // namespace frostwall::particles

@@ -94,7 +94,7 @@ StudyRun run_study(const Study& study, const StudyOptions& options) {
     mine.push_back(k);
   // This rank's share of the machine: all of it, or its part when ranks
   // share the node and are not bound to cores of their own.
-  int cores = std::max(1, omp_get_num_procs());
+  int cores = particles::usable_cores();
   const int machine = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   if (ranks.size > 1 && cores >= machine) cores = std::max(1, cores / ranks.on_this_node);
   const int n = static_cast<int>(mine.size());
