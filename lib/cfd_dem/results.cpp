@@ -5,6 +5,7 @@
 
 #include "dem/packing.hpp"
 #include "pore_water/bed_resistance.hpp"
+#include "summary/summary.hpp"
 
 namespace frostwall::cfd_dem {
 
@@ -135,9 +136,9 @@ json CfdDemResults::fluidisation() const {
 
 json CfdDemResults::summary(const json& facts) const {
   json j = facts;
-  j["project"] = p_.name;
-  j["frostwall_version"] = FROSTWALL_VERSION;
-  j["physics"] = "cfd-dem";
+  j[summary::keys::project] = p_.name;
+  j[summary::keys::frostwall_version] = FROSTWALL_VERSION;
+  j[summary::keys::physics] = "cfd-dem";
   j["bed_axis"] = std::string(1, "xyz"[axis_]);
   json settling = json::array(), snapshots = json::array(), ergun = json::array();
   for (const auto& s : series_) settling.push_back({s.time, s.settling_velocity});

@@ -17,6 +17,7 @@
 #include "dem/lammps_session.hpp"
 #include "dem/packing.hpp"
 #include "io/atomic_file.hpp"
+#include "io/summary_file.hpp"
 #include "io/grid_vtk.hpp"
 #include "io/paraview_script.hpp"
 #include "io/point_cloud_vtk.hpp"
@@ -250,7 +251,7 @@ std::string dem_commands(const dem::LammpsSession& lammps, const project::CfdDem
 
 }  // namespace
 
-void run_cfd_dem(const project::Project& p, const project::RunOptions& options) {
+summary::Summary run_cfd_dem(const project::Project& p, const project::RunOptions& options) {
   const auto wall_start = std::chrono::steady_clock::now();
   const auto& c = *p.cfd_dem;
   check_cfd_dem_resources(c);
@@ -315,7 +316,7 @@ void run_cfd_dem(const project::Project& p, const project::RunOptions& options) 
   const double flow_wall = std::chrono::duration<double>(now - flow_start).count();
   const double coupling_seconds = coupling.coupling_seconds() - coupling_before;
   const json stability_summary = stability.summary(coupling);  // collective
-  if (!root) return;
+  if (!root) return {};
   if (p.output.vtk) {
     io::write_pvd(out / "grains.pvd", rec.grain_pvd);
     io::write_pvd(out / "fluid.pvd", rec.fluid_pvd);
@@ -342,20 +343,22 @@ void run_cfd_dem(const project::Project& p, const project::RunOptions& options) 
       {"run_wall_time_s", flow_wall},  // after settling: the DEM steps counted in dem_steps
       {"coupling_seconds", coupling_seconds},
       {"coupling_share", flow_wall > 0 ? coupling_seconds / flow_wall : 0.0}};
-  auto summary = rec.results.summary(facts);
-  summary["stability"] = stability_summary;
-  summary["soil"] =
+  json doc = rec.results.summary(facts);
+  doc["stability"] = stability_summary;
+  doc[summary::keys::soil] =
       rec.soil_record.summary(packing_regime(c, std::max(0.0, rec.start_volume)), soil.bins(), soil.initial_surface());
   if (c.heap)
-    summary["angle_of_repose_deg"] =
-        summary["soil"].value("heap", json::object()).value("angle_of_repose_deg", json(nullptr));
+    doc["angle_of_repose_deg"] =
+        doc[summary::keys::soil].value("heap", json::object()).value("angle_of_repose_deg", json(nullptr));
   if (c.cavity)
-    summary["soil"]["cavity"] = {
+    doc[summary::keys::soil]["cavity"] = {
         {"mode", c.cavity->drain ? "drain" : "keep"},
         {"capacity_grains", cavity.capacity()},
         {"meaning", c.cavity->drain ? "grains whose centre enters the cavity are taken away by a leak (deleted)"
                                     : "grains that fall into the cavity stay and fill it"}};
-  io::write_text_file(out / "summary.json", summary.dump(2) + "\n");
+  auto result = summary::from_json(doc);
+  io::write_summary(out, result);
+  return result;
 }
 
 }  // namespace frostwall::cfd_dem

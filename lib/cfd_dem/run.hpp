@@ -5,6 +5,7 @@
 
 #include "project/project.hpp"
 #include "project/run_options.hpp"
+#include "summary/summary.hpp"
 
 namespace frostwall::cfd_dem {
 
@@ -19,6 +20,6 @@ inline constexpr double bytes_per_grain = 4000.0, bytes_per_cell = 2000.0;
 // Throws project::ProjectError when the grains or the grid would not fit.
 void check_cfd_dem_resources(const project::CfdDem& c);
 
-void run_cfd_dem(const project::Project& p, const project::RunOptions& options);
+summary::Summary run_cfd_dem(const project::Project& p, const project::RunOptions& options);
 
 }  // namespace frostwall::cfd_dem

@@ -9,6 +9,7 @@
 #include "post/flow_side.hpp"
 #include "project/units.hpp"
 #include "freezing/model.hpp"
+#include "summary/summary.hpp"
 #include "thermal/backward_euler.hpp"
 
 namespace frostwall::freezing {
@@ -126,7 +127,8 @@ nlohmann::json gap_json(const post::Gap& gap, const std::array<double, 2>& q) {
   for (const auto& [t, through] : gap.flow)
     days.push_back(t / seconds_per_day), flow.push_back(through * seconds_per_day);
   return {{"between", gap.between},
-          {"closure_day", gap.closed ? nlohmann::json(*gap.closed / seconds_per_day) : nlohmann::json(nullptr)},
+          {summary::keys::closure_day,
+           gap.closed ? nlohmann::json(*gap.closed / seconds_per_day) : nlohmann::json(nullptr)},
           {"bridge_closure_day",
            gap.bridge_closed ? nlohmann::json(*gap.bridge_closed / seconds_per_day) : nlohmann::json(nullptr)},
           {"position", side_of(gap.middle, q)},
@@ -148,16 +150,16 @@ nlohmann::json groundwater_summary(const project::Groundwater& g, const Groundwa
                                                                              : nlohmann::json(nullptr)},
       {"floor", g.law.floor},
       {"flow_solves", flow.flow_solves()}};
-  s["gaps"] = nlohmann::json::array();
-  for (const auto& gap : gaps.gaps()) s["gaps"].push_back(gap_json(gap, g.darcy_flux));
+  s[summary::keys::gaps] = nlohmann::json::array();
+  for (const auto& gap : gaps.gaps()) s[summary::keys::gaps].push_back(gap_json(gap, g.darcy_flux));
   const post::Gap* last = gaps.last();
   s["last_gap"] = last ? gap_json(*last, g.darcy_flux) : nlohmann::json(nullptr);
-  if (!closure_time) s["verdict"] = frozen_area.no_closure_verdict();
+  if (!closure_time) s[summary::keys::verdict] = frozen_area.no_closure_verdict();
   else if (last && last->closed)
-    s["verdict"] = fmt::format("closed on day {:.1f}; the last gap, {} ({}), on day {:.1f}",
-                               *closure_time / seconds_per_day, last->between, side_of(last->middle, g.darcy_flux),
-                               *last->closed / seconds_per_day);
-  else s["verdict"] = fmt::format("closed on day {:.1f}", *closure_time / seconds_per_day);
+    s[summary::keys::verdict] = fmt::format("closed on day {:.1f}; the last gap, {} ({}), on day {:.1f}",
+                                            *closure_time / seconds_per_day, last->between,
+                                            side_of(last->middle, g.darcy_flux), *last->closed / seconds_per_day);
+  else s[summary::keys::verdict] = fmt::format("closed on day {:.1f}", *closure_time / seconds_per_day);
   s["frozen_area_growth_per_day"] = frozen_area.recent_growth_per_day();
   return s;
 }

@@ -19,6 +19,7 @@
 #include "io/atomic_file.hpp"
 #include "io/output_directory.hpp"
 #include "io/paraview_script.hpp"
+#include "io/summary_file.hpp"
 #include "post/frozen_area_trend.hpp"
 #include "post/front.hpp"
 #include "post/gap_closure.hpp"
@@ -30,6 +31,7 @@
 namespace frostwall::freezing {
 
 namespace fs = std::filesystem;
+namespace keys = summary::keys;
 using project::Project;
 
 namespace {
@@ -41,7 +43,7 @@ class HeatRun {
   HeatRun(const Project& p, Model& built, const project::RunOptions& options, RunExtension* extension);
   thermal::TimeLoopObservers observers();
   const std::vector<double>& output_times() const { return times_; }
-  void finish(const thermal::TimeLoopResult& loop);
+  summary::Summary finish(const thermal::TimeLoopResult& loop);
 
  private:
   void after_step(const thermal::ThermalModel& m, double t);
@@ -231,7 +233,7 @@ void HeatRun::note_for_paraview(const io::PointCloudFrame& frame) {
   for (const auto& vector : frame.vectors) paraview_.solid = paraview_.solid || vector.first == "displacement";
 }
 
-void HeatRun::finish(const thermal::TimeLoopResult& loop) {
+summary::Summary HeatRun::finish(const thermal::TimeLoopResult& loop) {
   if (p_.output.vtk) io::write_pvd(out_ / "field.pvd", pvd_);
   if (write_ring_) io::write_pvd(out_ / "ring.pvd", ring_pvd_);
   if (p_.output.vtk && !pvd_.empty()) {
@@ -243,7 +245,9 @@ void HeatRun::finish(const thermal::TimeLoopResult& loop) {
     paraview_.isotherm = p_.design.isotherm;
     io::write_paraview_script(out_ / "open_in_paraview.py", paraview_);
   }
-  io::write_text_file(out_ / "summary.json", summary(loop).dump(2) + "\n");
+  auto result = summary::from_json(summary(loop));
+  io::write_summary(out_, result);
+  return result;
 }
 
 nlohmann::ordered_json HeatRun::summary(const thermal::TimeLoopResult& loop) const {
@@ -253,28 +257,28 @@ nlohmann::ordered_json HeatRun::summary(const thermal::TimeLoopResult& loop) con
   for (std::size_t b = 0; b < model.boundaries().size(); ++b)
     boundary_heat[model.boundaries()[b].name] = loop.boundary_heat[b];
   // ordered_json: the keys stay in the contract's order.
-  nlohmann::ordered_json summary = {{"project", p_.name}, {"frostwall_version", FROSTWALL_VERSION}};
+  nlohmann::ordered_json summary = {{keys::project, p_.name}, {keys::frostwall_version, FROSTWALL_VERSION}};
   if (built_.shaft) {
     const auto closure_time = closure_->closure_time();
     const auto contact_time = closure_->contact_time();
-    summary["closure_time_days"] = closure_time ? nlohmann::json(*closure_time / project::seconds_per_day)
-                                                : nlohmann::json(nullptr);
-    summary["front_contact_days"] = contact_time ? nlohmann::json(*contact_time / project::seconds_per_day)
-                                                 : nlohmann::json(nullptr);
+    summary[keys::closure_time_days] = closure_time ? nlohmann::json(*closure_time / project::seconds_per_day)
+                                                    : nlohmann::json(nullptr);
+    summary[keys::front_contact_days] = contact_time ? nlohmann::json(*contact_time / project::seconds_per_day)
+                                                     : nlohmann::json(nullptr);
     const nlohmann::json parts = results_->finish(out_);
-    for (const char* key : {"wall", "design", "monitoring", "interface"})
+    for (const char* key : {keys::wall, keys::design, keys::monitoring, keys::interface})
       if (parts.contains(key)) summary[key] = parts[key];
-    summary["thinnest_angle_deg"] = parts.value("thinnest_angle_deg", nlohmann::json());
-    if (brine_) summary["brine"] = brine_->finish(out_);
+    summary[keys::thinnest_angle_deg] = parts.value(keys::thinnest_angle_deg, nlohmann::json());
+    if (brine_) summary[keys::brine] = brine_->finish(out_);
     const auto& w = built_.shaft->wedge;
-    summary["wedge"] = {{"mirror_lines", w.mirror_count},
-                        {"start_deg", w.start_angle * 180 / M_PI},
-                        {"angle_deg", w.angle * 180 / M_PI}};
+    summary[keys::wedge] = {{"mirror_lines", w.mirror_count},
+                            {"start_deg", w.start_angle * 180 / M_PI},
+                            {"angle_deg", w.angle * 180 / M_PI}};
   } else {
-    summary["front"] = front_;
-    summary["front_axis"] = built_.face ? nlohmann::json{{"face", built_.face->side}} : nlohmann::json(nullptr);
+    summary[keys::front] = front_;
+    summary[keys::front_axis] = built_.face ? nlohmann::json{{"face", built_.face->side}} : nlohmann::json(nullptr);
     const nlohmann::json parts = plain_->finish(out_);
-    for (const char* key : {"front_along", "monitoring", "monitoring_solid", "interface"})
+    for (const char* key : {keys::front_along, keys::monitoring, keys::monitoring_solid, keys::interface})
       if (parts.contains(key)) summary[key] = parts[key];
     if (extension_) extension_->summarise(summary, out_);
   }
@@ -282,43 +286,43 @@ nlohmann::ordered_json HeatRun::summary(const thermal::TimeLoopResult& loop) con
   std::vector<std::string> warnings = p_.warnings;
   warnings.insert(warnings.end(), built_.warnings.begin(), built_.warnings.end());
   summary.update(nlohmann::ordered_json{
-      {"heat_balance",
+      {keys::heat_balance,
        {{"stored_change", model.stored_heat() - heat_before_}, {"from_boundaries", boundary_heat}, {"unit", "J/m"}}},
-      {"run",
-       {{"particles", model.free_count()},
+      {keys::run,
+       {{keys::particles, model.free_count()},
         {"boundary_particles", model.size() - model.free_count()},
         {"pairs", model.pairs().pairs()},
-        {"steps", loop.steps},
-        {"wall_seconds", wall_seconds},
+        {keys::steps, loop.steps},
+        {keys::wall_seconds, wall_seconds},
         {"threads", omp_get_max_threads()},
-        {"integrator", integrator_name(p_.numerics.integrator)},
+        {keys::integrator, integrator_name(p_.numerics.integrator)},
         {"method", p_.numerics.method == project::Method::pd ? "pd" : "sph"},
-        {"spacing", P.spacing},
+        {keys::spacing, P.spacing},
         {"placement", P.graded() ? "graded" : "lattice"},
         {"coarsest_spacing", P.coarsest_spacing()},
-        {"smoothing_length", built_.h},
+        {keys::smoothing_length, built_.h},
         {"kernel", built_.kernel->name()},
         {"time_unit", p_.time.unit_name()}}},
-      {"warnings", warnings},
+      {keys::warnings, warnings},
   });
   if (const auto* implicit = thermal::find_integrator<thermal::BackwardEuler>(built_.integrator.get())) {
     const auto& stats = implicit->statistics();
-    summary["run"]["newton_iterations"] = stats.newton_iterations;
-    summary["run"]["linear_iterations"] = stats.linear_iterations;
-    summary["run"]["step_halvings"] = stats.halvings;
+    summary[keys::run]["newton_iterations"] = stats.newton_iterations;
+    summary[keys::run]["linear_iterations"] = stats.linear_iterations;
+    summary[keys::run]["step_halvings"] = stats.halvings;
   }
   if (const auto* rkl2 = thermal::find_integrator<thermal::SuperTimeStepping>(built_.integrator.get()))
-    summary["run"]["stages"] = rkl2->statistics().stages;
-  if (extension_) extension_->run_facts(summary["run"]);
+    summary[keys::run]["stages"] = rkl2->statistics().stages;
+  if (extension_) extension_->run_facts(summary[keys::run]);
   if (flow_)
-    summary["groundwater"] =
+    summary[keys::groundwater] =
         groundwater_summary(*p_.groundwater, *flow_, *gaps_, frozen_area_, closure_->closure_time());
   return summary;
 }
 
 }  // namespace
 
-void run_heat(const Project& p, Model& built, const project::RunOptions& options, RunExtension* extension) {
+summary::Summary run_heat(const Project& p, Model& built, const project::RunOptions& options, RunExtension* extension) {
   for (const auto& n : built.scene->notes)
     if (options.note) options.note(n);
   for (const auto& w : built.warnings)
@@ -326,13 +330,13 @@ void run_heat(const Project& p, Model& built, const project::RunOptions& options
   HeatRun run(p, built, options, extension);
   const thermal::TimeLoopResult loop =
       thermal::run_time_loop(*built.model, *built.integrator, p.time.end, run.output_times(), run.observers());
-  run.finish(loop);
+  return run.finish(loop);
 }
 
-void run(const Project& p, const project::RunOptions& options) {
+summary::Summary run(const Project& p, const project::RunOptions& options) {
   check_run_inputs(p);
   Model built = build_model(p);
-  run_heat(p, built, options);
+  return run_heat(p, built, options);
 }
 
 }  // namespace frostwall::freezing

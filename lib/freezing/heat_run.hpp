@@ -16,6 +16,7 @@
 #include "io/point_cloud_vtk.hpp"
 #include "project/project.hpp"
 #include "project/run_options.hpp"
+#include "summary/summary.hpp"
 
 namespace frostwall::freezing {
 
@@ -46,11 +47,12 @@ class RunExtension {
 };
 
 // Runs the model to the project's end time and writes everything into
-// project.output.directory (created if needed), the report excepted.
+// project.output.directory (created if needed), the report excepted;
+// returns the summary written.
 // Throws project::ProjectError for input that cannot be run (before any
 // output is written) and std::runtime_error for failures during the run.
-void run_heat(const project::Project& p, Model& built, const project::RunOptions& options,
-              RunExtension* extension = nullptr);
+summary::Summary run_heat(const project::Project& p, Model& built, const project::RunOptions& options,
+                          RunExtension* extension = nullptr);
 
 // What the run refuses before any work beyond the loader's checks (a
 // regional flow without a far field, an output directory that cannot be
@@ -58,7 +60,7 @@ void run_heat(const project::Project& p, Model& built, const project::RunOptions
 void check_run_inputs(const project::Project& p);
 // The freezing engine: a shaft section or a plain geometry, SPH heat
 // conduction with latent heat (and groundwater flow, brine pipes, the wall
-// check when the project has them).
-void run(const project::Project& p, const project::RunOptions& options);
+// check when the project has them). Returns the summary written.
+summary::Summary run(const project::Project& p, const project::RunOptions& options);
 
 }  // namespace frostwall::freezing

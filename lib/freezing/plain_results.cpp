@@ -7,8 +7,11 @@
 #include "io/polyline_vtk.hpp"
 #include "particles/mirror_images.hpp"
 #include "freezing/heat_run.hpp"
+#include "summary/summary.hpp"
 
 namespace frostwall::freezing {
+
+namespace keys = summary::keys;
 
 namespace {
 using nlohmann::json;
@@ -108,7 +111,7 @@ json PlainResults::finish(const std::filesystem::path& out) const {
     for (std::size_t k = 0; k < times_.size(); ++k) series.push_back({times_[k], readings_[k][s]});
     monitoring[project_.monitoring[s].name] = series;
   }
-  result["monitoring"] = monitoring;
+  result[keys::monitoring] = monitoring;
   if (mechanics_) {
     json solid = json::object();
     for (std::size_t s = 0; s < project_.monitoring.size(); ++s) {
@@ -117,10 +120,10 @@ json PlainResults::finish(const std::filesystem::path& out) const {
         series.push_back({times_[k], solid_readings_[k][s][0], solid_readings_[k][s][1], solid_readings_[k][s][2]});
       solid[project_.monitoring[s].name] = series;
     }
-    result["monitoring_solid"] = solid;  // [t, ux m, uy m, damage]
+    result[keys::monitoring_solid] = solid;  // [t, ux m, uy m, damage]
   }
-  result["front_along"] = front_along_;
-  result["interface"] = interface_;
+  result[keys::front_along] = front_along_;
+  result[keys::interface] = interface_;
   if (!project_.monitoring.empty()) {
     std::string csv = "time";
     for (const auto& s : project_.monitoring) {

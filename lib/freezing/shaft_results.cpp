@@ -19,15 +19,18 @@
 #include "freezing/sensor_points.hpp"
 #include "particles/symmetry_group.hpp"
 #include "design/wall_strength.hpp"
+#include "summary/summary.hpp"
 
 namespace frostwall::freezing {
+
+namespace keys = summary::keys;
 
 namespace {
 using nlohmann::json;
 
 json or_null(const std::optional<double>& v) { return v ? json(*v) : json(nullptr); }
 json stretch_json(const post::FrozenStretch& s) {
-  return {{"inner", or_null(s.inner)}, {"outer", or_null(s.outer)}, {"thickness", s.thickness}};
+  return {{keys::inner, or_null(s.inner)}, {keys::outer, or_null(s.outer)}, {keys::thickness, s.thickness}};
 }
 std::string csv_number(const std::optional<double>& v) { return v ? fmt::format("{:.6g}", *v) : ""; }
 }  // namespace
@@ -168,7 +171,7 @@ void ShaftResults::snapshot(double t, const thermal::ThermalModel& model, const 
                                          [&](const particles::Vec<2>& x) { return geometry::inside_wedge(wedge, x); });
   const std::string file = "interface" + stem.substr(5) + ".vtp";
   io::write_vtp(out / file, kept, io::file_labels(project_));
-  json entry = {{"day", t / project::seconds_per_day}, {"file", file}};
+  json entry = {{keys::day, t / project::seconds_per_day}, {"file", file}};
   if (!ring_points_.empty()) {
     const std::string ring_file = "interface_ring" + stem.substr(5) + ".vtp";
     if (!ring_mesh_) {
@@ -192,21 +195,21 @@ json ShaftResults::wall_entries(std::optional<DesignMet>& met) const {
   // ---- wall: one entry per snapshot
   json wall = json::array();
   for (const auto& r : snapshots_)
-    wall.push_back({{"day", r.day},
-                    {"OA", stretch_json(r.OA)},
-                    {"OB", stretch_json(r.OB)},
-                    {"min_thickness", r.min_thickness},
-                    {"thinnest_angle_deg", r.weakest_angle_deg},
-                    {"mean_temperature_OB", or_null(r.mean_temperature_OB)}});
+    wall.push_back({{keys::day, r.day},
+                    {keys::OA, stretch_json(r.OA)},
+                    {keys::OB, stretch_json(r.OB)},
+                    {keys::min_thickness, r.min_thickness},
+                    {keys::thinnest_angle_deg, r.weakest_angle_deg},
+                    {keys::mean_temperature_OB, or_null(r.mean_temperature_OB)}});
   if (project_.design.isotherm)
     for (std::size_t k = 0; k < snapshots_.size(); ++k) {
-      wall[k]["isotherm_thickness"] = or_null(snapshots_[k].isotherm_thickness);
-      wall[k]["isotherm_mean_temperature"] = or_null(snapshots_[k].isotherm_mean_temperature);
+      wall[k][keys::isotherm_thickness] = or_null(snapshots_[k].isotherm_thickness);
+      wall[k][keys::isotherm_mean_temperature] = or_null(snapshots_[k].isotherm_mean_temperature);
     }
   if (project_.groundwater && project_.groundwater->speed() > 0.0)
     for (std::size_t k = 0; k < snapshots_.size(); ++k) {
-      wall[k]["min_thickness_upstream"] = or_null(snapshots_[k].upstream_thickness);
-      wall[k]["min_thickness_downstream"] = or_null(snapshots_[k].downstream_thickness);
+      wall[k][keys::min_thickness_upstream] = or_null(snapshots_[k].upstream_thickness);
+      wall[k][keys::min_thickness_downstream] = or_null(snapshots_[k].downstream_thickness);
     }
   // The wall check from the ground pressure and the frozen soil's strength.
   const auto& design = project_.design;
@@ -222,9 +225,9 @@ json ShaftResults::wall_entries(std::optional<DesignMet>& met) const {
       const WallCheck c = check(r);
       wall[k]["mean_temperature_thinnest"] = or_null(r.mean_temperature_thinnest);
       wall[k]["allowable_strength"] = or_null(c.allowable);
-      wall[k]["required_thickness"] = or_null(c.required);
+      wall[k][keys::required_thickness] = or_null(c.required);
       wall[k]["required_by"] = c.required_by;
-      wall[k]["utilisation"] = or_null(c.utilisation);
+      wall[k][keys::utilisation] = or_null(c.utilisation);
     }
     // The day it is met: on the time series (every output interval), not
     // only at the snapshots.
@@ -264,14 +267,14 @@ json ShaftResults::design_entry(const std::optional<DesignMet>& met) const {
                                 (b.day - a.day);
       }
     }
-    result = {{"required_thickness", or_null(design.required_thickness)},
-              {"max_mean_temperature", or_null(design.max_mean_temperature)},
-              {"reached_day", or_null(reached)},
-              {"pass", reached.has_value()}};
+    result = {{keys::required_thickness, or_null(design.required_thickness)},
+              {keys::max_mean_temperature, or_null(design.max_mean_temperature)},
+              {keys::reached_day, or_null(reached)},
+              {keys::pass, reached.has_value()}};
     if (met) {
       if (!design.required_thickness && !design.max_mean_temperature)  // the strength check is the only target
-        result["reached_day"] = or_null(met->day), result["pass"] = met->day.has_value();
-      result["met_day"] = or_null(met->day);
+        result[keys::reached_day] = or_null(met->day), result[keys::pass] = met->day.has_value();
+      result[keys::met_day] = or_null(met->day);
       result["stays_met"] = met->stays;
       result["formula"] = std::string(design::name(design.formula));
       result["pressure_MPa"] = *design.pressure;
@@ -326,8 +329,8 @@ void ShaftResults::write_tables(const std::filesystem::path& out) const {
 json ShaftResults::finish(const std::filesystem::path& out) const {
   json result;
   std::optional<DesignMet> met;
-  result["wall"] = wall_entries(met);
-  if (json design = design_entry(met); !design.is_null()) result["design"] = std::move(design);
+  result[keys::wall] = wall_entries(met);
+  if (json design = design_entry(met); !design.is_null()) result[keys::design] = std::move(design);
   // ---- monitoring
   json monitoring = json::object();
   for (std::size_t s = 0; s < project_.monitoring.size(); ++s) {
@@ -335,12 +338,12 @@ json ShaftResults::finish(const std::filesystem::path& out) const {
     for (const auto& [d, T] : sensor_readings_[s]) series.push_back({d, T});
     monitoring[project_.monitoring[s].name] = series;
   }
-  result["monitoring"] = monitoring;
-  result["interface"] = interface_;
+  result[keys::monitoring] = monitoring;
+  result[keys::interface] = interface_;
   result["ob_angle_deg"] = planes_.OB * 180.0 / std::numbers::pi;
   // Where the wall is weakest at the last snapshot: the thinnest ray, or the
   // open gap's middle before closure.
-  if (!snapshots_.empty()) result["thinnest_angle_deg"] = snapshots_.back().weakest_angle_deg;
+  if (!snapshots_.empty()) result[keys::thinnest_angle_deg] = snapshots_.back().weakest_angle_deg;
 
   write_tables(out);
   return result;

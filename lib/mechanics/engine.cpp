@@ -98,11 +98,11 @@ bool runs(const project::Project& p) {
   return p.numerics.method == project::Method::pd || p.mechanics || (rect && !rect->pores.empty());
 }
 
-void run(const project::Project& p, const project::RunOptions& options) {
+summary::Summary run(const project::Project& p, const project::RunOptions& options) {
   io::check_output_directory(p.output.directory);
   Model built = freezing::build_model(p);
   SolidAndFrost extension(p, built);
-  freezing::run_heat(p, built, options, &extension);
+  return freezing::run_heat(p, built, options, &extension);
 }
 
 }  // namespace frostwall::mechanics

@@ -7,12 +7,13 @@
 
 #include "project/project.hpp"
 #include "project/run_options.hpp"
+#include "summary/summary.hpp"
 
 namespace frostwall::mechanics {
 
 // Whether the project is this engine's: PD heat conduction, a solid, or pores.
 bool runs(const project::Project& p);
 
-void run(const project::Project& p, const project::RunOptions& options);
+summary::Summary run(const project::Project& p, const project::RunOptions& options);
 
 }  // namespace frostwall::mechanics

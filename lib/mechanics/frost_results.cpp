@@ -8,8 +8,11 @@
 #include "pd/pore_expansion.hpp"
 #include "io/atomic_file.hpp"
 #include "io/polyline_vtk.hpp"
+#include "summary/summary.hpp"
 
 namespace frostwall::mechanics {
+
+namespace keys = summary::keys;
 
 using nlohmann::json;
 using Vec2 = particles::Vec<2>;
@@ -180,7 +183,7 @@ json FrostResults::finish(const std::filesystem::path& out) const {
                      {"cracked", mechanics_ ? json(rims[p] > 0.0) : json(nullptr)},
                      {"crack_reach", mechanics_ ? json(reach[p]) : json(nullptr)}});
   }
-  result["pores"] = pores;
+  result[keys::pores] = pores;
   if (const auto& g = rect_.pore_generator)
     result["pores_generated"] = {{"count", g->count},
                                  {"radius", {g->radius_min, g->radius_max}},
@@ -191,7 +194,7 @@ json FrostResults::finish(const std::filesystem::path& out) const {
   for (const auto& e : end_) all = e && all ? std::optional(std::max(*all, *e)) : std::nullopt;
   result["all_pores_frozen"] = optional_time(all, unit_);
   if (mechanics_) {
-    result["damage"] = damage_;
+    result[keys::damage] = damage_;
     result["cracks"] = cracks_;
     const auto near = broken_near_rims();
     result["broken_bonds_near_rims"] = near ? json(*near) : json(nullptr);

@@ -9,6 +9,7 @@
 #include "io/atomic_file.hpp"
 #include "io/csv_table.hpp"
 #include "project/json_numbers.hpp"
+#include "io/summary_file.hpp"
 #include "run/error_law.hpp"
 
 namespace frostwall::run {
@@ -17,6 +18,7 @@ namespace fs = std::filesystem;
 using nlohmann::json;
 using nlohmann::ordered_json;
 using project::number_or_nan;
+namespace keys = summary::keys;
 
 namespace {
 
@@ -57,7 +59,8 @@ struct Twins {
 // the nominal 1.5 when a summary lacks it.
 double twin_ratio(double h, const std::vector<json>& twins) {
   double ratio = 0.0;
-  for (const auto& s : twins) ratio += number_or_nan(at(s, {"run", "spacing"})) / h / static_cast<double>(twins.size());
+  for (const auto& s : twins)
+    ratio += number_or_nan(at(s, {keys::run, keys::spacing})) / h / static_cast<double>(twins.size());
   return std::isfinite(ratio) && ratio > 1.0 ? ratio : 1.5;
 }
 
@@ -71,7 +74,7 @@ void number_entry(ordered_json& summary, const Twins& twins, const std::vector<s
   if (!parent->is_object() || !parent->contains(path.back())) return;
   std::vector<double> coarse;
   for (const auto* s : twins.summaries) coarse.push_back(number_or_nan(at(*s, path)));
-  put_after(*parent, path.back(), path.back() + "_error",
+  put_after(*parent, path.back(), keys::error_of(path.back()),
             or_null(number_error(number_or_nan((*parent)[path.back()]), coarse, twins.ratio)));
 }
 
@@ -89,7 +92,7 @@ void wall_entry(ordered_json& wall, const std::vector<const json*>& twin_walls, 
     ordered_json* parent = &wall[t];
     for (const auto& key : parent_path) parent = parent && parent->contains(key) ? &(*parent)[key] : nullptr;
     if (parent && parent->is_object() && parent->contains(path.back()))
-      put_after(*parent, path.back(), path.back() + "_error", or_null(errors[t]));
+      put_after(*parent, path.back(), keys::error_of(path.back()), or_null(errors[t]));
   }
 }
 
@@ -126,27 +129,27 @@ void sensor_entries(ordered_json& summary, const Twins& twins, const std::string
     for (const auto* s : twins.summaries) twin_rows.push_back(&at(*s, {key, it.key()}));
     errors[it.key()] = row_errors(*it, twin_rows, twins.ratio);
   }
-  put_after(summary, key, key + "_error", errors);
+  put_after(summary, key, keys::error_of(key), errors);
 }
 
 // Under seepage: each gap's closure day, matched by the pipes it lies between.
 void gap_entries(ordered_json& summary, const Twins& twins) {
-  if (!summary.contains("groundwater")) return;
+  if (!summary.contains(keys::groundwater)) return;
   auto gap_error = [&](ordered_json& gap) {
-    if (!gap.is_object() || !gap.contains("closure_day")) return;
+    if (!gap.is_object() || !gap.contains(keys::closure_day)) return;
     std::vector<double> coarse;
     for (const auto* s : twins.summaries) {
       double c = missing;
-      for (const auto& g : at(*s, {"groundwater", "gaps"}))
-        if (g.value("between", json()) == json(gap["between"])) c = number_or_nan(g.value("closure_day", json()));
+      for (const auto& g : at(*s, {keys::groundwater, keys::gaps}))
+        if (g.value("between", json()) == json(gap["between"])) c = number_or_nan(g.value(keys::closure_day, json()));
       coarse.push_back(c);
     }
-    put_after(gap, "closure_day", "closure_day_error",
-              or_null(number_error(number_or_nan(gap["closure_day"]), coarse, twins.ratio)));
+    put_after(gap, keys::closure_day, keys::error_of(keys::closure_day),
+              or_null(number_error(number_or_nan(gap[keys::closure_day]), coarse, twins.ratio)));
   };
-  auto& g = summary["groundwater"];
-  if (g.contains("gaps"))
-    for (auto& gap : g["gaps"]) gap_error(gap);
+  auto& g = summary[keys::groundwater];
+  if (g.contains(keys::gaps))
+    for (auto& gap : g[keys::gaps]) gap_error(gap);
   if (g.contains("last_gap")) gap_error(g["last_gap"]);
 }
 
@@ -155,33 +158,34 @@ void gap_entries(ordered_json& summary, const Twins& twins) {
 void add_summary_errors(ordered_json& summary, const std::vector<json>& twin_summaries) {
   Twins twins;
   for (const auto& s : twin_summaries) twins.summaries.push_back(&s);
-  twins.ratio = twin_ratio(number_or_nan(at(summary, {"run", "spacing"})), twin_summaries);
-  number_entry(summary, twins, {"closure_time_days"});
-  number_entry(summary, twins, {"front_contact_days"});
-  if (summary.contains("wall") && summary["wall"].is_array()) {
+  twins.ratio = twin_ratio(number_or_nan(at(summary, {keys::run, keys::spacing})), twin_summaries);
+  number_entry(summary, twins, {keys::closure_time_days});
+  number_entry(summary, twins, {keys::front_contact_days});
+  if (summary.contains(keys::wall) && summary[keys::wall].is_array()) {
     std::vector<const json*> twin_walls;
-    for (const auto* s : twins.summaries) twin_walls.push_back(&at(*s, {"wall"}));
-    for (const auto& path : std::vector<std::vector<std::string>>{{"OA", "thickness"},
-                                                                  {"OB", "thickness"},
-                                                                  {"min_thickness"},
-                                                                  {"mean_temperature_OB"},
-                                                                  {"isotherm_thickness"},
-                                                                  {"isotherm_mean_temperature"},
-                                                                  {"utilisation"},
-                                                                  {"min_thickness_upstream"},
-                                                                  {"min_thickness_downstream"}})
-      wall_entry(summary["wall"], twin_walls, twins.ratio, path);
+    for (const auto* s : twins.summaries) twin_walls.push_back(&at(*s, {keys::wall}));
+    for (const auto& path : std::vector<std::vector<std::string>>{{keys::OA, keys::thickness},
+                                                                  {keys::OB, keys::thickness},
+                                                                  {keys::min_thickness},
+                                                                  {keys::mean_temperature_OB},
+                                                                  {keys::isotherm_thickness},
+                                                                  {keys::isotherm_mean_temperature},
+                                                                  {keys::utilisation},
+                                                                  {keys::min_thickness_upstream},
+                                                                  {keys::min_thickness_downstream}})
+      wall_entry(summary[keys::wall], twin_walls, twins.ratio, path);
   }
-  number_entry(summary, twins, {"design", "reached_day"});
-  number_entry(summary, twins, {"design", "met_day"});
+  number_entry(summary, twins, {keys::design, keys::reached_day});
+  number_entry(summary, twins, {keys::design, keys::met_day});
   gap_entries(summary, twins);
-  if (summary.contains("front") && summary["front"].is_array()) {
+  if (summary.contains(keys::front) && summary[keys::front].is_array()) {
     std::vector<const json*> twin_rows;
-    for (const auto* s : twins.summaries) twin_rows.push_back(&at(*s, {"front"}));
-    put_after(summary, "front", "front_error", row_errors(summary["front"], twin_rows, twins.ratio));
+    for (const auto* s : twins.summaries) twin_rows.push_back(&at(*s, {keys::front}));
+    put_after(summary, keys::front, keys::error_of(keys::front),
+              row_errors(summary[keys::front], twin_rows, twins.ratio));
   }
-  sensor_entries(summary, twins, "monitoring");
-  sensor_entries(summary, twins, "monitoring_solid");
+  sensor_entries(summary, twins, keys::monitoring);
+  sensor_entries(summary, twins, keys::monitoring_solid);
 }
 
 namespace {
@@ -220,13 +224,6 @@ void add_csv_errors(const fs::path& file, const std::vector<fs::path>& twin_file
   io::write_text_file(file, text);
 }
 
-template <class J>
-J read_summary(const fs::path& file) {
-  std::ifstream in(file);
-  if (!in) throw std::runtime_error("cannot read " + file.string());
-  return J::parse(in);
-}
-
 // The scratch directory of the twins, removed however the estimate ends.
 struct Scratch {
   fs::path dir;
@@ -239,11 +236,12 @@ struct Scratch {
 
 }  // namespace
 
-void add_error_estimate(const project::Project& p, const project::RunOptions& options, const EngineRun& engine) {
+void add_error_estimate(const project::Project& p, const project::RunOptions& options, const EngineRun& engine,
+                        summary::Summary& run) {
   const fs::path out = p.output.directory;
   const auto start = std::chrono::steady_clock::now();
-  ordered_json summary = read_summary<ordered_json>(out / "summary.json");
-  const double h = number_or_nan(at(summary, {"run", "spacing"}));
+  ordered_json doc = summary::to_json(run);
+  const double h = run.run && run.run->spacing ? *run.run->spacing : missing;
   Scratch scratch{out / scratch_name};
   std::vector<json> twins;
   std::string unavailable;
@@ -260,8 +258,7 @@ void add_error_estimate(const project::Project& p, const project::RunOptions& op
                                *twin.numerics.spacing));
     try {
       project::check_spacing(twin);
-      engine(twin, quiet);
-      twins.push_back(read_summary<json>(scratch.twin(k) / "summary.json"));
+      twins.push_back(json(summary::to_json(engine(twin, quiet))));
     } catch (const project::ProjectError& e) {
       unavailable = fmt::format("the run at {:.4g} times the spacing cannot be made: {}", coarse_ratios[k],
                                 e.problems().empty() ? std::string() : e.problems().front());
@@ -271,31 +268,32 @@ void add_error_estimate(const project::Project& p, const project::RunOptions& op
   }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (!unavailable.empty()) {
-    summary["error_estimate"] = {{"status", "unavailable"}, {"reason", unavailable}};
-    summary["warnings"].push_back("no error estimate: " + unavailable);
+    doc[keys::error_estimate] = {{keys::status, "unavailable"}, {"reason", unavailable}};
+    doc[keys::warnings].push_back("no error estimate: " + unavailable);
     if (options.note) options.note("warning: no error estimate: " + unavailable);
   } else {
-    add_summary_errors(summary, twins);
+    add_summary_errors(doc, twins);
     std::vector<double> spacings, days;
     for (const auto& t : twins) {
-      spacings.push_back(number_or_nan(at(t, {"run", "spacing"})));
-      days.push_back(number_or_nan(t.value("closure_time_days", json())));
+      spacings.push_back(number_or_nan(at(t, {keys::run, keys::spacing})));
+      days.push_back(number_or_nan(t.value(keys::closure_time_days, json())));
     }
-    summary["error_estimate"] = {{"status", "done"},
+    doc[keys::error_estimate] = {{keys::status, "done"},
                                  {"covers", "the discretisation only (spacing and the time steps that follow it)"},
                                  {"ratios", coarse_ratios},
                                  {"spacings", spacings},
                                  {"order", method_order},
                                  {"coarse_seconds", seconds},
-                                 {"run_seconds", number_or_nan(at(summary, {"run", "wall_seconds"}))}};
-    if (summary.contains("closure_time_days")) summary["error_estimate"]["coarse_closure_days"] = days;
+                                 {"run_seconds", number_or_nan(at(doc, {keys::run, keys::wall_seconds}))}};
+    if (doc.contains(keys::closure_time_days)) doc[keys::error_estimate][keys::coarse_closure_days] = days;
     for (const char* table : {"wall.csv", "monitoring.csv"}) {
       std::vector<fs::path> files;
       for (std::size_t k = 0; k < twins.size(); ++k) files.push_back(scratch.twin(k) / table);
       add_csv_errors(out / table, files, twin_ratio(h, twins));
     }
   }
-  io::write_text_file(out / "summary.json", summary.dump(2) + "\n");
+  run = summary::from_json(doc);
+  io::write_summary(out, run);
 }
 
 }  // namespace frostwall::run

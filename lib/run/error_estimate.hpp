@@ -28,20 +28,23 @@
 
 #include "project/project.hpp"
 #include "project/run_options.hpp"
+#include "summary/summary.hpp"
 
 namespace frostwall::run {
 
 // The coarse twins' spacings, as multiples of the run's.
 inline constexpr std::array<double, 3> coarse_ratios{1.35, 1.5, 1.65};
 
-// Runs one project (the engine, without the estimate).
-using EngineRun = std::function<void(const project::Project&, const project::RunOptions&)>;
+// Runs one project (the engine, without the estimate); returns its summary.
+using EngineRun = std::function<summary::Summary(const project::Project&, const project::RunOptions&)>;
 
-// After `engine` has run p into p.output.directory: runs the twins with
-// `engine`, then rewrites summary.json, wall.csv and monitoring.csv with the
-// errors. A twin that cannot run (a spacing too coarse for the geometry)
-// leaves the numbers without errors and says why in summary.json.
-void add_error_estimate(const project::Project& p, const project::RunOptions& options, const EngineRun& engine);
+// After `engine` has run p into p.output.directory with the summary `run`:
+// runs the twins with `engine`, then adds the errors to `run` and rewrites
+// summary.json, wall.csv and monitoring.csv with them. A twin that cannot
+// run (a spacing too coarse for the geometry) leaves the numbers without
+// errors and says why in the summary.
+void add_error_estimate(const project::Project& p, const project::RunOptions& options, const EngineRun& engine,
+                        summary::Summary& run);
 
 // The error entries of a run's summary from its twins' summaries (the
 // twins' run.spacing gives the ratio); adds them to `summary` in place.

@@ -6,6 +6,7 @@
 
 #include "project/project.hpp"
 #include "project/run_options.hpp"
+#include "summary/summary.hpp"
 
 namespace frostwall::run {
 
@@ -15,11 +16,12 @@ enum class Engine { freezing, mechanics, cfd_dem };
 Engine engine_of(const project::Project& p);
 
 // The engine's run alone; run_project adds the error estimate when the
-// project asks for it (run/error_estimate.hpp).
-void run_engine(const project::Project& p, const RunOptions& options);
+// project asks for it (run/error_estimate.hpp). Both return the summary
+// written (empty on an MPI rank that writes none).
+summary::Summary run_engine(const project::Project& p, const RunOptions& options);
 
 // Throws project::ProjectError for input that cannot be run (before any
 // output is written) and std::runtime_error for failures during the run.
-void run_project(const project::Project& p, const RunOptions& options);
+summary::Summary run_project(const project::Project& p, const RunOptions& options);
 
 }  // namespace frostwall::run
