@@ -190,7 +190,7 @@ TEST_CASE("Calibration twin: readings to day 8, before closure, give a forecast 
   const auto p = project::parse_project(project.dump(), "twin", dir.path.string());
   const auto truth_run = calibrate::run_forward(calibrate::with_values(p, p.calibration->parameters, truth), {},
                                                 p.time.end, dir.path / "run");
-  const double true_closure = truth_run.summary["closure_time_days"].get<double>();
+  const double true_closure = summary::to_json(truth_run.summary)["closure_time_days"].get<double>();
   CHECK(summary["calibration"]["last_reading_day"].get<double>() < true_closure);
   CHECK(band["low"].get<double>() <= true_closure);
   CHECK(band["high"].get<double>() >= true_closure);

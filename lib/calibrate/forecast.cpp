@@ -6,15 +6,14 @@
 
 namespace frostwall::calibrate {
 
-using project::number_at;
+namespace keys = summary::keys;
 
 namespace {
 
-const nlohmann::json* wall_entry(const nlohmann::json& summary, double day) {
-  if (!summary.contains("wall") || !summary["wall"].is_array()) return nullptr;
-  for (const auto& w : summary["wall"])
-    if (w.contains("day") && std::abs(w["day"].get<double>() - day) <= 1e-9 * std::max(1.0, day)) return &w;
-  return nullptr;
+// The error beside a number (`<key>_error` in the same object), 0 without one.
+double error_at(const nlohmann::ordered_json& detail, const char* key) {
+  const auto it = detail.find(keys::error_of(key));
+  return it != detail.end() && it->is_number() ? it->get<double>() : 0.0;
 }
 
 // One number's band: its value, and its value in each of the band's runs.
@@ -46,27 +45,27 @@ nlohmann::ordered_json band_json(const Band& b) {
 
 }  // namespace
 
-std::optional<double> closure_day_of(const nlohmann::json& summary) { return number_at(summary, "closure_time_days"); }
+std::optional<double> closure_day_of(const summary::Summary& s) { return s.closure_time_days; }
 
-std::optional<double> wall_at(const nlohmann::json& summary, double day) {
-  const auto* w = wall_entry(summary, day);
-  return w ? number_at(*w, "min_thickness") : std::nullopt;
+std::optional<double> wall_at(const summary::Summary& s, double day) {
+  const auto* w = summary::wall_at(s, day);
+  return w ? w->min_thickness : std::nullopt;
 }
 
-Forecast forecast(const nlohmann::json& calibrated, const std::vector<nlohmann::json>& band,
+Forecast forecast(const summary::Summary& calibrated, const std::vector<summary::Summary>& band,
                   const std::vector<double>& steps, const Eigen::MatrixXd& covariance, double t, double design_day) {
   Forecast f;
   f.design_day = design_day;
   std::vector<std::optional<double>> closure, wall;
   for (const auto& s : band) {
     closure.push_back(closure_day_of(s));
-    wall.push_back(wall_at(s, design_day));
+    wall.push_back(calibrate::wall_at(s, design_day));
   }
-  f.closure_day = band_of(closure_day_of(calibrated), number_at(calibrated, "closure_time_days_error").value_or(0.0),
-                          closure, steps, covariance, t);
-  const auto* w = wall_entry(calibrated, design_day);
-  f.thinnest_wall = band_of(wall_at(calibrated, design_day),
-                            w ? number_at(*w, "min_thickness_error").value_or(0.0) : 0.0, wall, steps, covariance, t);
+  f.closure_day = band_of(closure_day_of(calibrated), error_at(calibrated.detail, keys::closure_time_days), closure,
+                          steps, covariance, t);
+  const auto* w = summary::wall_at(calibrated, design_day);
+  f.thinnest_wall = band_of(calibrate::wall_at(calibrated, design_day),
+                            w ? error_at(w->detail, keys::min_thickness) : 0.0, wall, steps, covariance, t);
   return f;
 }
 

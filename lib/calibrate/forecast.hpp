@@ -14,6 +14,7 @@
 
 #include "calibrate/forward.hpp"
 #include "project/project.hpp"
+#include "summary/summary.hpp"
 
 namespace frostwall::calibrate {
 
@@ -31,13 +32,13 @@ struct Forecast {
 
 // The closure day and the wall's thinnest thickness at design_day from a
 // run's summary (nullopt where the run did not get there).
-std::optional<double> closure_day_of(const nlohmann::json& summary);
-std::optional<double> wall_at(const nlohmann::json& summary, double day);
+std::optional<double> closure_day_of(const summary::Summary& s);
+std::optional<double> wall_at(const summary::Summary& s, double day);
 
 // `calibrated`: the summary of the calibrated run (with its error bars);
 // `band`: the summaries of the band's runs, the first at the calibrated
 // values, then one with parameter j moved by steps[j] for each j.
-Forecast forecast(const nlohmann::json& calibrated, const std::vector<nlohmann::json>& band,
+Forecast forecast(const summary::Summary& calibrated, const std::vector<summary::Summary>& band,
                   const std::vector<double>& steps, const Eigen::MatrixXd& covariance, double t, double design_day);
 
 nlohmann::ordered_json forecast_json(const Forecast& f);

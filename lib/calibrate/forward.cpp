@@ -1,7 +1,6 @@
 #include "calibrate/forward.hpp"
 
 #include <algorithm>
-#include <fstream>
 #include <numeric>
 
 #include "freezing/heat_run.hpp"
@@ -68,10 +67,9 @@ ForwardResult run_forward(project::Project p, const std::vector<Reading>& readin
   p.numerics.error_estimate = false;
   freezing::Model built = cloud ? freezing::build_model(p, freezing::copy_cloud(*cloud, p)) : freezing::build_model(p);
   SensorRecorder recorder(p, built, readings);
-  freezing::run_heat(p, built, {}, &recorder);
-  ForwardResult result{recorder.values(), nlohmann::json()};
-  std::ifstream summary(scratch / "summary.json");
-  result.summary = nlohmann::json::parse(summary);
+  ForwardResult result;
+  result.summary = freezing::run_heat(p, built, {}, &recorder);
+  result.temperatures = recorder.values();
   fs::remove_all(scratch);
   return result;
 }

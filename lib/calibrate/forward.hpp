@@ -11,12 +11,13 @@
 
 #include "freezing/model.hpp"
 #include "project/project.hpp"
+#include "summary/summary.hpp"
 
 namespace frostwall::calibrate {
 
 struct ForwardResult {
   std::vector<double> temperatures;  // degC, one per reading, in the readings' order
-  nlohmann::json summary;            // the run's summary.json (closure, wall, ...)
+  summary::Summary summary;          // the run's summary (closure, wall, ...)
 };
 
 // Runs p to `end` seconds (its snapshots: `end` and those before it) into

@@ -5,7 +5,6 @@
 #include <chrono>
 #include <cmath>
 #include <fmt/format.h>
-#include <fstream>
 
 #include "calibrate/fit.hpp"
 #include "calibrate/forecast.hpp"
@@ -17,6 +16,7 @@
 #include "geometry/layout.hpp"
 #include "io/atomic_file.hpp"
 #include "project/units.hpp"
+#include "io/summary_file.hpp"
 #include "run/run_project.hpp"
 
 namespace frostwall::calibrate {
@@ -189,10 +189,11 @@ FitResult fit_readings(Context& ctx) {
 }
 
 struct ForecastRuns {
-  std::string calibrated_text;       // the calibrated project file (empty without the project's text)
-  double design_time = 0.0;          // s
-  std::vector<double> steps;         // each parameter's move in the band's runs
-  std::vector<nlohmann::json> band;  // the band's runs' summaries: the fitted values, then one per move
+  std::string calibrated_text;         // the calibrated project file (empty without the project's text)
+  double design_time = 0.0;            // s
+  std::vector<double> steps;           // each parameter's move in the band's runs
+  summary::Summary calibrated;         // the calibrated run's, with its error bars
+  std::vector<summary::Summary> band;  // the band's runs' summaries: the fitted values, then one per move
 };
 
 // The calibrated project as `frostwall run` runs it, with its error bar,
@@ -215,7 +216,7 @@ ForecastRuns run_forecast(Context& ctx, const FitResult& fit, const Intervals& i
   project::RunOptions run_options;
   run_options.project_text = f.calibrated_text;
   run_options.progress = ctx.options.progress;
-  run::run_project(fitted, run_options);
+  f.calibrated = run::run_project(fitted, run_options);
   f.steps = band_steps(ctx.p, fit, iv);
   std::vector<std::function<ForwardResult()>> tasks;
   for (std::size_t j = 0; j <= f.steps.size(); ++j) {
@@ -284,16 +285,15 @@ nlohmann::ordered_json run_calibration(const Project& p, const CalibrateOptions&
   for (const auto& w : iv.warnings) ctx.note("warning: " + w);
 
   const ForecastRuns runs = run_forecast(ctx, fit, iv);
-  std::ifstream in(ctx.out / "summary.json");
-  nlohmann::ordered_json summary = nlohmann::ordered_json::parse(in);
-  const Forecast f = forecast(nlohmann::json::parse(summary.dump()), runs.band, runs.steps, iv.covariance, iv.t,
-                              runs.design_time / project::seconds_per_day);
-  summary["calibration"] = calibration_json(ctx, fit, iv, f, fit_seconds);
+  summary::Summary result = runs.calibrated;
+  const Forecast f =
+      forecast(result, runs.band, runs.steps, iv.covariance, iv.t, runs.design_time / project::seconds_per_day);
+  result.detail[summary::keys::calibration] = calibration_json(ctx, fit, iv, f, fit_seconds);
   io::write_text_file(ctx.out / "calibration_fit.csv", fit_csv(p, fit.start_residuals, fit.residuals));
   io::write_text_file(ctx.out / "calibration.csv", parameters_csv(p, fit, iv));
   if (!runs.calibrated_text.empty()) io::write_text_file(ctx.out / "calibrated.json", runs.calibrated_text);
-  io::write_text_file(ctx.out / "summary.json", summary.dump(2) + "\n");
-  return summary;
+  io::write_summary(ctx.out, result);
+  return summary::to_json(result);
 }
 
 }  // namespace frostwall::calibrate

@@ -3,15 +3,15 @@
 #include <fmt/core.h>
 #include <fmt/ranges.h>
 
-#include "io/atomic_file.hpp"
 #include "io/output_directory.hpp"
-#include "report/report.hpp"
 #include "study/run_sections.hpp"
+#include "summary/summary.hpp"
 
 namespace frostwall::study {
 
 namespace fs = std::filesystem;
 using nlohmann::json;
+namespace keys = summary::keys;
 
 StudyRun run_with_intact(const project::Project& p, const std::string& project_text, const StudyOptions& options) {
   io::check_output_directory(p.output.directory);
@@ -39,14 +39,12 @@ StudyRun run_with_intact(const project::Project& p, const std::string& project_t
   if (!run.writer) return run;
 
   json summary = run.variants[0].summary;
-  summary["project"] = p.name;
-  summary["scenario_directory"] = "failed";
-  summary["design_margin"] = design_margin(summary);
-  summary["intact"] = wall_digest(run.variants[1].summary);
-  summary["intact"]["directory"] = "intact";
-  io::write_text_file(out / "project.json", project_text);
-  io::write_text_file(out / "summary.json", summary.dump(2) + "\n");
-  if (p.output.report) report::write_report(out);
+  summary[keys::project] = p.name;
+  summary[keys::scenario_directory] = "failed";
+  summary[keys::design_margin] = design_margin(summary);
+  summary[keys::intact] = wall_digest(run.variants[1].summary);
+  summary[keys::intact]["directory"] = "intact";
+  write_joined_run(p, project_text, summary);
   return run;
 }
 

@@ -3,15 +3,15 @@
 #include <fmt/core.h>
 #include <limits>
 
-#include "io/atomic_file.hpp"
-#include "report/report.hpp"
 #include "io/output_directory.hpp"
 #include "run/check_project.hpp"
+#include "summary/summary.hpp"
 
 namespace frostwall::study {
 
 namespace fs = std::filesystem;
 using nlohmann::json;
+namespace keys = summary::keys;
 
 std::string layer_folder(const std::string& name) {
   std::string folder;
@@ -24,11 +24,11 @@ std::size_t governing_layer(const std::vector<json>& summaries) {
   std::size_t governing = 0;
   double latest = -1.0, worst = -1.0;
   for (std::size_t k = 0; k < summaries.size(); ++k) {
-    const json design = summaries[k].value("design", json::object());
-    const json met = design.value("met_day", json());
+    const json design = summaries[k].value(keys::design, json::object());
+    const json met = design.value(keys::met_day, json());
     const double day = met.is_number() ? met.get<double>() : std::numeric_limits<double>::infinity();
-    const json wall = summaries[k].value("wall", json::array());
-    const json u = wall.empty() ? json() : wall.back().value("utilisation", json());
+    const json wall = summaries[k].value(keys::wall, json::array());
+    const json u = wall.empty() ? json() : wall.back().value(keys::utilisation, json());
     const double utilisation = u.is_number() ? u.get<double>() : std::numeric_limits<double>::infinity();
     if (day > latest || (day == latest && utilisation > worst)) governing = k, latest = day, worst = utilisation;
   }
@@ -85,9 +85,9 @@ StudyRun run_layers(const project::Project& p, const std::string& project_text, 
   // The layered summary: the governing layer's, with every layer's beside it.
   const std::size_t g = governing_layer(summaries);
   json summary = summaries[g];
-  summary["project"] = p.name;
-  summary["governing_layer"] = p.layers[g].name;
-  summary["layers"] = json::array();
+  summary[keys::project] = p.name;
+  summary[keys::governing_layer] = p.layers[g].name;
+  summary[keys::layers] = json::array();
   for (std::size_t k = 0; k < summaries.size(); ++k) {
     json entry = summaries[k];
     entry["layer"] = {{"name", p.layers[k].name},
@@ -96,11 +96,9 @@ StudyRun run_layers(const project::Project& p, const std::string& project_text, 
                       {"pressure_MPa", p.layers[k].pressure},
                       {"directory", layer_folder(p.layers[k].name)},
                       {"governing", k == g}};
-    summary["layers"].push_back(std::move(entry));
+    summary[keys::layers].push_back(std::move(entry));
   }
-  io::write_text_file(out / "project.json", project_text);
-  io::write_text_file(out / "summary.json", summary.dump(2) + "\n");
-  if (p.output.report) report::write_report(out);
+  write_joined_run(p, project_text, summary);
   return run;
 }
 

@@ -7,18 +7,18 @@
 #include <optional>
 
 #include "geometry/as_built.hpp"
-#include "io/atomic_file.hpp"
 #include "io/output_directory.hpp"
 #include "io/paraview_script.hpp"
 #include "io/shaft_vtm.hpp"
-#include "report/report.hpp"
 #include "run/check_project.hpp"
 #include "study/ranks.hpp"
+#include "summary/summary.hpp"
 
 namespace frostwall::study {
 
 namespace fs = std::filesystem;
 using nlohmann::json;
+namespace keys = summary::keys;
 
 namespace {
 
@@ -85,19 +85,19 @@ json or_null(const json& v) { return v.is_number() ? v : json(nullptr); }
 // temperature's distance below its limit over the limit's size. Below 0
 // the design is not met. Null without a target.
 json design_margin(const json& summary) {
-  const json wall = summary.value("wall", json::array());
+  const json wall = summary.value(keys::wall, json::array());
   if (wall.empty()) return nullptr;
   const json& last = wall.back();
-  const json design = summary.value("design", json::object());
+  const json design = summary.value(keys::design, json::object());
   std::optional<double> margin;
   auto take = [&](double m) { margin = margin ? std::min(*margin, m) : m; };
-  if (last.value("utilisation", json()).is_number()) take(1.0 - last["utilisation"].get<double>());
-  const json required = design.value("required_thickness", json());
+  if (last.value(keys::utilisation, json()).is_number()) take(1.0 - last[keys::utilisation].get<double>());
+  const json required = design.value(keys::required_thickness, json());
   if (required.is_number() && required.get<double>() > 0)
-    take(last.value("min_thickness", 0.0) / required.get<double>() - 1.0);
-  const json limit = design.value("max_mean_temperature", json());
+    take(last.value(keys::min_thickness, 0.0) / required.get<double>() - 1.0);
+  const json limit = design.value(keys::max_mean_temperature, json());
   if (limit.is_number()) {
-    const json mean = last.value("mean_temperature_OB", json());
+    const json mean = last.value(keys::mean_temperature_OB, json());
     const double scale = std::max(std::abs(limit.get<double>()), 1.0);
     take(mean.is_number() ? (limit.get<double>() - mean.get<double>()) / scale : -1.0);
   }
@@ -105,13 +105,13 @@ json design_margin(const json& summary) {
 }
 
 json wall_digest(const json& summary) {
-  const json wall = summary.value("wall", json::array());
+  const json wall = summary.value(keys::wall, json::array());
   const json last = wall.empty() ? json::object() : wall.back();
-  return {{"closure_time_days", or_null(summary.value("closure_time_days", json()))},
-          {"thinnest_wall", or_null(last.value("min_thickness", json()))},
-          {"thinnest_angle_deg", or_null(last.value("thinnest_angle_deg", json()))},
-          {"design_margin", design_margin(summary)},
-          {"day", or_null(last.value("day", json()))}};
+  return {{keys::closure_time_days, or_null(summary.value(keys::closure_time_days, json()))},
+          {keys::thinnest_wall, or_null(last.value(keys::min_thickness, json()))},
+          {keys::thinnest_angle_deg, or_null(last.value(keys::thinnest_angle_deg, json()))},
+          {keys::design_margin, design_margin(summary)},
+          {keys::day, or_null(last.value(keys::day, json()))}};
 }
 
 namespace {
@@ -183,16 +183,16 @@ std::vector<SectionRun> section_runs(const project::Project& p, const std::strin
 
 std::size_t critical_section(const std::vector<json>& entries) {
   const bool margins = !entries.empty() && std::all_of(entries.begin(), entries.end(), [](const json& e) {
-    return e.value("design_margin", json()).is_number();
+    return e.value(keys::design_margin, json()).is_number();
   });
   std::size_t critical = 0;
   double worst = -std::numeric_limits<double>::infinity();
   for (std::size_t k = 0; k < entries.size(); ++k) {
     double badness;
     if (margins) {
-      badness = -entries[k]["design_margin"].get<double>();
+      badness = -entries[k][keys::design_margin].get<double>();
     } else {
-      const json day = entries[k].value("closure_time_days", json());
+      const json day = entries[k].value(keys::closure_time_days, json());
       badness = day.is_number() ? day.get<double>() : std::numeric_limits<double>::infinity();
     }
     if (badness >= worst) critical = k, worst = badness;  // ties: the deeper section
@@ -258,17 +258,17 @@ StudyRun run_sections(const project::Project& p, const std::string& project_text
   }
   const std::size_t c = critical_section(entries);
   json summary = run.variants[of_entry[c]].summary;
-  summary["project"] = p.name;
+  summary[keys::project] = p.name;
   for (std::size_t k = 0; k < entries.size(); ++k) entries[k]["critical"] = k == c;
-  summary["sections"] = entries;
-  summary["critical_depth"] = entries[c]["depth"];
+  summary[keys::sections] = entries;
+  summary[keys::critical_depth] = entries[c]["depth"];
   json design = json::array();
   for (const auto& q : a.design) design.push_back({q.number, q.x, q.y, q.failed});
-  summary["as_built"] = {{"survey", p.survey->file},
-                         {"form", p.survey->form == project::SurveyForm::positions ? "positions" : "stations"},
-                         {"design_pipes", design},
-                         {"failed_pipes", std::get<project::ShaftSection>(p.geometry).layout.failed_pipes},
-                         {"compare_intact", p.compare_intact}};
+  summary[keys::as_built] = {{"survey", p.survey->file},
+                             {"form", p.survey->form == project::SurveyForm::positions ? "positions" : "stations"},
+                             {"design_pipes", design},
+                             {"failed_pipes", std::get<project::ShaftSection>(p.geometry).layout.failed_pipes},
+                             {"compare_intact", p.compare_intact}};
 
   // The 3-D view: each section's last snapshot at its depth, the pipe traces.
   std::vector<io::ShaftVtmSection> placed;
@@ -296,9 +296,7 @@ StudyRun run_sections(const project::Project& p, const std::string& project_text
   scene.warmest = std::max(p.domain.initial_temperature, p.domain.far_field_temperature.value_or(-1e300));
   scene.isotherm = p.design.isotherm;
   io::write_paraview_script(out / "open_in_paraview.py", scene);
-  io::write_text_file(out / "project.json", project_text);
-  io::write_text_file(out / "summary.json", summary.dump(2) + "\n");
-  if (p.output.report) report::write_report(out);
+  write_joined_run(p, project_text, summary);
   return run;
 }
 

@@ -8,9 +8,10 @@
 #include <thread>
 
 #include "particles/side_by_side.hpp"
+#include "io/atomic_file.hpp"
+#include "io/summary_file.hpp"
 #include "project/project.hpp"
 #include "report/report.hpp"
-#include "report/run_files.hpp"
 #include "run/run_project.hpp"
 #include "study/ranks.hpp"
 
@@ -39,9 +40,8 @@ VariantOutcome run_variant(const Variant& v, bool estimate_errors,
     run::RunOptions options;
     options.project_text = text;
     options.note = [&](const std::string&) {};  // the wedge notes of every variant would only clutter
-    run::run_project(p, options);
+    out.summary = summary::to_json(run::run_project(p, options));
     if (p.output.report) report::write_report(out.directory);  // from the files just written
-    out.summary = report::read_json(out.directory / "summary.json");
     out.ok = true;
   } catch (const project::ProjectError& e) {
     out.errors = e.problems();
@@ -125,6 +125,13 @@ StudyRun run_study(const Study& study, const StudyOptions& options) {
   }
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
+}
+
+void write_joined_run(const project::Project& p, const std::string& project_text, const nlohmann::json& summary) {
+  const fs::path out = p.output.directory;
+  io::write_text_file(out / "project.json", project_text);
+  io::write_summary(out, summary::from_json(summary));
+  if (p.output.report) report::write_report(out);
 }
 
 }  // namespace frostwall::study

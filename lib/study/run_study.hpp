@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "project/project.hpp"
 #include "study/study_file.hpp"
 
 namespace frostwall::study {
@@ -22,7 +23,7 @@ struct VariantOutcome {
   std::filesystem::path directory;
   bool ok = false;
   std::vector<std::string> errors;  // bad variant input (one line per problem) or the run's failure
-  nlohmann::json summary;           // summary.json of a finished run
+  nlohmann::json summary;           // the summary a finished run wrote (summary::to_json)
   double seconds = 0.0;             // wall time of this variant
 };
 
@@ -41,5 +42,10 @@ struct StudyRun {
 };
 
 StudyRun run_study(const Study& study, const StudyOptions& options);
+
+// What joins a layered, as-built or failed-pipe run's variants, beside
+// them in p.output.directory: project.json (the file as given), `summary`
+// as summary.json and, with output.report, the report.
+void write_joined_run(const project::Project& p, const std::string& project_text, const nlohmann::json& summary);
 
 }  // namespace frostwall::study

@@ -8,8 +8,11 @@
 #include "report/nice_scale.hpp"
 #include "report/svg_chart.hpp"
 #include "report/view_numbers.hpp"
+#include "summary/summary.hpp"
 
 namespace frostwall::study {
+
+namespace keys = summary::keys;
 
 using nlohmann::json;
 
@@ -17,7 +20,7 @@ namespace {
 
 using report::get;
 using report::number;
-const json& soil(const VariantOutcome& v) { return v.summary["soil"]; }
+const json& soil(const VariantOutcome& v) { return v.summary[keys::soil]; }
 
 // Lost grains over the count at the start, per second of the run.
 double mean_loss_rate(const json& s) {
@@ -41,7 +44,8 @@ report::Chart overlay(const std::string& title, const std::string& y_label) {
 
 bool has_erosion(const StudyRun& run) {
   for (const auto& v : run.variants)
-    if (v.ok && v.summary.value("physics", std::string()) == "cfd-dem" && v.summary.contains("soil")) return true;
+    if (v.ok && v.summary.value(keys::physics, std::string()) == "cfd-dem" && v.summary.contains(keys::soil))
+      return true;
   return false;
 }
 
@@ -53,7 +57,7 @@ void add_erosion(const StudyRun& run, json& view) {
   report::Chart zone = overlay("porosity over the cavity, every variant", "porosity of the zone over the cavity");
   report::Chart settled = overlay("deepest surface settlement, every variant", "settlement (mm)");
   for (const auto& v : run.variants) {
-    if (!v.ok || !v.summary.contains("soil")) continue;
+    if (!v.ok || !v.summary.contains(keys::soil)) continue;
     const json& s = soil(v);
     const json& regime = s.value("regime", json::object());
     const auto& last = s["series"].empty() ? json::object() : s["series"].back();
@@ -133,7 +137,7 @@ json seed_spread(const StudyRun& run) {
   };
   std::vector<std::pair<std::string, Group>> groups;
   for (const auto& v : run.variants) {
-    if (!v.ok || !v.summary.contains("soil")) continue;
+    if (!v.ok || !v.summary.contains(keys::soil)) continue;
     const auto [key, seeded] = without_seed(v.changes);
     if (!seeded) continue;
     auto it = std::find_if(groups.begin(), groups.end(), [&](const auto& g) { return g.first == key; });
@@ -165,7 +169,7 @@ void write_erosion_csv(const std::filesystem::path& file, const StudyRun& run) {
       "variant,darcy_velocity_m_s,above_fluidisation,lost_to_cavity,washed_out,mean_loss_rate_per_s,"
       "settlement_max_m,settlement_width_m,cone_angle_deg,run_s,crater_depth_m,crater_slope_deg,slip_surface_angle_deg\n";
   for (const auto& v : run.variants) {
-    if (!v.ok || !v.summary.contains("soil")) continue;
+    if (!v.ok || !v.summary.contains(keys::soil)) continue;
     const json& s = soil(v);
     const json& regime = s.value("regime", json::object());
     const auto& last = s["series"].empty() ? json::object() : s["series"].back();

@@ -14,8 +14,11 @@
 #include "report/templates.hpp"
 #include "study/study_erosion.hpp"
 #include "study/study_seepage.hpp"
+#include "summary/summary.hpp"
 
 namespace frostwall::study {
+
+namespace keys = summary::keys;
 
 namespace fs = std::filesystem;
 using nlohmann::json;
@@ -56,7 +59,7 @@ std::vector<Standing> rank_variants(const StudyRun& run, double thickness_day) {
     Standing st;
     st.variant = &v;
     if (v.ok) {
-      const auto& c = v.summary.value("closure_time_days", json());
+      const auto& c = v.summary.value(keys::closure_time_days, json());
       if (c.is_number()) st.closure_day = c.get<double>();
       if (const auto& e = v.summary.value("closure_time_days_error", json()); e.is_number())
         st.closure_error = e.get<double>();
@@ -101,8 +104,8 @@ void write_study_csv(const fs::path& file, const std::vector<Standing>& standing
       "design_pass,design_reached_day,particles,steps,wall_seconds,report,changes,error\n";
   for (const auto& st : standings) {
     const auto& v = *st.variant;
-    const json design = v.ok ? v.summary.value("design", json::object()) : json::object();
-    const json facts = v.ok ? v.summary.value("run", json::object()) : json::object();
+    const json design = v.ok ? v.summary.value(keys::design, json::object()) : json::object();
+    const json facts = v.ok ? v.summary.value(keys::run, json::object()) : json::object();
     auto integer = [&](const char* key) {
       return facts.contains(key) ? fmt::format("{}", facts[key].get<long long>()) : std::string();
     };
@@ -112,10 +115,11 @@ void write_study_csv(const fs::path& file, const std::vector<Standing>& standing
         st.closure_day ? csv_number(*st.closure_day) : "", csv_number(st.closure_error),
         st.closure_tied ? "true" : "false", st.thickness_rank ? std::to_string(st.thickness_rank) : "",
         csv_number(thickness_day), csv_number(st.thickness), csv_number(st.mean_temperature),
-        design.contains("pass") ? (design["pass"].get<bool>() ? "true" : "false") : "",
-        design.value("reached_day", json()).is_number() ? csv_number(design["reached_day"].get<double>()) : "",
-        integer("particles"), integer("steps"), csv_number(v.seconds), v.ok ? csv_text(v.name + "/report.html") : "",
-        csv_text(v.changes), csv_text(v.errors.empty() ? "" : v.errors.front()));
+        design.contains(keys::pass) ? (design[keys::pass].get<bool>() ? "true" : "false") : "",
+        design.value(keys::reached_day, json()).is_number() ? csv_number(design[keys::reached_day].get<double>()) : "",
+        integer(keys::particles), integer(keys::steps), csv_number(v.seconds),
+        v.ok ? csv_text(v.name + "/report.html") : "", csv_text(v.changes),
+        csv_text(v.errors.empty() ? "" : v.errors.front()));
   }
   io::write_text_file(file, text);
 }
@@ -144,31 +148,30 @@ json study_view(const Study& study, const StudyRun& run, const std::vector<Stand
   for (const auto& st : standings) ++closure_ranks[st.closure_rank];
   auto row = [&](const Standing& st, int rank, bool closure_table) {
     const auto& v = *st.variant;
-    const json design = v.summary.value("design", json::object());
-    const bool has_design = design.value("required_thickness", json()).is_number() ||
-                            design.value("max_mean_temperature", json()).is_number();
-    const bool pass = design.value("pass", false);
+    const json design = v.summary.value(keys::design, json::object());
+    const bool has_design = design.value(keys::required_thickness, json()).is_number() ||
+                            design.value(keys::max_mean_temperature, json()).is_number();
+    const bool pass = design.value(keys::pass, false);
     std::string closure = "not closed";
     if (st.closure_day)
       closure = std::isfinite(st.closure_error) ? report::with_error(*st.closure_day, st.closure_error, 1)
                                                 : number(*st.closure_day, 1);
     const bool shared = closure_table && closure_ranks[rank] > 1;
-    return json{
-        {"rank", shared ? fmt::format("{}=", rank) : std::to_string(rank)},
-        {"name", v.name},
-        {"href", v.name + "/report.html"},
-        {"closure", closure + (closure_table && shared ? " (tied)" : "")},
-        {"thickness", number(st.thickness, 2)},
-        {"mean_temperature", number(st.mean_temperature, 1)},
-        {"design",
-         !has_design
-             ? "–"
-             : (pass ? "pass, day " +
-                           number(design["reached_day"].is_number() ? design["reached_day"].get<double>() : nan, 1)
-                     : "fail")},
-        {"design_class", !has_design ? "" : (pass ? "pass" : "fail")},
-        {"seconds", fmt::format("{:.1f}", v.seconds)},
-        {"changes", v.changes}};
+    return json{{"rank", shared ? fmt::format("{}=", rank) : std::to_string(rank)},
+                {"name", v.name},
+                {"href", v.name + "/report.html"},
+                {"closure", closure + (closure_table && shared ? " (tied)" : "")},
+                {"thickness", number(st.thickness, 2)},
+                {"mean_temperature", number(st.mean_temperature, 1)},
+                {"design", !has_design ? "–"
+                                       : (pass ? "pass, day " + number(design[keys::reached_day].is_number()
+                                                                           ? design[keys::reached_day].get<double>()
+                                                                           : nan,
+                                                                       1)
+                                               : "fail")},
+                {"design_class", !has_design ? "" : (pass ? "pass" : "fail")},
+                {"seconds", fmt::format("{:.1f}", v.seconds)},
+                {"changes", v.changes}};
   };
   json by_closure = json::array(), by_thickness = json::array(), failures = json::array();
   for (const auto& st : standings)
@@ -206,7 +209,7 @@ json study_view(const Study& study, const StudyRun& run, const std::vector<Stand
     const auto wall = report::read_csv(v.directory / "wall.csv");
     if (const auto* d = wall.column("day"); d && wall.column("min_thickness_m"))
       chart.series.push_back({v.name, *d, *wall.column("min_thickness_m"), "", false, false, 1.8});
-    const auto& r = v.summary.value("design", json::object()).value("required_thickness", json());
+    const auto& r = v.summary.value(keys::design, json::object()).value(keys::required_thickness, json());
     if (r.is_number() && !required) required = r.get<double>();
   }
   if (required) chart.guides.push_back({false, *required, fmt::format("required {} m", number(*required, 2))});

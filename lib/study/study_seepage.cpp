@@ -6,8 +6,11 @@
 
 #include "report/svg_chart.hpp"
 #include "report/view_numbers.hpp"
+#include "summary/summary.hpp"
 
 namespace frostwall::study {
+
+namespace keys = summary::keys;
 
 using nlohmann::json;
 
@@ -18,8 +21,8 @@ using report::number;
 
 // |q| in m/d; 0 for still water.
 double seepage(const json& summary) {
-  if (!summary.contains("groundwater")) return 0.0;
-  const auto& q = summary["groundwater"]["darcy_flux_m_per_day"];
+  if (!summary.contains(keys::groundwater)) return 0.0;
+  const auto& q = summary[keys::groundwater]["darcy_flux_m_per_day"];
   return std::hypot(q[0].get<double>(), q[1].get<double>());
 }
 
@@ -50,7 +53,7 @@ std::string critical_flux(const std::vector<double>& closed, const std::vector<d
 
 bool has_seepage(const StudyRun& run) {
   for (const auto& v : run.variants)
-    if (v.ok && v.summary.contains("groundwater")) return true;
+    if (v.ok && v.summary.contains(keys::groundwater)) return true;
   return false;
 }
 
@@ -62,14 +65,14 @@ void add_seepage(const StudyRun& run, json& view) {
   report::Series open{"no closure (at the run's end)", {}, {}, "#c0392b", true, true, 1.2};
   double end = 0.0;
   for (const auto& v : run.variants) {
-    if (!v.ok || !v.summary.contains("wall")) continue;
-    const double q = seepage(v.summary), closure = get(v.summary, "closure_time_days");
-    const json& walls = v.summary["wall"];
+    if (!v.ok || !v.summary.contains(keys::wall)) continue;
+    const double q = seepage(v.summary), closure = get(v.summary, keys::closure_time_days);
+    const json& walls = v.summary[keys::wall];
     const json last_wall = walls.empty() ? json::object() : walls.back();
-    end = std::max(end, get(last_wall, "day"));
+    end = std::max(end, get(last_wall, keys::day));
     if (std::isfinite(closure)) closed.x.push_back(q), closed.y.push_back(closure);
-    else open.x.push_back(q), open.y.push_back(get(last_wall, "day"));
-    const json g = v.summary.value("groundwater", json::object());
+    else open.x.push_back(q), open.y.push_back(get(last_wall, keys::day));
+    const json g = v.summary.value(keys::groundwater, json::object());
     const json gap = g.value("last_gap", json(nullptr));
     rows.push_back(
         {{"name", v.name},
@@ -78,10 +81,10 @@ void add_seepage(const StudyRun& run, json& view) {
          {"closure", number(closure, 2)},
          {"last_gap",
           gap.is_object() ? fmt::format("{} ({})", gap.value("between", ""), gap.value("position", "")) : "–"},
-         {"upstream", number(get(last_wall, "min_thickness_upstream"), 2)},
-         {"downstream", number(get(last_wall, "min_thickness_downstream"), 2)},
-         {"day", number(get(last_wall, "day"), 1)},
-         {"verdict", g.value("verdict", std::string("still water"))}});
+         {"upstream", number(get(last_wall, keys::min_thickness_upstream), 2)},
+         {"downstream", number(get(last_wall, keys::min_thickness_downstream), 2)},
+         {"day", number(get(last_wall, keys::day), 1)},
+         {"verdict", g.value(keys::verdict, std::string("still water"))}});
   }
   report::Chart chart;
   chart.title = "closure against the regional seepage";
