@@ -5,6 +5,7 @@
 #include <fmt/core.h>
 
 #include "io/atomic_file.hpp"
+#include "io/summary_file.hpp"
 #include "report/mustache_view.hpp"
 #include "report/nice_scale.hpp"
 #include "report/report_sections.hpp"
@@ -23,7 +24,7 @@ std::string metres(double v, int decimals) {
 }
 
 double smoothing_length(const json& run_facts) {
-  const auto h = run_facts.find("smoothing_length");
+  const auto h = run_facts.find(keys::smoothing_length);
   if (h == run_facts.end() || !h->is_number() || h->get<double>() <= 0.0)
     throw std::runtime_error("summary.json: run.smoothing_length is missing; it is needed to draw the maps");
   return h->get<double>();
@@ -39,8 +40,8 @@ json row(const std::string& label, const std::string& value) { return {{"label",
 namespace {
 
 std::string extent(const json& stretch) {
-  if (!stretch.is_object() || !stretch["inner"].is_number()) return "–";
-  return number(stretch["inner"], 2) + " – " + number(stretch["outer"], 2);
+  if (!stretch.is_object() || !stretch[keys::inner].is_number()) return "–";
+  return number(stretch[keys::inner], 2) + " – " + number(stretch[keys::outer], 2);
 }
 
 }  // namespace
@@ -59,45 +60,51 @@ void add_headline(const RunRecord& run, json& view) {
     add_plain_headline(run, view);
     return;
   }
-  const auto& closure = s.value("closure_time_days", json());
-  const auto& wall = s["wall"];
-  const std::string end_day = wall.empty() ? "the end" : number(wall.back()["day"], 0);
+  const auto& closure = s.value(keys::closure_time_days, json());
+  const auto& wall = s[keys::wall];
+  const std::string end_day = wall.empty() ? "the end" : number(wall.back()[keys::day], 0);
   view["closure_value"] =
-      closure.is_number() ? "day " + with_error(closure, s.value("closure_time_days_error", json()), 1) : "not closed";
+      closure.is_number() ? "day " + with_error(closure, s.value(keys::error_of(keys::closure_time_days), json()), 1)
+                          : "not closed";
   view["closure_note"] = closure.is_number() ? "a fully frozen ring cuts the shaft off from the far field"
                                              : "not within the run (to day " + end_day + ")";
   // Older summaries have no front_contact_days: the card then says so.
-  const auto& contact = s.value("front_contact_days", json());
-  view["contact_value"] = contact.is_number()
-                              ? "day " + with_error(contact, s.value("front_contact_days_error", json()), 1)
-                              : (s.contains("front_contact_days") ? "not yet" : "–");
+  const auto& contact = s.value(keys::front_contact_days, json());
+  view["contact_value"] =
+      contact.is_number() ? "day " + with_error(contact, s.value(keys::error_of(keys::front_contact_days), json()), 1)
+                          : (s.contains(keys::front_contact_days) ? "not yet" : "–");
   view["contact_note"] = contact.is_number() ? "half-frozen columns touch; not yet a closed wall"
                                              : "the columns have not touched within the run";
   json rows = json::array();
   for (const auto& w : wall)
     rows.push_back(
-        {{"day", fmt::format("{:g}", w["day"].get<double>())},
-         {"min_thickness", with_error(w["min_thickness"], w.value("min_thickness_error", json()), 2)},
-         {"OA_thickness", with_error(w["OA"]["thickness"], w["OA"].value("thickness_error", json()), 2)},
-         {"OA_extent", extent(w["OA"])},
-         {"OB_thickness", with_error(w["OB"]["thickness"], w["OB"].value("thickness_error", json()), 2)},
-         {"OB_extent", extent(w["OB"])},
-         {"mean_temperature", with_error(w["mean_temperature_OB"], w.value("mean_temperature_OB_error", json()), 2)}});
+        {{"day", fmt::format("{:g}", w[keys::day].get<double>())},
+         {"min_thickness", with_error(w[keys::min_thickness], w.value(keys::error_of(keys::min_thickness), json()), 2)},
+         {"OA_thickness",
+          with_error(w[keys::OA][keys::thickness], w[keys::OA].value(keys::error_of(keys::thickness), json()), 2)},
+         {"OA_extent", extent(w[keys::OA])},
+         {"OB_thickness",
+          with_error(w[keys::OB][keys::thickness], w[keys::OB].value(keys::error_of(keys::thickness), json()), 2)},
+         {"OB_extent", extent(w[keys::OB])},
+         {"mean_temperature",
+          with_error(w[keys::mean_temperature_OB], w.value(keys::error_of(keys::mean_temperature_OB), json()), 2)}});
   view["snapshots"] = rows;
   if (!wall.empty()) {
-    view["last_day"] = fmt::format("{:g}", wall.back()["day"].get<double>());
+    view["last_day"] = fmt::format("{:g}", wall.back()[keys::day].get<double>());
     const auto& last = wall.back();
-    view["last_min_thickness"] = with_error(last["min_thickness"], last.value("min_thickness_error", json()), 2) + " m";
-    view["last_mean_temperature"] =
-        last["mean_temperature_OB"].is_number()
-            ? with_error(last["mean_temperature_OB"], last.value("mean_temperature_OB_error", json()), 1) + " °C"
-            : "–";
+    view["last_min_thickness"] =
+        with_error(last[keys::min_thickness], last.value(keys::error_of(keys::min_thickness), json()), 2) + " m";
+    view["last_mean_temperature"] = last[keys::mean_temperature_OB].is_number()
+                                        ? with_error(last[keys::mean_temperature_OB],
+                                                     last.value(keys::error_of(keys::mean_temperature_OB), json()), 1) +
+                                              " °C"
+                                        : "–";
   }
-  const auto& d = s.value("design", json::object());
-  const bool has_target = d.value("required_thickness", json()).is_number() ||
-                          d.value("max_mean_temperature", json()).is_number();
-  if (!has_target && d.contains("met_day")) {  // the wall check from pressure and strength
-    const bool met = d["met_day"].is_number();
+  const auto& d = s.value(keys::design, json::object());
+  const bool has_target = d.value(keys::required_thickness, json()).is_number() ||
+                          d.value(keys::max_mean_temperature, json()).is_number();
+  if (!has_target && d.contains(keys::met_day)) {  // the wall check from pressure and strength
+    const bool met = d[keys::met_day].is_number();
     view["design_value"] = met ? "PASS" : "FAIL";
     view["design_class"] = met ? "pass" : "fail";
     view["design_note"] = design_verdict(s);
@@ -109,50 +116,53 @@ void add_headline(const RunRecord& run, json& view) {
     return;
   }
   std::string targets;
-  if (d["required_thickness"].is_number()) targets = "thinnest wall ≥ " + number(d["required_thickness"], 2) + " m";
-  if (d["max_mean_temperature"].is_number())
-    targets += (targets.empty() ? "" : " and ") + ("mean T on OB ≤ " + number(d["max_mean_temperature"], 1) + " °C");
-  const bool pass = d.value("pass", false);
+  if (d[keys::required_thickness].is_number())
+    targets = "thinnest wall ≥ " + number(d[keys::required_thickness], 2) + " m";
+  if (d[keys::max_mean_temperature].is_number())
+    targets += (targets.empty() ? "" : " and ") +
+               ("mean T on OB ≤ " + number(d[keys::max_mean_temperature], 1) + " °C");
+  const bool pass = d.value(keys::pass, false);
   view["design_value"] = pass ? "PASS" : "FAIL";
   view["design_class"] = pass ? "pass" : "fail";
-  view["design_note"] = pass ? targets + ", met on day " +
-                                   with_error(d["reached_day"], d.value("reached_day_error", json()), 1)
-                             : targets + ": not met by day " + end_day;
+  view["design_note"] =
+      pass ? targets + ", met on day " +
+                 with_error(d[keys::reached_day], d.value(keys::error_of(keys::reached_day), json()), 1)
+           : targets + ": not met by day " + end_day;
 }
 
 void add_run_facts(const RunRecord& run, json& view) {
-  const auto& r = run.summary.value("run", json::object());
+  const auto& r = run.summary.value(keys::run, json::object());
   json rows = json::array();
   auto fact = [&](const char* key, const std::string& label, auto&& format) {
     if (r.contains(key)) rows.push_back(row(label, format(r[key])));
   };
   auto integer = [](const json& v) { return v.is_number() ? fmt::format("{}", v.get<long long>()) : v.dump(); };
   auto text = [](const json& v) { return v.is_string() ? v.get<std::string>() : v.dump(); };
-  fact("particles", "free particles", integer);
+  fact(keys::particles, "free particles", integer);
   fact("boundary_particles", "fixed-temperature particles", integer);
   const bool pd = r.value("method", std::string()) == "pd";
   fact("pairs", pd ? "thermal bonds (pairs)" : "particle pairs", integer);
-  fact("steps", "time steps", integer);
-  fact("spacing", "particle spacing",
+  fact(keys::steps, "time steps", integer);
+  fact(keys::spacing, "particle spacing",
        [](const json& v) { return (v.is_number() ? metres(v.get<double>(), 4) : "–") + " m"; });
   if (!pd) {  // PD bonds have a horizon, no kernel
-    fact("smoothing_length", "smoothing length h", [](const json& v) { return number(v, 4) + " m"; });
+    fact(keys::smoothing_length, "smoothing length h", [](const json& v) { return number(v, 4) + " m"; });
     fact("kernel", "kernel", text);
   }
-  fact("integrator", "integrator", text);
+  fact(keys::integrator, "integrator", text);
   fact("threads", "threads", integer);
-  fact("wall_seconds", "wall time", [](const json& v) { return number(v, 1) + " s"; });
-  rows.push_back(row("frostwall version", run.summary.value("frostwall_version", "?")));
-  if (run.summary.contains("heat_balance")) {
-    const auto& hb = run.summary["heat_balance"];
+  fact(keys::wall_seconds, "wall time", [](const json& v) { return number(v, 1) + " s"; });
+  rows.push_back(row("frostwall version", run.summary.value(keys::frostwall_version, "?")));
+  if (run.summary.contains(keys::heat_balance)) {
+    const auto& hb = run.summary[keys::heat_balance];
     double from = 0.0;
     for (const auto& [name, q] : hb["from_boundaries"].items()) from += q.get<double>();
     const double stored = hb.value("stored_change", 0.0);
     rows.push_back(row("heat balance", fmt::format("stored change {} MJ/m, from the boundaries {} MJ/m",
                                                    number(stored / 1e6, 2), number(from / 1e6, 2))));
   }
-  if (const auto& e = run.summary.value("error_estimate", json::object()); e.contains("status")) {
-    if (e["status"] == "done") {
+  if (const auto& e = run.summary.value(keys::error_estimate, json::object()); e.contains(keys::status)) {
+    if (e[keys::status] == "done") {
       std::string spacings;
       for (const auto& h : e.value("spacings", json::array()))
         spacings += (spacings.empty() ? "" : ", ") + metres(h.get<double>(), 4);
@@ -207,20 +217,20 @@ json report_view(const fs::path& dir) {
   run.dir = dir;
   if (!fs::exists(dir / "summary.json"))
     throw std::runtime_error(dir.string() + ": no summary.json (not a frostwall output directory?)");
-  run.summary = read_json(dir / "summary.json");
+  run.summary = summary::to_json(io::read_summary(dir));
   // A layered shaft: the maps, charts and files are the governing layer's.
   std::string layer_prefix;
-  for (const auto& l : run.summary.value("layers", json::array()))
+  for (const auto& l : run.summary.value(keys::layers, json::array()))
     if (l["layer"].value("governing", false)) layer_prefix = l["layer"].value("directory", "") + "/";
   // A failed-pipe scenario beside the intact layout: the scenario's.
-  if (run.summary.value("scenario_directory", json()).is_string())
-    layer_prefix = run.summary["scenario_directory"].get<std::string>() + "/";
+  if (run.summary.value(keys::scenario_directory, json()).is_string())
+    layer_prefix = run.summary[keys::scenario_directory].get<std::string>() + "/";
   // An as-built shaft: the critical section's.
-  for (const auto& s : run.summary.value("sections", json::array()))
+  for (const auto& s : run.summary.value(keys::sections, json::array()))
     if (s.value("critical", false)) layer_prefix = s.value("directory", "") + "/";
   if (!layer_prefix.empty()) run.dir = dir / layer_prefix;
   std::vector<std::string> warnings;
-  for (const auto& w : run.summary.value("warnings", json::array())) warnings.push_back(w.get<std::string>());
+  for (const auto& w : run.summary.value(keys::warnings, json::array())) warnings.push_back(w.get<std::string>());
   if (const auto text = read_text(run.dir / "project.json")) {
     try {
       run.project = project::parse_project(*text, "project.json");
@@ -229,8 +239,8 @@ json report_view(const fs::path& dir) {
     }
   }
   json view = json::object();
-  view["version"] = run.summary.value("frostwall_version", FROSTWALL_VERSION);
-  view["title"] = run.summary.value("project", "frostwall run");
+  view["version"] = run.summary.value(keys::frostwall_version, FROSTWALL_VERSION);
+  view["title"] = run.summary.value(keys::project, "frostwall run");
   view["description"] = run.project && !run.project->description.empty() ? json(run.project->description) : json(false);
   view["css"] = std::string(templates::style_css);
   view["method_line"] = detail::method_line(run);
@@ -240,7 +250,7 @@ json report_view(const fs::path& dir) {
   view["has_warnings"] = !warnings.empty();
   view["cards"] = json::array();
   view["has_cards"] = false;
-  if (run.summary.value("physics", std::string()) == "cfd-dem") {
+  if (run.summary.value(keys::physics, std::string()) == "cfd-dem") {
     detail::add_cfd_dem(run, view);
     return view;
   }

@@ -46,9 +46,9 @@ std::string depth_chart(const json& sections, const char* key, const std::string
   for (const auto& e : sections) {
     s.x.push_back(e["depth"]);
     s.y.push_back(value_or_nan(e.value(key, json())));
-    if (intact_key && e.contains("intact")) {
+    if (intact_key && e.contains(keys::intact)) {
       intact.x.push_back(e["depth"]);
-      intact.y.push_back(value_or_nan(e["intact"].value(intact_key, json())));
+      intact.y.push_back(value_or_nan(e[keys::intact].value(intact_key, json())));
     }
   }
   c.series.push_back(s);
@@ -64,24 +64,24 @@ std::string depth_chart(const json& sections, const char* key, const std::string
 void add_intact_pair(const RunRecord& run, json& view) {
   const json& s = run.summary;
   view["has_intact_pair"] = false;
-  if (s.contains("sections") || !s.value("intact", json()).is_object()) return;
+  if (s.contains(keys::sections) || !s.value(keys::intact, json()).is_object()) return;
   view["has_intact_pair"] = true;
-  const json wall = s.value("wall", json::array());
+  const json wall = s.value(keys::wall, json::array());
   const json last = wall.empty() ? json::object() : wall.back();
-  const json& intact = s["intact"];
+  const json& intact = s[keys::intact];
   const auto failed = run.project ? std::get<project::ShaftSection>(run.project->geometry).layout.failed_pipes
                                   : std::vector<int>{};
   view["intact_rows"] = json::array({{{"what", fmt::format("pipes {} failed", fmt::join(failed, ", "))},
-                                      {"closure", number(s["closure_time_days"], 1)},
-                                      {"thinnest", number(last.value("min_thickness", json()), 2)},
-                                      {"angle", number(last.value("thinnest_angle_deg", json()), 1)},
-                                      {"margin", number(s.value("design_margin", json()), 2)},
+                                      {"closure", number(s[keys::closure_time_days], 1)},
+                                      {"thinnest", number(last.value(keys::min_thickness, json()), 2)},
+                                      {"angle", number(last.value(keys::thinnest_angle_deg, json()), 1)},
+                                      {"margin", number(s.value(keys::design_margin, json()), 2)},
                                       {"report", "failed/report.html"}},
                                      {{"what", "every pipe working"},
-                                      {"closure", number(intact["closure_time_days"], 1)},
-                                      {"thinnest", number(intact["thinnest_wall"], 2)},
-                                      {"angle", number(intact["thinnest_angle_deg"], 1)},
-                                      {"margin", number(intact["design_margin"], 2)},
+                                      {"closure", number(intact[keys::closure_time_days], 1)},
+                                      {"thinnest", number(intact[keys::thinnest_wall], 2)},
+                                      {"angle", number(intact[keys::thinnest_angle_deg], 1)},
+                                      {"margin", number(intact[keys::design_margin], 2)},
                                       {"report", "intact/report.html"}}});
 }
 
@@ -89,11 +89,11 @@ void add_as_built(const RunRecord& run, json& view) {
   view["has_as_built"] = false;
   add_intact_pair(run, view);
   const json& s = run.summary;
-  if (!s.contains("sections") || !run.project) return;
-  const json& sections = s["sections"];
-  const double critical = s.value("critical_depth", 0.0);
+  if (!s.contains(keys::sections) || !run.project) return;
+  const json& sections = s[keys::sections];
+  const double critical = s.value(keys::critical_depth, 0.0);
   view["has_as_built"] = true;
-  const json info = s.value("as_built", json::object());
+  const json info = s.value(keys::as_built, json::object());
   view["as_built_note"] = fmt::format(
       "{} sections of the full ring, each with the pipes where the survey ({}, {}) puts them at that depth{}. The "
       "critical depth, {} m, is {}.",
@@ -102,18 +102,20 @@ void add_as_built(const RunRecord& run, json& view) {
                                                         : fmt::format(" and pipes {} off", info["failed_pipes"].dump()),
       number(critical, 1),
       std::all_of(sections.begin(), sections.end(),
-                  [](const json& e) { return e.value("design_margin", json()).is_number(); })
+                  [](const json& e) { return e.value(keys::design_margin, json()).is_number(); })
           ? "the one with the smallest design margin"
           : "the one that closes last");
   json charts = json::array();
   charts.push_back({{"svg", depth_chart(sections, "largest_gap", "largest gap", "m", critical)},
                     {"caption", "The widest opening between neighbouring working pipes of a ring, wall to wall."}});
-  charts.push_back({{"svg", depth_chart(sections, "closure_time_days", "closure", "d", critical, "closure_time_days")},
-                    {"caption", "The day the wall closes; no point where it does not close within the run."}});
-  charts.push_back({{"svg", depth_chart(sections, "thinnest_wall", "thinnest wall", "m", critical, "thinnest_wall")},
-                    {"caption", "The thinnest frozen wall on any ray of the full ring, at the last snapshot."}});
   charts.push_back(
-      {{"svg", depth_chart(sections, "design_margin", "design margin", "share", critical, "design_margin")},
+      {{"svg", depth_chart(sections, keys::closure_time_days, "closure", "d", critical, keys::closure_time_days)},
+       {"caption", "The day the wall closes; no point where it does not close within the run."}});
+  charts.push_back(
+      {{"svg", depth_chart(sections, keys::thinnest_wall, "thinnest wall", "m", critical, keys::thinnest_wall)},
+       {"caption", "The thinnest frozen wall on any ray of the full ring, at the last snapshot."}});
+  charts.push_back(
+      {{"svg", depth_chart(sections, keys::design_margin, "design margin", "share", critical, keys::design_margin)},
        {"caption", "The smallest of 1 − utilisation, the thinnest wall over the required thickness minus 1, and the "
                    "mean temperature's distance below its limit over the limit, at the last snapshot; below 0 the "
                    "design is not met."}});
@@ -127,31 +129,31 @@ void add_as_built(const RunRecord& run, json& view) {
     for (const auto& g : e.value("largest_gaps", json::array()))
       between += (between.empty() ? "" : ", ") +
                  fmt::format("{}–{}", g["between"][0].get<int>(), g["between"][1].get<int>());
-    const json intact = e.value("intact", json());
+    const json intact = e.value(keys::intact, json());
     rows.push_back({{"depth", number(e["depth"], 1)},
                     {"critical", e.value("critical", false) ? "critical" : ""},
                     {"layer", e.value("layer", json()).is_string() ? e["layer"].get<std::string>() : "–"},
                     {"gap", number(e["largest_gap"], 3)},
                     {"between", between},
-                    {"closure", number(e["closure_time_days"], 1)},
-                    {"thinnest", number(e["thinnest_wall"], 2)},
-                    {"angle", number(e["thinnest_angle_deg"], 1)},
-                    {"margin", number(e["design_margin"], 2)},
-                    {"intact_closure", intact.is_object() ? number(intact["closure_time_days"], 1) : "–"},
-                    {"intact_thinnest", intact.is_object() ? number(intact["thinnest_wall"], 2) : "–"},
+                    {"closure", number(e[keys::closure_time_days], 1)},
+                    {"thinnest", number(e[keys::thinnest_wall], 2)},
+                    {"angle", number(e[keys::thinnest_angle_deg], 1)},
+                    {"margin", number(e[keys::design_margin], 2)},
+                    {"intact_closure", intact.is_object() ? number(intact[keys::closure_time_days], 1) : "–"},
+                    {"intact_thinnest", intact.is_object() ? number(intact[keys::thinnest_wall], 2) : "–"},
                     {"report", e.value("directory", "") + "/report.html"}});
     if (!e.value("critical", false)) continue;
     LayoutDrawing drawing;
     drawing.section = &section;
     drawing.pipes = pipes_of(e.value("pipes", json::array()));
     drawing.design_pipes = pipes_of(info.value("design_pipes", json::array()));
-    if (e["thinnest_angle_deg"].is_number())
-      drawing.thinnest_ray = e["thinnest_angle_deg"].get<double>() * std::numbers::pi / 180;
+    if (e[keys::thinnest_angle_deg].is_number())
+      drawing.thinnest_ray = e[keys::thinnest_angle_deg].get<double>() * std::numbers::pi / 180;
     view["as_built_plan_svg"] = layout_svg(drawing, 520);
   }
   view["as_built_rows"] = rows;
   view["as_built_has_intact"] =
-      std::any_of(sections.begin(), sections.end(), [](const json& e) { return e.contains("intact"); });
+      std::any_of(sections.begin(), sections.end(), [](const json& e) { return e.contains(keys::intact); });
 }
 
 }  // namespace frostwall::report::detail

@@ -72,16 +72,16 @@ void add_calibration(const RunRecord& run, json& view) {
                           "calibration_warnings", "calibration_forecast"})
     view[key] = json::array();
   const json& s = run.summary;
-  if (!s.contains("calibration")) return;
-  const json& c = s["calibration"];
+  if (!s.contains(keys::calibration)) return;
+  const json& c = s[keys::calibration];
   view["has_calibration"] = true;
-  const std::string unit = s.value("run", json::object()).value("time_unit", "d");
+  const std::string unit = s.value(keys::run, json::object()).value("time_unit", "d");
   json charts = json::array();
   for (const auto& [name, curves] : read_fit(run.dir / "calibration_fit.csv"))
     charts.push_back({{"svg", sensor_chart(name, curves, unit)}, {"caption", "Sensor " + name + "."}});
   view["calibration_charts"] = charts;
   json rows = json::array();
-  for (const auto& [name, q] : c["parameters"].items()) {
+  for (const auto& [name, q] : c[keys::parameters].items()) {
     const int decimals = q["unit"] == "degC" ? 2 : 3;
     rows.push_back({{"name", name},
                     {"unit", q["unit"]},
@@ -93,7 +93,7 @@ void add_calibration(const RunRecord& run, json& view) {
   }
   view["calibration_rows"] = rows;
   json correlation = json::array();
-  const auto& names = c["correlation"]["parameters"];
+  const auto& names = c["correlation"][keys::parameters];
   for (std::size_t i = 0; i < names.size(); ++i) {
     json cells = json::array();
     for (std::size_t j = 0; j < names.size(); ++j) {
@@ -105,7 +105,7 @@ void add_calibration(const RunRecord& run, json& view) {
   view["calibration_names"] = names;
   view["calibration_correlation"] = correlation;
   json warnings = json::array();
-  for (const auto& w : c["warnings"]) warnings.push_back({{"text", w}});
+  for (const auto& w : c[keys::warnings]) warnings.push_back({{"text", w}});
   view["calibration_warnings"] = warnings;
   view["has_calibration_warnings"] = !warnings.empty();
   view["calibration_note"] = fmt::format(
@@ -120,14 +120,15 @@ void add_calibration(const RunRecord& run, json& view) {
       number(c["rms_misfit_before"], 3), number(c["rms_misfit_after"], 3), c["iterations"].get<int>(),
       c["forward_runs"].get<int>(), number(c["fit_seconds"], 0), number(c["t_quantile"], 2), number(c["noise"], 3),
       c["noise_given"].get<bool>() ? "as given" : "estimated from the misfit");
-  const json& f = c["forecast"];
-  view["calibration_forecast"] = json::array({{{"what", "closure"}, {"value", band_text(f["closure_day"], 1, "d")}},
-                                              {{"what", "thinnest wall on day " + number(f["thinnest_wall"]["day"], 0)},
-                                               {"value", band_text(f["thinnest_wall"], 2, "m")}}});
+  const json& f = c[keys::forecast];
+  view["calibration_forecast"] =
+      json::array({{{"what", "closure"}, {"value", band_text(f[keys::closure_day], 1, "d")}},
+                   {{"what", "thinnest wall on day " + number(f[keys::thinnest_wall][keys::day], 0)},
+                    {"value", band_text(f[keys::thinnest_wall], 2, "m")}}});
   view["calibration_forecast_note"] = fmt::format(
       "The band adds the spread the parameters' intervals carry into each number ({} d for closure) to the run's "
       "own numerical error bar ({} d).",
-      number(f["closure_day"]["parameter_spread"], 2), number(f["closure_day"]["run_error"], 2));
+      number(f[keys::closure_day]["parameter_spread"], 2), number(f[keys::closure_day]["run_error"], 2));
 }
 
 }  // namespace frostwall::report::detail

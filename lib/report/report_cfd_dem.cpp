@@ -127,7 +127,7 @@ json run_rows(const json& s) {
   if (s.contains("packing"))
     rows.push_back(row(
         "packing", s["packing"].value("read_from_cache", false) ? "read from the cache" : "placed and settled here"));
-  rows.push_back(row("frostwall version", s.value("frostwall_version", "?")));
+  rows.push_back(row("frostwall version", s.value(keys::frostwall_version, "?")));
   return rows;
 }
 

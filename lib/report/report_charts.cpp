@@ -24,14 +24,15 @@ json figure(const std::string& id, const std::string& title, const Chart& chart,
 }
 
 std::optional<double> closure_day(const json& summary) {
-  const auto& c = summary.value("closure_time_days", json());
+  const auto& c = summary.value(keys::closure_time_days, json());
   return c.is_number() ? std::optional<double>(c.get<double>()) : std::nullopt;
 }
 
 std::optional<double> design_value(const json& summary, const char* key) {
-  if (!summary.contains("design") || !summary["design"].contains(key) || !summary["design"][key].is_number())
+  if (!summary.contains(keys::design) || !summary[keys::design].contains(key) ||
+      !summary[keys::design][key].is_number())
     return std::nullopt;
-  return summary["design"][key].get<double>();
+  return summary[keys::design][key].get<double>();
 }
 
 // Ring radii of the layout, for marks on the profile plots.
@@ -60,11 +61,11 @@ double add_thickness_error_bars(const json& summary, Chart& chart) {
   for (const auto& b : bars) {
     ErrorBars s;
     s.colour = b.colour;
-    for (const auto& w : summary.value("wall", json::array())) {
+    for (const auto& w : summary.value(keys::wall, json::array())) {
       const json& entry = b.parent ? w.value(b.parent, json::object()) : w;
       const json& e = entry.value(std::string(b.key) + "_error", json());
       if (!e.is_number() || !entry.value(b.key, json()).is_number()) continue;
-      s.x.push_back(w["day"].get<double>());
+      s.x.push_back(w[keys::day].get<double>());
       s.y.push_back(entry[b.key].get<double>());
       s.error.push_back(e.get<double>());
       largest = std::max(largest, e.get<double>());
@@ -106,7 +107,7 @@ void wall_charts(const RunRecord& run, json& charts) {
       t.series.push_back({l.label, *day, *c, l.colour, l.dashed, false, l.width});
   const double largest_error = add_thickness_error_bars(run.summary, t);
   t.guides = closure_guide;
-  if (const auto req = design_value(run.summary, "required_thickness"))
+  if (const auto req = design_value(run.summary, keys::required_thickness))
     t.guides.push_back({false, *req, fmt::format("required {} m", number(*req, 2))});
   const std::string bars =
       largest_error > 0.0
@@ -131,7 +132,7 @@ void wall_charts(const RunRecord& run, json& charts) {
     m.empty_note = "OB not frozen within the run";
     m.series.push_back({"", *day, *T, "#0b3c73", false, false});
     m.guides = closure_guide;
-    if (const auto limit = design_value(run.summary, "max_mean_temperature"))
+    if (const auto limit = design_value(run.summary, keys::max_mean_temperature))
       m.guides.push_back({false, *limit, fmt::format("design limit {} °C", number(*limit, 1))});
     charts.push_back(figure("ob-temperature", "Mean wall temperature on OB", m,
                             "Mean temperature over the frozen part of OB (empty until OB freezes)."));
@@ -172,7 +173,7 @@ void sensor_chart(const RunRecord& run, json& charts) {
   if (!fs::exists(file)) return;
   const CsvTable t = read_csv(file);
   // Shaft runs write days; plain geometries their own time unit.
-  const std::string unit = run.shaft() ? "d" : run.summary.value("run", json::object()).value("time_unit", "s");
+  const std::string unit = run.shaft() ? "d" : run.summary.value(keys::run, json::object()).value("time_unit", "s");
   const auto* time = t.column(run.shaft() ? "day" : "time");
   if (!time || t.header.size() < 2) return;
   auto chart_of = [&](const std::string& suffix, const std::string& title, const std::string& y_label, double scale) {
@@ -208,14 +209,14 @@ void sensor_chart(const RunRecord& run, json& charts) {
 }
 
 void front_chart(const RunRecord& run, json& charts) {
-  const auto& front = run.summary.value("front", json::array());
+  const auto& front = run.summary.value(keys::front, json::array());
   if (!last_front(run.summary)) return;  // no front formed: nothing to chart
   Series s{"", {}, {}, "#0b3c73", false, front.size() < 40};
   for (const auto& p : front) {
     s.x.push_back(p[0].get<double>());
     s.y.push_back(p[1].is_number() ? p[1].get<double>() : std::numeric_limits<double>::quiet_NaN());
   }
-  const std::string unit = run.summary.value("run", json::object()).value("time_unit", "s");
+  const std::string unit = run.summary.value(keys::run, json::object()).value("time_unit", "s");
   Chart c;
   c.title = "frozen front position over time";
   c.x_label = "time (" + unit + ")";

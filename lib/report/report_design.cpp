@@ -34,22 +34,25 @@ std::string formula_label(const std::string& key) {
 }
 
 // The wall the check measured: on the isotherm when there is one.
-json achieved(const json& w) { return w.contains("isotherm_thickness") ? w["isotherm_thickness"] : w["min_thickness"]; }
+json achieved(const json& w) {
+  return w.contains(keys::isotherm_thickness) ? w[keys::isotherm_thickness] : w[keys::min_thickness];
+}
 
 // "design met on day 47 in clay at 200 m; utilisation 0.93 on day 120"
 std::string verdict(const json& summary, const std::string& where) {
-  const json d = summary.value("design", json::object());
-  const json wall = summary.value("wall", json::array());
-  const std::string last_day = wall.empty() ? "the end" : number(wall.back()["day"], 0);
+  const json d = summary.value(keys::design, json::object());
+  const json wall = summary.value(keys::wall, json::array());
+  const std::string last_day = wall.empty() ? "the end" : number(wall.back()[keys::day], 0);
   const std::string u = wall.empty() ? "–"
-                                     : with_error(wall.back().value("utilisation", json()),
-                                                  wall.back().value("utilisation_error", json()), 2);
+                                     : with_error(wall.back().value(keys::utilisation, json()),
+                                                  wall.back().value(keys::error_of(keys::utilisation), json()), 2);
   // A wall that passes and later fails again (a pipe lost, a warm spell of brine) says so.
   const std::string again = d.value("stays_met", true) ? "" : " (but not for good: it fails again later)";
-  const std::string met = d.value("met_day", json()).is_number()
-                              ? fmt::format("design met on day {}{}{}",
-                                            with_error(d["met_day"], d.value("met_day_error", json()), 0), where, again)
-                              : fmt::format("design not met by day {}{}", last_day, where);
+  const std::string met =
+      d.value(keys::met_day, json()).is_number()
+          ? fmt::format("design met on day {}{}{}",
+                        with_error(d[keys::met_day], d.value(keys::error_of(keys::met_day), json()), 0), where, again)
+          : fmt::format("design not met by day {}{}", last_day, where);
   return fmt::format("{}; utilisation {} on day {}", met, u, last_day);
 }
 
@@ -158,24 +161,24 @@ void add_brine(const json& b, json& view) {
 
 std::string design_verdict(const json& summary) {
   std::string where;
-  if (summary.contains("governing_layer"))
-    for (const auto& l : summary["layers"])
+  if (summary.contains(keys::governing_layer))
+    for (const auto& l : summary[keys::layers])
       if (l["layer"].value("governing", false)) where = layer_place(l["layer"]);
   return verdict(summary, where);
 }
 
 void add_design(const RunRecord& run, json& view) {
   const json& s = run.summary;
-  const json d = s.value("design", json::object());
-  view["has_wall_check"] = d.contains("met_day");
+  const json d = s.value(keys::design, json::object());
+  view["has_wall_check"] = d.contains(keys::met_day);
   for (const char* key : {"wall_check_note", "wall_check_svg", "brine_svg", "brine_heat_svg", "brine_note"})
     view[key] = "";
   view["formula_rows"] = json::array();
   view["layer_rows"] = json::array();
-  view["has_layers"] = s.contains("layers");
-  view["has_brine"] = s.contains("brine");
-  if (d.contains("met_day")) {
-    const json wall = s.value("wall", json::array());
+  view["has_layers"] = s.contains(keys::layers);
+  view["has_brine"] = s.contains(keys::brine);
+  if (d.contains(keys::met_day)) {
+    const json wall = s.value(keys::wall, json::array());
     view["wall_check_note"] = fmt::format(
         "{}. The governing formula is {}; the lateral pressure {} MPa; the allowable strength is {} of the frozen soil's "
         "strength at the mean temperature of the wall on {}. Utilisation = required ÷ achieved thickness.",

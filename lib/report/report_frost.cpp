@@ -95,7 +95,7 @@ DamageSeries damage_series(const RunRecord& run) {
     return d;
   }
   d.source = "summary.json";
-  for (const auto& r : run.summary.value("damage", json::array())) {
+  for (const auto& r : run.summary.value(keys::damage, json::array())) {
     d.time.push_back(value_of(r.value("time", json())));
     d.broken_share.push_back(value_of(r.value("broken_bond_share", json())));
     d.largest.push_back(value_of(r.value("largest_damage", json())));
@@ -123,9 +123,9 @@ void add_frost_maps(const RunRecord& run, const std::string& unit, json& view) {
             : "No solid was modelled (no mechanics block): the temperature maps are above; there is no damage.";
     return;
   }
-  const json facts = run.summary.value("run", json::object());
+  const json facts = run.summary.value(keys::run, json::object());
   const auto& first = snapshots.front().second.particles;
-  const double spacing = facts.value("spacing", 0.0), h = smoothing_length(facts);
+  const double spacing = facts.value(keys::spacing, 0.0), h = smoothing_length(facts);
   // A square window over the plate (its particles' extent).
   const MapWindow window = window_over(first.position, spacing, 300);
   const FieldMap map(first, WedgeSymmetry{}, facts.value("kernel", "wendland_c2"), h, spacing, window, 0.0);
@@ -186,7 +186,7 @@ Chart damage_chart(const DamageSeries& d, bool percent, double all_frozen, const
 void add_crack_table(const RunRecord& run, json& view) {
   json rows = json::array();
   const json& cracks = run.summary.value("cracks", json::array());
-  for (const auto& d : run.summary.value("damage", json::array())) {
+  for (const auto& d : run.summary.value(keys::damage, json::array())) {
     if (!d.contains("crack_length")) continue;  // older summaries
     const std::size_t k = rows.size();
     rows.push_back({{"time", short_number(value_of(d.value("time", json())))},
@@ -220,10 +220,10 @@ void add_frost(const RunRecord& run, json& view) {
        {"frost_note", "frost_maps_note", "frost_temperature_bar_svg", "frost_material_legend_svg",
         "frost_damage_bar_svg", "pore_bars_svg", "pore_bars_caption", "frost_time_unit", "crack_note"})
     view[key] = "";
-  if (!run.summary.contains("pores") || !run.summary["pores"].is_array()) return;
+  if (!run.summary.contains(keys::pores) || !run.summary[keys::pores].is_array()) return;
   view["has_frost"] = true;
-  const auto& pores = run.summary["pores"];
-  const std::string unit = run.summary.value("run", json::object()).value("time_unit", "s");
+  const auto& pores = run.summary[keys::pores];
+  const std::string unit = run.summary.value(keys::run, json::object()).value("time_unit", "s");
   view["frost_time_unit"] = unit;
   const double all_frozen = value_of(run.summary.value("all_pores_frozen", json()));
   const DamageSeries d = damage_series(run);

@@ -16,20 +16,20 @@ void add_groundwater(const RunRecord& run, json& view) {
   view["groundwater_gaps"] = json::array();
   view["groundwater_sides"] = json::array();
   view["groundwater_flow_svg"] = "";
-  if (!run.summary.contains("groundwater")) return;
-  const json& g = run.summary["groundwater"];
+  if (!run.summary.contains(keys::groundwater)) return;
+  const json& g = run.summary[keys::groundwater];
   view["has_groundwater"] = true;
   const auto& q = g.value("darcy_flux_m_per_day", json::array({0.0, 0.0}));
   view["groundwater_note"] =
       fmt::format("Regional Darcy flux ({}, {}) m/d; permeability {:.3g} m²; law {}; the flow was solved {} times. {}.",
                   number(q[0], 2), number(q[1], 2), g.value("permeability_m2", 0.0), g.value("permeability_law", ""),
-                  g.value("flow_solves", 0), g.value("verdict", ""));
+                  g.value("flow_solves", 0), g.value(keys::verdict, ""));
   std::vector<Series> series;
-  for (const auto& gap : g.value("gaps", json::array())) {
+  for (const auto& gap : g.value(keys::gaps, json::array())) {
     view["groundwater_gaps"].push_back(
         {{"between", gap.value("between", "")},
          {"position", gap.value("position", "")},
-         {"closure_day", with_error(gap["closure_day"], gap.value("closure_day_error", json()), 2)}});
+         {"closure_day", with_error(gap[keys::closure_day], gap.value(keys::error_of(keys::closure_day), json()), 2)}});
     if (!gap.contains("flow")) continue;
     Series s;
     s.label = gap.value("between", "") + " (" + gap.value("position", "") + ")";
@@ -37,12 +37,12 @@ void add_groundwater(const RunRecord& run, json& view) {
     s.y = gap["flow"].value("m3_per_day_per_m", std::vector<double>{});
     series.push_back(std::move(s));
   }
-  for (const auto& w : run.summary.value("wall", json::array()))
-    if (w.contains("min_thickness_upstream"))
-      view["groundwater_sides"].push_back({{"day", number(w["day"], 1)},
-                                           {"upstream", number(w["min_thickness_upstream"], 2)},
-                                           {"downstream", number(w["min_thickness_downstream"], 2)},
-                                           {"thinnest", number(w["min_thickness"], 2)}});
+  for (const auto& w : run.summary.value(keys::wall, json::array()))
+    if (w.contains(keys::min_thickness_upstream))
+      view["groundwater_sides"].push_back({{"day", number(w[keys::day], 1)},
+                                           {"upstream", number(w[keys::min_thickness_upstream], 2)},
+                                           {"downstream", number(w[keys::min_thickness_downstream], 2)},
+                                           {"thinnest", number(w[keys::min_thickness], 2)}});
   Chart chart = line_chart("Water through each gap", "time (d)", "flow (m³/d per m of depth)", std::move(series));
   chart.y_include = {0.0};
   view["groundwater_flow_svg"] = render_svg(chart);

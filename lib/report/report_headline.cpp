@@ -31,25 +31,25 @@ std::string length(double metres) {
 
 // The front's estimated error at time t (summary "front_error"), or null.
 json front_error(const json& summary, double t) {
-  for (const auto& row : summary.value("front_error", json::array()))
+  for (const auto& row : summary.value(keys::error_of(keys::front), json::array()))
     if (row.is_array() && row.size() == 2 && row[0].is_number() && row[0].get<double>() == t) return row[1];
   return json();
 }
 
 const json& run_facts(const RunRecord& run) {
   static const json none = json::object();
-  const auto it = run.summary.find("run");
+  const auto it = run.summary.find(keys::run);
   return it != run.summary.end() && it->is_object() ? *it : none;
 }
 
 // The last reading of each sensor: "monitoring" {name: [[t, T], ...]}.
 void sensor_temperature_cards(const RunRecord& run, const std::string& unit, json& cards) {
-  const auto& m = run.summary.value("monitoring", json::object());
+  const auto& m = run.summary.value(keys::monitoring, json::object());
   int shown = 0;
   for (const auto& [name, series] : m.items()) {
     if (!series.is_array() || series.empty() || shown == 4) continue;
     const auto& last = series.back();
-    const auto& errors = run.summary.value("monitoring_error", json::object()).value(name, json::array());
+    const auto& errors = run.summary.value(keys::error_of(keys::monitoring), json::object()).value(name, json::array());
     const json error = !errors.empty() && errors.back().size() > 1 ? errors.back()[1] : json();
     cards.push_back(card("Sensor " + name + ", " + at(value_of(last[0]), unit), with_error(last[1], error, 2) + " °C",
                          "temperature"));
@@ -59,8 +59,8 @@ void sensor_temperature_cards(const RunRecord& run, const std::string& unit, jso
 
 // The last reading of each sensor of the solid: "monitoring_solid" {name: [[t, ux, uy, damage], ...]}.
 void sensor_displacement_cards(const RunRecord& run, const std::string& unit, json& cards) {
-  const auto& m = run.summary.value("monitoring_solid", json::object());
-  const auto& heat = run.summary.value("monitoring", json::object());
+  const auto& m = run.summary.value(keys::monitoring_solid, json::object());
+  const auto& heat = run.summary.value(keys::monitoring, json::object());
   int shown = 0;
   for (const auto& [name, series] : m.items()) {
     if (!series.is_array() || series.empty() || shown == 3) continue;
@@ -90,7 +90,7 @@ void bond_cards(const RunRecord& run, const std::string& unit, json& cards) {
                                                        length(value_of(first.value("x", json()))),
                                                        length(value_of(first.value("y", json())))))
                                     : card("First crack", "none", "no bond broke within the run"));
-  const auto& damage = run.summary.value("damage", json::array());
+  const auto& damage = run.summary.value(keys::damage, json::array());
   if (!damage.empty() && damage.back().contains("crack_length"))
     cards.push_back(card("Crack length, " + at(value_of(damage.back().value("time", json())), unit),
                          length(value_of(damage.back()["crack_length"])),
@@ -101,7 +101,7 @@ void bond_cards(const RunRecord& run, const std::string& unit, json& cards) {
 }
 
 void pore_cards(const RunRecord& run, const std::string& unit, json& cards) {
-  const auto& pores = run.summary["pores"];
+  const auto& pores = run.summary[keys::pores];
   const double all = value_of(run.summary.value("all_pores_frozen", json()));
   std::size_t frozen = 0, cracked = 0, told = 0;
   double lo = 1.0, hi = 0.0;
@@ -129,9 +129,9 @@ std::optional<std::pair<double, double>> last_front(const json& summary) {
   // The front is measured from the face's row of particles (frozen by
   // assumption) to the first row at least half liquid: with nothing frozen
   // beyond the face it sits half a spacing in.
-  const double spacing = summary.value("run", json::object()).value("spacing", 0.0);
+  const double spacing = summary.value(keys::run, json::object()).value(keys::spacing, 0.0);
   std::optional<std::pair<double, double>> last;
-  for (const auto& f : summary.value("front", json::array()))
+  for (const auto& f : summary.value(keys::front, json::array()))
     if (f.is_array() && f.size() == 2 && f[0].is_number() && f[1].is_number() &&
         f[1].get<double>() > 0.5 * spacing * (1.0 + 1e-6))
       last = std::pair{f[0].get<double>(), f[1].get<double>()};
@@ -143,7 +143,7 @@ json card(const std::string& label, const std::string& value, const std::string&
 }
 
 std::string method_line(const RunRecord& run) {
-  if (run.summary.value("physics", std::string()) == "cfd-dem")
+  if (run.summary.value(keys::physics, std::string()) == "cfd-dem")
     return "Grains and pore water: DEM grains in LAMMPS coupled with a coarse-grid flow (CFD-DEM).";
   const bool pd = run_facts(run).value("method", std::string()) == "pd";
   const std::string heat = pd ? "peridynamic (PD) heat conduction" : "SPH heat conduction";

@@ -23,7 +23,7 @@ namespace {
 
 WedgeSymmetry wedge_of(const json& summary) {
   WedgeSymmetry w;
-  const auto& s = summary["wedge"];
+  const auto& s = summary[keys::wedge];
   w.mirror_lines = s.value("mirror_lines", 0);
   w.start = s.value("start_deg", 0.0) * std::numbers::pi / 180;
   w.angle = s.value("angle_deg", 360.0) * std::numbers::pi / 180;
@@ -146,7 +146,7 @@ void add_maps(const RunRecord& run, json& view) {
   view["colour_bar_svg"] = "";
   view["maps_note"] = "";
   view["show_maps_note"] = true;
-  if (!run.shaft() || !run.summary.contains("wedge")) {
+  if (!run.shaft() || !run.summary.contains(keys::wedge)) {
     add_maps_of_plain_run(run, view);
     return;
   }
@@ -155,8 +155,8 @@ void add_maps(const RunRecord& run, json& view) {
     view["maps_note"] = "No VTK snapshots in this directory (output.vtk is off), so no maps.";
     return;
   }
-  const auto& facts = run.summary["run"];
-  const double spacing = facts.value("spacing", 0.0), h = smoothing_length(facts);
+  const auto& facts = run.summary[keys::run];
+  const double spacing = facts.value(keys::spacing, 0.0), h = smoothing_length(facts);
   const std::string kernel = facts.value("kernel", "wendland_c2");
   const WedgeSymmetry symmetry = wedge_of(run.summary);
   const ShaftScene scene = shaft_scene(run);

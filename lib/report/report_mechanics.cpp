@@ -55,7 +55,7 @@ void add_mechanics(const RunRecord& run, json& view) {
   view["mechanics_grid"] = "maps";
   view["mechanics_heading"] = "Displacement";
   if (!run.mechanics()) return;
-  const auto& facts = run.summary["run"];
+  const auto& facts = run.summary[keys::run];
   view["has_mechanics"] = true;
   const auto& m = facts["mechanics"];
   const bool breakable = m.value("critical_stretch", json()).is_number();
@@ -79,7 +79,7 @@ void add_mechanics(const RunRecord& run, json& view) {
                                 solids.snapshot.front().temperature.size() == solids.snapshot.front().damage.size();
   const bool with_damage = !run.frost() && breakable && solids.largest_damage > 0.0;
   const auto& points = solids.snapshot.front().particles.position;
-  const MapWindow window = window_over(points, facts.value("spacing", 0.0), 300);
+  const MapWindow window = window_over(points, facts.value(keys::spacing, 0.0), 300);
   const CloudRaster cloud(points, triangle_edge(facts), window);
   std::vector<std::vector<double>> temperatures;
   if (with_temperature)

@@ -29,7 +29,7 @@ ColourScale temperature_scale(const std::vector<std::vector<double>>& snapshots,
 }
 
 double triangle_edge(const json& facts) {
-  const double spacing = facts.value("spacing", 0.0);
+  const double spacing = facts.value(keys::spacing, 0.0);
   const double coarsest = facts.value("coarsest_spacing", spacing);
   if (!(spacing > 0.0)) throw std::runtime_error("summary.json: run.spacing is missing; it is needed to draw the maps");
   // A lattice's diagonals are 1.41 spacings; a hole's slivers are longer.
@@ -43,7 +43,7 @@ void add_plain_maps(const RunRecord& run, json& view) {
     view["maps_note"] = "No VTK snapshots in this directory (output.vtk is off), so no maps.";
     return;
   }
-  const json facts = run.summary.value("run", json::object());
+  const json facts = run.summary.value(keys::run, json::object());
   // The free particles of each snapshot (fixed ones beyond a face, where
   // the files have them, hold extrapolated values).
   std::vector<particles::Vec<2>> points;
@@ -60,12 +60,12 @@ void add_plain_maps(const RunRecord& run, json& view) {
     T.push_back(std::move(t));
     times.push_back(s.time);
   }
-  const double spacing = facts.value("spacing", 0.0);
+  const double spacing = facts.value(keys::spacing, 0.0);
   const MapWindow window = window_over(points, spacing, 400);
   const CloudRaster cloud(points, triangle_edge(facts), window);
   const ColourScale colours = temperature_scale(T, run.freezing_point());
   const std::string unit = facts.value("time_unit", "s");
-  const auto& fronts = run.summary.value("interface", json::array());
+  const auto& fronts = run.summary.value(keys::interface, json::array());
   json maps = json::array();
   for (std::size_t k = 0; k < T.size(); ++k) {
     std::vector<post::Polyline> curves;

@@ -36,8 +36,8 @@ std::string conductivity(const project::PhaseProperties& p) {
 
 WedgeSymmetry wedge_of(const json& summary) {
   WedgeSymmetry w;
-  if (!summary.contains("wedge")) return w;
-  const auto& s = summary["wedge"];
+  if (!summary.contains(keys::wedge)) return w;
+  const auto& s = summary[keys::wedge];
   w.mirror_lines = s.value("mirror_lines", 0);
   w.start = s.value("start_deg", 0.0) * std::numbers::pi / 180;
   w.angle = s.value("angle_deg", 360.0) * std::numbers::pi / 180;
@@ -188,8 +188,9 @@ void add_sph_numerics(const project::Project& p, json& rows) {
 // What the peridynamics used: horizon, thermal bonds, bond law, solver.
 void add_pd_numerics(const RunRecord& run, json& rows) {
   const auto& p = *run.project;
-  const json& m = run.summary.value("run", json::object()).value("mechanics", json::object());
-  const double spacing = run.summary.value("run", json::object()).value("spacing", p.numerics.spacing.value_or(0.0));
+  const json& m = run.summary.value(keys::run, json::object()).value("mechanics", json::object());
+  const double spacing =
+      run.summary.value(keys::run, json::object()).value(keys::spacing, p.numerics.spacing.value_or(0.0));
   rows.push_back(row("method", "peridynamics (PD), bond-based, on a square lattice"));
   rows.push_back(row("horizon", fmt::format("δ = {} × spacing = {} mm", number(p.numerics.horizon, 3),
                                             number(1e3 * p.numerics.horizon * spacing, 4))));
@@ -219,14 +220,14 @@ void add_pd_numerics(const RunRecord& run, json& rows) {
 void add_numerics(const RunRecord& run, json& view) {
   const auto& p = *run.project;
   const auto& n = p.numerics;
-  const auto& facts = run.summary.value("run", json::object());
+  const auto& facts = run.summary.value(keys::run, json::object());
   const double u = p.time.unit_seconds();
   std::string snapshots;
   for (double t : p.time.snapshots) snapshots += (snapshots.empty() ? "" : ", ") + fmt::format("{:g}", t / u);
   json rows = json::array({
-      row("particle spacing", facts.contains("spacing") ? metres(facts.value("spacing", 0.0), 4) + " m" +
-                                                              (n.spacing ? "" : " (chosen by frostwall)")
-                                                        : (n.spacing ? number(*n.spacing, 4) + " m" : "default")),
+      row("particle spacing", facts.contains(keys::spacing) ? metres(facts.value(keys::spacing, 0.0), 4) + " m" +
+                                                                  (n.spacing ? "" : " (chosen by frostwall)")
+                                                            : (n.spacing ? number(*n.spacing, 4) + " m" : "default")),
   });
   if (n.method == project::Method::pd) add_pd_numerics(run, rows);
   else add_sph_numerics(p, rows);

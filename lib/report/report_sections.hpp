@@ -13,6 +13,11 @@
 #include "report/colour_scale.hpp"
 #include "report/svg_chart.hpp"
 #include "report/view_numbers.hpp"
+#include "summary/summary.hpp"
+
+namespace frostwall::report {
+namespace keys = summary::keys;
+}  // namespace frostwall::report
 
 namespace frostwall::report::detail {
 
@@ -21,10 +26,10 @@ struct RunRecord {
   std::filesystem::path dir;
   nlohmann::json summary;
   std::optional<project::Project> project;  // from project.json, when recorded and valid
-  bool shaft() const { return summary.contains("wall"); }
+  bool shaft() const { return summary.contains(keys::wall); }
   // A PD solid ran (summary run.mechanics); a porous plate froze (summary pores).
-  bool mechanics() const { return summary.value("run", nlohmann::json::object()).contains("mechanics"); }
-  bool frost() const { return summary.contains("pores") && summary["pores"].is_array(); }
+  bool mechanics() const { return summary.value(keys::run, nlohmann::json::object()).contains("mechanics"); }
+  bool frost() const { return summary.contains(keys::pores) && summary[keys::pores].is_array(); }
   // The freezing point of what freezes: the pore water of a porous plate, else the soil.
   double freezing_point() const {
     return project ? (frost() ? project->pore_fluid.freezing_point : project->soil.freezing_point) : 0.0;
