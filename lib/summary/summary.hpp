@@ -34,19 +34,18 @@
 namespace frostwall::summary {
 
 // X(name): the key spelled as the constant's name.
+// clang-format off
 #define FROSTWALL_SUMMARY_KEYS(X)                                                                                      \
-  X(project)                                                                                                           \
-  X(frostwall_version) X(closure_time_days) X(front_contact_days) X(thinnest_angle_deg) X(wall) X(day) X(OA) X(OB)     \
-      X(inner) X(outer) X(thickness) X(min_thickness) X(mean_temperature_OB) X(utilisation) X(isotherm_thickness)      \
-          X(isotherm_mean_temperature) X(min_thickness_upstream) X(min_thickness_downstream) X(design)                 \
-              X(required_thickness) X(max_mean_temperature) X(reached_day) X(met_day) X(pass) X(monitoring)            \
-                  X(monitoring_solid) X(interface) X(front) X(front_axis) X(front_along) X(brine) X(wedge)             \
-                      X(heat_balance) X(run) X(particles) X(steps) X(wall_seconds) X(integrator) X(spacing)            \
-                          X(smoothing_length) X(warnings) X(groundwater) X(gaps) X(closure_day) X(verdict)             \
-                              X(error_estimate) X(status) X(coarse_closure_days) X(sections) X(critical_depth)         \
-                                  X(as_built) X(thinnest_wall) X(design_margin) X(intact) X(scenario_directory)        \
-                                      X(layers) X(governing_layer) X(calibration) X(forecast) X(parameters) X(physics) \
-                                          X(soil) X(pores) X(damage)
+  X(project) X(frostwall_version) X(closure_time_days) X(front_contact_days) X(thinnest_angle_deg)                     \
+  X(wall) X(day) X(OA) X(OB) X(inner) X(outer) X(thickness) X(min_thickness) X(mean_temperature_OB) X(utilisation)     \
+  X(isotherm_thickness) X(isotherm_mean_temperature) X(min_thickness_upstream) X(min_thickness_downstream)             \
+  X(design) X(required_thickness) X(max_mean_temperature) X(reached_day) X(met_day) X(pass) X(heat_balance)            \
+  X(monitoring) X(monitoring_solid) X(interface) X(front) X(front_axis) X(front_along) X(brine) X(wedge)               \
+  X(run) X(particles) X(steps) X(wall_seconds) X(integrator) X(spacing) X(smoothing_length) X(warnings)                \
+  X(groundwater) X(gaps) X(closure_day) X(verdict) X(error_estimate) X(status) X(coarse_closure_days)                  \
+  X(sections) X(critical_depth) X(as_built) X(thinnest_wall) X(design_margin) X(intact) X(scenario_directory)          \
+  X(layers) X(governing_layer) X(calibration) X(forecast) X(parameters) X(physics) X(soil) X(pores) X(damage)
+// clang-format on
 
 namespace keys {
 #define FROSTWALL_SUMMARY_KEY(name) inline constexpr char name[] = #name;
