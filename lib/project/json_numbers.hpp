@@ -3,7 +3,6 @@
 #pragma once
 
 #include <limits>
-#include <optional>
 
 namespace frostwall::project {
 
@@ -12,14 +11,6 @@ namespace frostwall::project {
 template <class J>
 double number_or_nan(const J& v) {
   return v.is_number() ? v.template get<double>() : std::numeric_limits<double>::quiet_NaN();
-}
-
-// The number at object[key]; none when `object` is no object, lacks the
-// key or holds no number there.
-template <class J>
-std::optional<double> number_at(const J& object, const char* key) {
-  if (!object.is_object() || !object.contains(key) || !object[key].is_number()) return std::nullopt;
-  return object[key].template get<double>();
 }
 
 }  // namespace frostwall::project

@@ -12,12 +12,15 @@
 #include "report/cloud_raster.hpp"
 #include "report/field_map.hpp"
 #include "report/nice_scale.hpp"
+#include "project/json_numbers.hpp"
 #include "report/report_sections.hpp"
 #include "report/run_files.hpp"
 #include "report/svg.hpp"
 #include "report/svg_chart.hpp"
 
 namespace frostwall::report::detail {
+
+using project::number_or_nan;
 
 using nlohmann::json;
 namespace fs = std::filesystem;
@@ -26,12 +29,11 @@ namespace {
 
 constexpr double nan = std::numeric_limits<double>::quiet_NaN();
 
-double value_of(const json& v) { return v.is_number() ? v.get<double>() : nan; }
 // A pore's saturation, marked when it lies below the critical saturation
 // (its frozen water imposes nothing on the solid). Older summaries carry
 // none: their pores were full.
 std::string saturation_text(const json& pore) {
-  const double S = pore.contains("saturation") ? value_of(pore["saturation"]) : 1.0;
+  const double S = pore.contains("saturation") ? number_or_nan(pore["saturation"]) : 1.0;
   const json& imposed = pore.contains("imposed_volume_change") ? pore["imposed_volume_change"] : json();
   return number(S, 3) + (imposed.is_number() && imposed.get<double>() <= 0.0 ? " \u2020" : "");
 }
@@ -96,10 +98,10 @@ DamageSeries damage_series(const RunRecord& run) {
   }
   d.source = "summary.json";
   for (const auto& r : run.summary.value(keys::damage, json::array())) {
-    d.time.push_back(value_of(r.value("time", json())));
-    d.broken_share.push_back(value_of(r.value("broken_bond_share", json())));
-    d.largest.push_back(value_of(r.value("largest_damage", json())));
-    d.area.push_back(value_of(r.value("damaged_area", json())));
+    d.time.push_back(number_or_nan(r.value("time", json())));
+    d.broken_share.push_back(number_or_nan(r.value("broken_bond_share", json())));
+    d.largest.push_back(number_or_nan(r.value("largest_damage", json())));
+    d.area.push_back(number_or_nan(r.value("damaged_area", json())));
   }
   return d;
 }
@@ -189,11 +191,11 @@ void add_crack_table(const RunRecord& run, json& view) {
   for (const auto& d : run.summary.value(keys::damage, json::array())) {
     if (!d.contains("crack_length")) continue;  // older summaries
     const std::size_t k = rows.size();
-    rows.push_back({{"time", short_number(value_of(d.value("time", json())))},
-                    {"broken", number(100.0 * value_of(d.value("broken_bond_share", json())), 3)},
-                    {"length", short_number(1e6 * value_of(d["crack_length"]))},
-                    {"per_area", short_number(1e-3 * value_of(d.value("crack_length_per_area", json())))},
-                    {"energy", short_number(1e3 * value_of(d.value("broken_bond_energy", json())))},
+    rows.push_back({{"time", short_number(number_or_nan(d.value("time", json())))},
+                    {"broken", number(100.0 * number_or_nan(d.value("broken_bond_share", json())), 3)},
+                    {"length", short_number(1e6 * number_or_nan(d["crack_length"]))},
+                    {"per_area", short_number(1e-3 * number_or_nan(d.value("crack_length_per_area", json())))},
+                    {"energy", short_number(1e3 * number_or_nan(d.value("broken_bond_energy", json())))},
                     {"file", k < cracks.size() ? cracks[k].value("file", "") : ""}});
   }
   view["crack_rows"] = rows;
@@ -225,7 +227,7 @@ void add_frost(const RunRecord& run, json& view) {
   const auto& pores = run.summary[keys::pores];
   const std::string unit = run.summary.value(keys::run, json::object()).value("time_unit", "s");
   view["frost_time_unit"] = unit;
-  const double all_frozen = value_of(run.summary.value("all_pores_frozen", json()));
+  const double all_frozen = number_or_nan(run.summary.value("all_pores_frozen", json()));
   const DamageSeries d = damage_series(run);
 
   // The end of the run, where unfinished freezing bars stop.
@@ -248,20 +250,22 @@ void add_frost(const RunRecord& run, json& view) {
   double first_start = nan;
   for (const auto& p : pores) {
     const std::string id = p.contains("id") ? p["id"].dump() : std::to_string(rows.size());
-    const double start = value_of(p.value("freezing_start", json())), stop = value_of(p.value("freezing_end", json()));
+    const double start = number_or_nan(p.value("freezing_start", json())),
+                 stop = number_or_nan(p.value("freezing_end", json()));
     bars.bars.push_back({"pore " + id, start, stop});
     started += std::isfinite(start), finished += std::isfinite(start) && std::isfinite(stop);
     if (std::isfinite(start)) first_start = std::isfinite(first_start) ? std::min(first_start, start) : start;
     rows.push_back(
         {{"pore", id},
-         {"centre_x", number(1e6 * value_of(p.value("x", json())), 1)},
-         {"centre_y", number(1e6 * value_of(p.value("y", json())), 1)},
-         {"radius", number(1e6 * value_of(p.value("radius", json())), 1)},
+         {"centre_x", number(1e6 * number_or_nan(p.value("x", json())), 1)},
+         {"centre_y", number(1e6 * number_or_nan(p.value("y", json())), 1)},
+         {"radius", number(1e6 * number_or_nan(p.value("radius", json())), 1)},
          {"saturation", saturation_text(p)},
          {"freezing_start", short_number(start)},
          {"freezing_end", short_number(stop)},
          {"max_rim_damage", number(p.value("max_rim_damage", json()), 2)},
-         {"crack_reach", number(value_of(p.value("crack_reach", json())) / value_of(p.value("radius", json())), 2)}});
+         {"crack_reach",
+          number(number_or_nan(p.value("crack_reach", json())) / number_or_nan(p.value("radius", json())), 2)}});
   }
   bars.width = 720;
   view["pore_rows"] = rows;

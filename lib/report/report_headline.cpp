@@ -7,16 +7,16 @@
 #include <fmt/core.h>
 #include <limits>
 
+#include "project/json_numbers.hpp"
 #include "report/report_sections.hpp"
 
 namespace frostwall::report::detail {
 
+using project::number_or_nan;
+
 using nlohmann::json;
 
 namespace {
-
-constexpr double nan = std::numeric_limits<double>::quiet_NaN();
-double value_of(const json& v) { return v.is_number() ? v.get<double>() : nan; }
 
 // A time of the run in its own unit: "400 s", "0.0062 s".
 std::string at(double t, const std::string& unit) { return std::isfinite(t) ? fmt::format("{:.3g} {}", t, unit) : "–"; }
@@ -51,8 +51,8 @@ void sensor_temperature_cards(const RunRecord& run, const std::string& unit, jso
     const auto& last = series.back();
     const auto& errors = run.summary.value(keys::error_of(keys::monitoring), json::object()).value(name, json::array());
     const json error = !errors.empty() && errors.back().size() > 1 ? errors.back()[1] : json();
-    cards.push_back(card("Sensor " + name + ", " + at(value_of(last[0]), unit), with_error(last[1], error, 2) + " °C",
-                         "temperature"));
+    cards.push_back(card("Sensor " + name + ", " + at(number_or_nan(last[0]), unit),
+                         with_error(last[1], error, 2) + " °C", "temperature"));
     ++shown;
   }
 }
@@ -65,11 +65,12 @@ void sensor_displacement_cards(const RunRecord& run, const std::string& unit, js
   for (const auto& [name, series] : m.items()) {
     if (!series.is_array() || series.empty() || shown == 3) continue;
     const auto& last = series.back();
-    const double ux = value_of(last[1]), uy = value_of(last[2]);
+    const double ux = number_or_nan(last[1]), uy = number_or_nan(last[2]);
     std::string note = fmt::format("|u| of ux {}, uy {} µm", number(1e6 * ux, 3), number(1e6 * uy, 3));
     if (heat.contains(name) && heat[name].is_array() && !heat[name].empty())
       note += "; " + number(heat[name].back()[1], 2) + " °C";
-    cards.push_back(card("Sensor " + name + ", " + at(value_of(last[0]), unit), micrometres(std::hypot(ux, uy)), note));
+    cards.push_back(
+        card("Sensor " + name + ", " + at(number_or_nan(last[0]), unit), micrometres(std::hypot(ux, uy)), note));
     ++shown;
   }
 }
@@ -81,34 +82,34 @@ void bond_cards(const RunRecord& run, const std::string& unit, json& cards) {
     cards.push_back(card("Broken bonds", "none", "the bonds cannot break: the material has no fracture energy"));
     return;
   }
-  const double bonds = value_of(m.value("bonds", json())), broken = value_of(m.value("broken_bonds", json()));
+  const double bonds = number_or_nan(m.value("bonds", json())), broken = number_or_nan(m.value("broken_bonds", json()));
   cards.push_back(card("Broken bonds", bonds > 0 ? fmt::format("{:.3g} %", 100.0 * broken / bonds) : "–",
                        fmt::format("{:.0f} of {:.0f} bonds, at the end of the run", broken, bonds)));
   const auto& first = m.value("first_damage", json());
-  cards.push_back(first.is_object() ? card("First crack", at(value_of(first.value("time", json())), unit),
+  cards.push_back(first.is_object() ? card("First crack", at(number_or_nan(first.value("time", json())), unit),
                                            fmt::format("first broken bonds near x = {}, y = {}",
-                                                       length(value_of(first.value("x", json()))),
-                                                       length(value_of(first.value("y", json())))))
+                                                       length(number_or_nan(first.value("x", json()))),
+                                                       length(number_or_nan(first.value("y", json())))))
                                     : card("First crack", "none", "no bond broke within the run"));
   const auto& damage = run.summary.value(keys::damage, json::array());
   if (!damage.empty() && damage.back().contains("crack_length"))
-    cards.push_back(card("Crack length, " + at(value_of(damage.back().value("time", json())), unit),
-                         length(value_of(damage.back()["crack_length"])),
+    cards.push_back(card("Crack length, " + at(number_or_nan(damage.back().value("time", json())), unit),
+                         length(number_or_nan(damage.back()["crack_length"])),
                          "both faces of the cracks (damage above 0.4)"));
   else if (m.contains("crack_length"))
-    cards.push_back(card("Crack length", length(value_of(m["crack_length"])),
+    cards.push_back(card("Crack length", length(number_or_nan(m["crack_length"])),
                          "at the end of the run; both faces of the cracks (damage above 0.4)"));
 }
 
 void pore_cards(const RunRecord& run, const std::string& unit, json& cards) {
   const auto& pores = run.summary[keys::pores];
-  const double all = value_of(run.summary.value("all_pores_frozen", json()));
+  const double all = number_or_nan(run.summary.value("all_pores_frozen", json()));
   std::size_t frozen = 0, cracked = 0, told = 0;
   double lo = 1.0, hi = 0.0;
   for (const auto& p : pores) {
     frozen += p.value("freezing_end", json()).is_number();
     if (p.contains("cracked")) ++told, cracked += p["cracked"].is_boolean() && p["cracked"].get<bool>();
-    const double S = p.contains("saturation") ? value_of(p["saturation"]) : 1.0;
+    const double S = p.contains("saturation") ? number_or_nan(p["saturation"]) : 1.0;
     if (std::isfinite(S)) lo = std::min(lo, S), hi = std::max(hi, S);
   }
   cards.push_back(
@@ -161,7 +162,7 @@ void add_plain_headline(const RunRecord& run, json& view) {
   if (run.frost()) pore_cards(run, unit, cards);
   if (run.mechanics()) {
     const auto& m = run_facts(run)["mechanics"];
-    cards.push_back(card("Largest displacement", micrometres(value_of(m.value("largest_displacement", json()))),
+    cards.push_back(card("Largest displacement", micrometres(number_or_nan(m.value("largest_displacement", json()))),
                          "anywhere in the solid, at the end of the run"));
     if (!run.frost()) sensor_displacement_cards(run, unit, cards);
     bond_cards(run, unit, cards);

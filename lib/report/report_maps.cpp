@@ -21,15 +21,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-WedgeSymmetry wedge_of(const json& summary) {
-  WedgeSymmetry w;
-  const auto& s = summary[keys::wedge];
-  w.mirror_lines = s.value("mirror_lines", 0);
-  w.start = s.value("start_deg", 0.0) * std::numbers::pi / 180;
-  w.angle = s.value("angle_deg", 360.0) * std::numbers::pi / 180;
-  return w;
-}
-
 // The square a shaft's maps show: the whole ring, or a window around OA's
 // pipe wide enough for the neighbouring pipes and the wall; `where` says
 // which, for the note.

@@ -34,16 +34,6 @@ std::string conductivity(const project::PhaseProperties& p) {
                          : number(p.conductivity[0], 2);
 }
 
-WedgeSymmetry wedge_of(const json& summary) {
-  WedgeSymmetry w;
-  if (!summary.contains(keys::wedge)) return w;
-  const auto& s = summary[keys::wedge];
-  w.mirror_lines = s.value("mirror_lines", 0);
-  w.start = s.value("start_deg", 0.0) * std::numbers::pi / 180;
-  w.angle = s.value("angle_deg", 360.0) * std::numbers::pi / 180;
-  return w;
-}
-
 void add_layout(const RunRecord& run, const project::ShaftSection& section, json& view) {
   const auto pipes = geometry::pipe_positions(section.layout);
   const auto& L = section.layout;
@@ -298,6 +288,16 @@ void add_design_and_sensors(const project::Project& p, json& view) {
 }
 
 }  // namespace
+
+WedgeSymmetry wedge_of(const json& summary) {
+  WedgeSymmetry w;
+  if (!summary.contains(keys::wedge)) return w;
+  const auto& s = summary[keys::wedge];
+  w.mirror_lines = s.value("mirror_lines", 0);
+  w.start = s.value("start_deg", 0.0) * std::numbers::pi / 180;
+  w.angle = s.value("angle_deg", 360.0) * std::numbers::pi / 180;
+  return w;
+}
 
 void add_project(const RunRecord& run, json& view) {
   // Every key the template names, so nothing renders from a missing value.

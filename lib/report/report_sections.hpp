@@ -13,6 +13,7 @@
 #include "report/colour_scale.hpp"
 #include "report/svg_chart.hpp"
 #include "report/view_numbers.hpp"
+#include "report/wedge_symmetry.hpp"
 #include "summary/summary.hpp"
 
 namespace frostwall::report {
@@ -20,6 +21,10 @@ namespace keys = summary::keys;
 }  // namespace frostwall::report
 
 namespace frostwall::report::detail {
+
+// The mirror wedge a run simulated (summary "wedge"); the full circle when
+// it has none.
+WedgeSymmetry wedge_of(const nlohmann::json& summary);
 
 // Everything read from a run's output directory.
 struct RunRecord {

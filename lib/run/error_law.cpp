@@ -6,13 +6,13 @@
 namespace frostwall::run {
 
 namespace {
-constexpr double missing = std::numeric_limits<double>::quiet_NaN();
+constexpr double unknown = std::numeric_limits<double>::quiet_NaN();
 }
 
 std::vector<double> series_errors(const std::vector<double>& fine, const std::vector<std::vector<double>>& coarse,
                                   double ratio, double order) {
   const std::size_t n = fine.size();
-  std::vector<double> error(n, missing);
+  std::vector<double> error(n, unknown);
   if (coarse.size() < 2) return error;  // no scatter from fewer than two twins
   for (const auto& c : coarse)
     if (c.size() != n) return error;
