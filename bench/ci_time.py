@@ -7,15 +7,16 @@ slowest tests of the run, from ctest's timing file.
   python3 bench/ci_time.py                 # clone, `bash .ci/main-job`, then `bash .ci/run`
   python3 bench/ci_time.py --cold          # the same with an empty compiler cache (a cache of its own)
   python3 bench/ci_time.py --ci-only       # clone, then `bash .ci/run` alone (CI's own command)
-  python3 bench/ci_time.py --slowest BUILD # only the slowest tests of an existing build folder
-  python3 bench/ci_time.py --costs BUILD   # write tests/test_costs.cmake from that folder's last ctest run
+  python3 bench/ci_time.py --slowest BUILD # the slowest tests of a build folder's last ctest run
+  python3 bench/ci_time.py --costs BUILD   # write tests/test_costs.cmake from that run
+                                           # (BUILD may also be a file of ctest's console output)
 
 The compiler cache (ccache) is the user's own, kept between runs on the
 machine; --cold points CCACHE_DIR at an empty folder so that every source is
 compiled. The clone is made from the committed state (git clone of this
 repository), so commit first.
 """
-import argparse, os, shutil, subprocess, sys, tempfile, time
+import argparse, os, re, shutil, subprocess, sys, tempfile, time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
@@ -30,21 +31,27 @@ def timed(command, cwd, env):
     return seconds, proc.stdout
 
 
-def test_costs(build):
-    """(seconds, name) of every test in ctest's timing file (the last run's
-    time of each test: CTestCostData.txt lines are `name runs seconds`)."""
-    path = os.path.join(build, "Testing", "Temporary", "CTestCostData.txt")
-    costs = []
-    with open(path) as f:
+def test_costs(source):
+    """(seconds, name) of every test of one ctest run, slowest first: from a
+    build folder's Testing/Temporary/LastTest.log (`N/M Test: name` then
+    `Test time = X sec`), or from a file of ctest's console output (`Test #N:
+    name .... Passed X sec`). ctest's own timing file cannot hold names with
+    spaces."""
+    path = source
+    if os.path.isdir(source):
+        path = os.path.join(source, "Testing", "Temporary", "LastTest.log")
+    costs, name = [], None
+    console = re.compile(r"Test +#\d+: (.*?) \.{3,}.*?\s([\d.]+) sec$")
+    with open(path, errors="replace") as f:
         for line in f:
-            if line.startswith("---"):
-                break
-            name, _, rest = line.rstrip("\n").rpartition(" ")
-            name, _, _ = name.rpartition(" ")
-            try:
-                costs.append((float(rest), name))
-            except ValueError:
-                pass
+            line = line.rstrip("\n")
+            if m := console.search(line):
+                costs.append((float(m.group(2)), m.group(1)))
+            elif m := re.match(r"\d+/\d+ Test: (.*)$", line):
+                name = m.group(1)
+            elif name and (m := re.match(r"Test time = +([\d.]+) sec", line)):
+                costs.append((float(m.group(1)), name))
+                name = None
     return sorted(costs, reverse=True)
 
 
@@ -77,7 +84,7 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--cold", action="store_true", help="an empty compiler cache of its own")
     parser.add_argument("--ci-only", action="store_true", help="only `bash .ci/run` after the clone")
-    parser.add_argument("--slowest", metavar="BUILD", help="only list the slowest tests of this build folder")
+    parser.add_argument("--slowest", metavar="BUILD", help="only list the slowest tests of this build folder's last run")
     parser.add_argument("--costs", metavar="BUILD", help="write tests/test_costs.cmake from this build folder")
     parser.add_argument("--count", type=int, default=15)
     parser.add_argument("--keep", action="store_true", help="keep the clone")
@@ -111,6 +118,8 @@ def main():
     for line in summary:
         print(line.strip())
     print_slowest(os.path.join(clone, "build"), args.count)
+    if args.keep:
+        print(f"kept: {clone}")
     if not args.keep:
         shutil.rmtree(work, ignore_errors=True)
 
