@@ -122,7 +122,7 @@ json layer_rows(const json& s) {
          {"depth", number(layer["depth"], 0)},
          {"soil", layer.value("soil", "")},
          {"pressure", number(layer["pressure_MPa"], 2)},
-         {"closure", number(l.value("closure_time_days", json()), 1)},
+         {"closure", number(l.value(keys::closure_time_days, json()), 1)},
          {"thinnest", number(achieved(last), 2)},
          {"mean_temperature", number(T, 1)},
          {"required", number(last.value("required_thickness", json()), 2)},

@@ -2,11 +2,10 @@
 // their results (the report, studies, the error estimate, calibration):
 // its keys, and the shared headline as a typed structure.
 //
-// The keys are the contract of /work/shared/spec/project-format.md
-// (sections 2 and 3) and docs/reference/README.md: fields are added, never
-// renamed or dropped. Every key the code reads or writes is a constant of
-// `keys`; each is documented in docs/reference/ (tests/test_summary.cpp
-// checks it).
+// The keys are the summary.json contract that docs/reference/README.md
+// documents: fields are added, never renamed or dropped. Every key the
+// code reads or writes is a constant of `keys`; each is documented in
+// docs/reference/ (tests/test_summary.cpp checks it).
 //
 // `Summary` types the headline every consumer shares: the project's name
 // and version, closure and contact days, the wall per snapshot, the design
