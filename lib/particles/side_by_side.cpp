@@ -16,7 +16,7 @@ int usable_cores() {
   if (const char* limit = std::getenv("OMP_NUM_THREADS"); limit && *limit) {
     char* end = nullptr;
     const long n = std::strtol(limit, &end, 10);
-    if (end != limit && n > 0) cores = std::min(cores, static_cast<int>(std::min<long>(n, cores)));
+    if (end != limit && n > 0) cores = static_cast<int>(std::min<long>(n, cores));
   }
   return cores;
 }
