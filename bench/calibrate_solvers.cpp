@@ -42,7 +42,7 @@ struct Twin {
     for (const auto& x : points) {
       const fs::path dir = scratch / fmt::format("run{}", runs++);
       tasks.push_back([this, x, dir] {
-        return calibrate::run_forward(calibrate::fit_project(p, x), p.calibration->readings, 20 * 86400.0, dir);
+        return calibrate::run_forward(calibrate::fit_project(p, x), p.calibration->readings, dir);
       });
     }
     std::vector<std::vector<double>> r;

@@ -135,7 +135,7 @@ std::string twin_readings(const json& project, const std::vector<double>& values
   std::ofstream(dir.path / "readings.csv") << "sensor,time,temperature\nneck,1,0\nneck,2,0\nneck,3,0\nneck,4,0\n";
   auto p = project::parse_project(project.dump(), "twin", dir.path.string());
   const auto run =
-      calibrate::run_forward(calibrate::fit_project(p, values), readings, until * 86400.0, dir.path / "run");
+      calibrate::run_forward(calibrate::fit_project(p, values), readings, dir.path / "run");
   std::mt19937 rng(11);
   std::normal_distribution<double> noise(0.0, 0.1);
   std::string csv = "sensor,time,temperature\n";
@@ -189,7 +189,7 @@ TEST_CASE("Calibration twin: readings to day 8, before closure, give a forecast 
   std::ofstream(dir.path / "readings.csv") << twin_readings(project, truth, 8.0);
   const auto p = project::parse_project(project.dump(), "twin", dir.path.string());
   const auto truth_run = calibrate::run_forward(calibrate::with_values(p, p.calibration->parameters, truth), {},
-                                                p.time.end, dir.path / "run");
+                                                dir.path / "run");
   const double true_closure = summary::to_json(truth_run.summary)["closure_time_days"].get<double>();
   CHECK(summary["calibration"]["last_reading_day"].get<double>() < true_closure);
   CHECK(band["low"].get<double>() <= true_closure);

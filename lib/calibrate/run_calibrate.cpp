@@ -169,7 +169,7 @@ FitResult fit_readings(Context& ctx) {
     for (const auto& x : points) {
       const fs::path dir = ctx.scratch / fmt::format("run{}", ctx.run_number++);
       tasks.push_back(
-          [&ctx, &c, x, dir] { return run_forward(fit_project(ctx.p, x), c.readings, ctx.last, dir, &ctx.cloud); });
+          [&ctx, &c, x, dir] { return run_forward(fit_project(ctx.p, x), c.readings, dir, &ctx.cloud); });
     }
     std::vector<std::vector<double>> r;
     for (auto& result : run_batch(tasks, ctx.options)) {
@@ -225,7 +225,7 @@ ForecastRuns run_forecast(Context& ctx, const FitResult& fit, const Intervals& i
     Project moved = fit_project(ctx.p, x);
     moved.time.snapshots = fitted.time.snapshots;
     const fs::path dir = ctx.scratch / fmt::format("band{}", j);
-    tasks.push_back([moved, dir, &ctx] { return run_forward(moved, {}, ctx.p.time.end, dir, &ctx.cloud); });
+    tasks.push_back([moved, dir, &ctx] { return run_forward(moved, {}, dir, &ctx.cloud); });
   }
   ctx.note(fmt::format("calibrate: {} runs for the forecast's band", tasks.size()));
   for (auto& r : run_batch(tasks, ctx.options)) f.band.push_back(std::move(r.summary));

@@ -16,6 +16,7 @@
 #include "freezing/output_frames.hpp"
 #include "freezing/plain_results.hpp"
 #include "freezing/shaft_results.hpp"
+#include "freezing/thermometers.hpp"
 #include "io/atomic_file.hpp"
 #include "io/output_directory.hpp"
 #include "io/paraview_script.hpp"
@@ -83,6 +84,8 @@ class HeatRun {
   std::size_t next_sample_ = 0;
   double t_before_ = 0.0;
   std::vector<double> f_before_, T_before_, f_at_, T_at_;
+  std::optional<Thermometers> thermometers_;  // a shaft section's sensors
+  std::vector<double> sensors_at_;
 };
 
 HeatRun::HeatRun(const Project& p, Model& built, const project::RunOptions& options, RunExtension* extension)
@@ -126,6 +129,7 @@ HeatRun::HeatRun(const Project& p, Model& built, const project::RunOptions& opti
   if (built.shaft) results_ = std::make_unique<ShaftResults>(p, built);
   else plain_ = std::make_unique<PlainResults>(p, built);
   if (extension_ && extension_->solid()) plain_->attach(extension_->solid());
+  if (built.shaft && !p.monitoring.empty()) thermometers_.emplace(p, built);
   heat_before_ = built.model->stored_heat();
   if (built.shaft && built.model->boundaries()[built.shaft->pipe_boundary].film)
     brine_ = std::make_unique<BrineLog>(std::get<project::ShaftSection>(p.geometry).pipe, *built.model,
@@ -136,6 +140,8 @@ thermal::TimeLoopObservers HeatRun::observers() {
   thermal::TimeLoopObservers o;
   o.progress = options_.progress;
   o.after_step = [this](const thermal::ThermalModel& m, double t) { after_step(m, t); };
+  if (extension_) o.finished = [this] { return extension_->finished(); };
+  if (thermometers_) o.step_limit = [this] { return thermometers_->step_limit(); };
   o.snapshot = [this](const thermal::ThermalModel& m, double t, std::size_t) { at_output(m, t); };
   return o;
 }
@@ -154,6 +160,7 @@ void HeatRun::after_step(const thermal::ThermalModel& m, double t) {
   }
   if (closure_) closure_->after_step(m, t, gaps_ ? &*gaps_ : nullptr);
   if (brine_) brine_->after_step(m, t);
+  if (thermometers_) thermometers_->after_step(m, t);
   if (extension_) extension_->after_step(m, t);
   if (results_) sample_series(m, t);
 }
@@ -164,9 +171,11 @@ void HeatRun::sample_series(const thermal::ThermalModel& m, double t) {
   const auto& T = m.temperature();
   for (; next_sample_ < series_.size() && series_[next_sample_] <= t + 1e-12 * p_.time.end; ++next_sample_) {
     const double tau = series_[next_sample_];
+    sensors_at_.resize(thermometers_ ? thermometers_->size() : 0);
+    for (std::size_t k = 0; k < sensors_at_.size(); ++k) sensors_at_[k] = thermometers_->at(k, tau);
     const double w = t > t_before_ ? std::clamp((tau - t_before_) / (t - t_before_), 0.0, 1.0) : 1.0;
     if (w >= 1.0 || f_before_.empty()) {
-      results_->sample(tau, f, T);
+      results_->sample(tau, f, T, sensors_at_);
       continue;
     }
     f_at_.resize(f.size());
@@ -175,7 +184,7 @@ void HeatRun::sample_series(const thermal::ThermalModel& m, double t) {
       f_at_[i] = f_before_[i] + w * (f[i] - f_before_[i]);
       T_at_[i] = T_before_[i] + w * (T[i] - T_before_[i]);
     }
-    results_->sample(tau, f_at_, T_at_);
+    results_->sample(tau, f_at_, T_at_, sensors_at_);
   }
   f_before_.assign(f.begin(), f.end());
   T_before_.assign(T.begin(), T.end());

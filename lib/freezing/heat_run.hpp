@@ -44,6 +44,8 @@ class RunExtension {
   virtual void summarise(nlohmann::ordered_json& /*summary*/, const std::filesystem::path& /*out*/) const {}
   virtual void run_facts(nlohmann::ordered_json& /*run*/) const {}
   virtual const SolidView* solid() const { return nullptr; }
+  // Asked after every step: true ends the run there.
+  virtual bool finished() const { return false; }
 };
 
 // Runs the model to the project's end time and writes everything into

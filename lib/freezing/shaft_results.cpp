@@ -16,7 +16,6 @@
 #include "freezing/design_check.hpp"
 #include "sph/laplacian.hpp"
 #include "freezing/output_frames.hpp"
-#include "freezing/sensor_points.hpp"
 #include "particles/symmetry_group.hpp"
 #include "design/wall_strength.hpp"
 #include "summary/summary.hpp"
@@ -74,8 +73,6 @@ ShaftResults::ShaftResults(const project::Project& p, const Model& m)
   profile_OA_ = std::make_unique<post::PointProbe>(sampler_, on_OA, true);
   profile_OB_ = std::make_unique<post::PointProbe>(sampler_, on_OB, true);
 
-  // Sensors anywhere in the section: mapped into the wedge by its symmetry.
-  sensors_ = std::make_unique<post::PointProbe>(sampler_, sensor_points(p, m));
   sensor_readings_.resize(p.monitoring.size());
 
   // Front curves: wedge particles with their images; the full ring as copies.
@@ -129,11 +126,11 @@ ShaftResults::Reading ShaftResults::read(double t, const std::vector<double>& li
   return r;
 }
 
-void ShaftResults::sample(double t, const std::vector<double>& liquid_fraction,
-                          const std::vector<double>& temperature) {
+void ShaftResults::sample(double t, const std::vector<double>& liquid_fraction, const std::vector<double>& temperature,
+                          const std::vector<double>& sensors) {
   series_.push_back(read(t, liquid_fraction, temperature));
-  const auto T = (*sensors_)(temperature);
-  for (std::size_t s = 0; s < T.size(); ++s) sensor_readings_[s].emplace_back(t / project::seconds_per_day, T[s]);
+  for (std::size_t s = 0; s < sensors.size(); ++s)
+    sensor_readings_[s].emplace_back(t / project::seconds_per_day, sensors[s]);
 }
 
 void ShaftResults::snapshot(double t, const thermal::ThermalModel& model, const std::filesystem::path& out,

@@ -32,8 +32,10 @@ class ShaftResults {
   ~ShaftResults();
 
   // Every output interval: the liquid fraction and temperature of every
-  // particle at t (the model's state, or one interpolated between steps).
-  void sample(double t, const std::vector<double>& liquid_fraction, const std::vector<double>& temperature);
+  // particle at t (the model's state, or one interpolated between steps),
+  // and the sensors' readings then (freezing/thermometers.hpp).
+  void sample(double t, const std::vector<double>& liquid_fraction, const std::vector<double>& temperature,
+              const std::vector<double>& sensors);
   void snapshot(double t, const thermal::ThermalModel& model, const std::filesystem::path& out,
                 const std::string& stem);  // at each snapshot day
   // Summary entries (wall, design, monitoring, interface) and the CSV files.
@@ -69,7 +71,7 @@ class ShaftResults {
   InterfacePlanes planes_;
   post::FieldSampler sampler_;
   std::unique_ptr<post::WallGauge> fan_gauge_, planes_gauge_;
-  std::unique_ptr<post::PointProbe> profile_OA_, profile_OB_, sensors_;
+  std::unique_ptr<post::PointProbe> profile_OA_, profile_OB_;
   std::vector<double> profile_radii_;
   // Profile points inside a pipe disc (OA passes through its pipe): they
   // read the pipe's temperature, not the layers held beyond its wall.

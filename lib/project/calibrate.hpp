@@ -45,11 +45,10 @@ struct Calibration {
   std::optional<double> noise;
   // The day the forecast's wall is read at, s; nullopt: the run's end.
   std::optional<double> design_time;
-  // numerics.step_change of the fit's runs (at most the project's): a
-  // finer control of the step makes the misfit a smooth function of the
-  // parameters (at 0.25 the step sequence jumps with them, and a sensor
-  // near 0 degC with it by a few hundredths of a kelvin).
-  double step_change = 0.1;
+  // numerics.step_change of the fit's runs (at most the project's); by
+  // default the project's own, so that a forward run is the run `frostwall
+  // run` makes, step for step.
+  double step_change = 0.0;
 };
 
 }  // namespace frostwall::project

@@ -136,8 +136,8 @@ void read_rows(std::istream& in, const Project& project, std::vector<Reading>& r
 std::optional<Calibration> read_calibration(const Node& n, const Project& project, const std::string& base_directory) {
   if (!n.present() || !n.object({"readings", "parameters", "noise", "design_day", "step_change"})) return std::nullopt;
   Calibration c;
-  if (n["step_change"].present()) c.step_change = n["step_change"].positive().value_or(c.step_change);
-  c.step_change = std::min(c.step_change, project.numerics.step_change);
+  c.step_change =
+      std::min(n["step_change"].positive().value_or(project.numerics.step_change), project.numerics.step_change);
   c.parameters = read_parameters(n["parameters"], project);
   if (n["noise"].present()) c.noise = n["noise"].positive();
   if (const auto day = n["design_day"].present() ? n["design_day"].positive() : std::nullopt) {

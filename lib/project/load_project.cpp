@@ -129,7 +129,7 @@ Numerics read_numerics(const Node& n, bool shaft) {
   };
   if (!n.object({"spacing", "kernel", "smoothing_ratio", "integrator", "beta", "step_change", "conductivity_mean",
                  "laplacian", "symmetry", "placement", "coarsening", "growth", "band_coarsening", "band_width",
-                 "max_particles", "method", "horizon", "error_estimate"})) {
+                 "max_particles", "method", "horizon", "error_estimate", "sensor_tolerance"})) {
     default_step_change();
     return numerics;
   }
@@ -149,6 +149,7 @@ Numerics read_numerics(const Node& n, bool shaft) {
   numerics.beta = n["beta"].positive().value_or(numerics.beta);
   numerics.step_change = n["step_change"].positive().value_or(numerics.step_change);
   default_step_change();
+  numerics.sensor_tolerance = n["sensor_tolerance"].positive().value_or(numerics.sensor_tolerance);
   numerics.conductivity_mean =
       n["conductivity_mean"]
           .choice<ConductivityMean>("conductivity mean", {{"harmonic", ConductivityMean::harmonic},

@@ -38,6 +38,10 @@ struct Numerics {
   // step, as a fraction of the latent heat (the step adapts to hold it).
   // Default 1 for RKL2, 0.25 for implicit (load_project).
   double step_change = 0.25;
+  // Shaft sections with sensors: the largest error, K, of a sensor's
+  // reading interpolated linearly in time between two steps; the step is
+  // held to keep it (freezing/thermometers.hpp).
+  double sensor_tolerance = 0.0002;
   ConductivityMean conductivity_mean = ConductivityMean::harmonic;
   LaplacianForm laplacian = LaplacianForm::renormalised;
   Method method = Method::sph;

@@ -15,6 +15,7 @@ TimeLoopResult run_time_loop(ThermalModel& model, Integrator& integrator, double
   while (t < t_end) {
     const double target = next < snapshots.size() ? std::min(snapshots[next], t_end) : t_end;
     double dt = integrator.preferred_step(model);
+    if (observers.step_limit) dt = std::min(dt, observers.step_limit());
     // Land on the target; avoid a sliver step just before it.
     if (t + 1.5 * dt >= target) dt = (t + dt >= target) ? target - t : 0.5 * (target - t);
     const auto heat = integrator.advance(model, t, dt);

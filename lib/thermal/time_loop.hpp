@@ -15,6 +15,7 @@ struct TimeLoopObservers {
   std::function<void(const ThermalModel&, double t)> after_step;               // optional
   std::function<void(const ThermalModel&, double t, std::size_t k)> snapshot;  // optional
   std::function<void(double t, double t_end)> progress;                        // optional
+  std::function<double()> step_limit;                                          // optional: the longest next step
   std::function<bool()> finished;  // optional: ends the run early when it returns true
 };
 
