@@ -8,10 +8,10 @@ calibrate` should then recover is known.
       --factors conductivity=1.15 latent_heat=0.9 --noise 0.1 --every 0.5 \
       --until 20 --stop inside=14 --seed 1 -o readings.csv
 
-The twin runs as the calibration's forward runs do: to --until (they end at
-the last reading) at the calibration's step control (--step-change, the
-default of calibrate.step_change). monitoring.csv samples the sensors 200
-times over that, so --every must be a multiple of --until / 200.
+The twin is `frostwall run` of the project with the twin's soil, to
+--until; monitoring.csv samples the sensors 200 times over that, so
+--every must be a multiple of --until / 200. --step-change sets the twin's
+numerics.step_change (default: the project's).
 """
 import argparse
 import csv
@@ -39,7 +39,7 @@ def main():
     a.add_argument("--until", type=float, required=True, help="last reading time")
     a.add_argument("--stop", nargs="*", default=[], help="sensor=time: that sensor's last reading")
     a.add_argument("--seed", type=int, default=1)
-    a.add_argument("--step-change", type=float, default=0.1, help="numerics.step_change of the twin")
+    a.add_argument("--step-change", type=float, help="numerics.step_change of the twin")
     a.add_argument("--frostwall", default=os.path.join(os.path.dirname(__file__), "..", "build", "app", "frostwall"))
     a.add_argument("-o", "--output", required=True)
     args = a.parse_args()
@@ -60,7 +60,8 @@ def main():
             p["domain"]["initial_temperature"] = value
     p["soil"] = soil
     p.pop("calibrate", None)
-    p.setdefault("numerics", {})["step_change"] = args.step_change
+    if args.step_change:
+        p.setdefault("numerics", {})["step_change"] = args.step_change
     p["time"] = dict(end=args.until, unit=p["time"].get("unit", "d"), snapshots=[args.until])
     with tempfile.TemporaryDirectory() as tmp:
         p["output"] = dict(directory=os.path.join(tmp, "out"), vtk=False, full_ring=False, report=False)

@@ -18,6 +18,8 @@
 #include "calibrate/intervals.hpp"
 #include "calibrate/parameters.hpp"
 #include "calibrate/run_calibrate.hpp"
+#include "run/run_project.hpp"
+#include "summary/summary.hpp"
 #include "project/project.hpp"
 #include "cli.hpp"
 #include "report/mustache_view.hpp"
@@ -94,6 +96,40 @@ TEST_CASE("Calibration fit: a linear model's least squares and covariance in clo
   CHECK(iv.t == Approx(2.0025).margin(0.003));  // Student's t(57) at 97.5 %
 }
 
+TEST_CASE("Calibration intervals checked by the misfit: kept where it rises as the Jacobian says, stretched where "
+          "it rises less, to where it reaches t^2 s^2",
+          "[calibrate]") {
+  // Two correlated parameters, 60 readings; residuals of the noise's size.
+  const std::vector<calibrate::ParameterSpan> spans{{"a", 1.0, -50.0, 50.0}, {"b", 2.0, -50.0, 50.0}};
+  Eigen::MatrixXd J(60, 2);
+  std::vector<double> residuals(60);
+  for (int i = 0; i < 60; ++i) {
+    J(i, 0) = 1.0 + 0.1 * i;
+    J(i, 1) = 0.9 + 0.1 * i + 0.3 * std::sin(i);
+    residuals[i] = 0.1 * ((i % 2) ? 1.0 : -1.0);
+  }
+  const calibrate::Intervals linear = calibrate::intervals(spans, J, residuals, 0.1);
+  const Eigen::Vector2d x0(1.0, 2.0);
+  const double ssr0 = 0.6;
+  for (const double flatter : {1.0, 4.0, 64.0}) {
+    // The misfit rising `flatter` times more slowly than J^T J says.
+    auto ssr_at = [&](const std::vector<std::vector<double>>& points) {
+      std::vector<double> out;
+      for (const auto& p : points) {
+        const Eigen::Vector2d d = Eigen::Vector2d(p[0], p[1]) - x0;
+        out.push_back(ssr0 + (J * d).squaredNorm() / flatter);
+      }
+      return out;
+    };
+    int runs = 0;
+    const auto checked = calibrate::checked_by_misfit(spans, linear, ssr0, ssr_at, &runs);
+    INFO("flatter " << flatter << ", runs " << runs);
+    for (int j = 0; j < 2; ++j) CHECK(checked.sigma[j] == Approx(linear.sigma[j] * std::sqrt(flatter)).epsilon(1e-3));
+    CHECK(checked.correlation(0, 1) == Approx(linear.correlation(0, 1)).epsilon(1e-6));
+    CHECK(runs == (flatter == 1.0 ? 4 : flatter == 4.0 ? 8 : 12));
+  }
+}
+
 // ---- twin experiments on a scaled ring ---------------------------------------
 //
 // tests/data/calibrate_twin_ring.json: 8 pipes on a 1.55 m ring, the single
@@ -115,33 +151,47 @@ json twin_ring(const json& parameters) {
 
 const json three_factors = {
     {"conductivity_frozen", {0.5, 2.0}}, {"conductivity_unfrozen", {0.5, 2.0}}, {"latent_heat", {0.5, 2.0}}};
-const std::vector<double> truth{1.15, 1.15, 0.9};  // conductivity_frozen, _unfrozen, latent_heat
+// conductivity_frozen, _unfrozen, latent_heat of the twin ground
+const std::vector<double> truth{0.88, 1.10, 1.08};
 
-// Readings every 0.5 d to `until` made by the fit's own forward model at
-// `values`, with 0.1 K of Gaussian noise of a fixed seed; `stop`: a sensor's
-// last day.
+// The project as `frostwall run` runs it with the twin ground: sand's
+// values times `values` (the three factors above); its summary.
+json run_twin(const json& project, const std::vector<double>& values, const fs::path& out) {
+  json twin = project;
+  twin.erase("calibrate");
+  const auto sand = *project::builtin_soil("sand");
+  twin["soil"] = {
+      {"name", "twin"},
+      {"density", sand.density},
+      {"unfrozen",
+       {{"conductivity", sand.unfrozen.conductivity[0] * values[1]}, {"heat_capacity", sand.unfrozen.heat_capacity}}},
+      {"frozen",
+       {{"conductivity", sand.frozen.conductivity[0] * values[0]}, {"heat_capacity", sand.frozen.heat_capacity}}},
+      {"latent_heat", sand.latent_heat * values[2]},
+      {"freezing_point", sand.freezing_point}};
+  auto p = project::parse_project(twin.dump(), "twin", out.string());
+  p.output.directory = (out / "out").string();
+  return json::parse(summary::to_json(run::run_project(p, {})).dump());
+}
+
+// The readings of a twin: `frostwall run`'s monitoring of the twin ground
+// (every sample, 200 over the run) to `until`, with 0.1 K of Gaussian noise
+// of a fixed seed; `stop`: a sensor's last day.
 std::string twin_readings(const json& project, const std::vector<double>& values, double until,
                           std::map<std::string, double> stop = {}) {
-  // A placeholder file lets the loader read the project; the readings it
-  // asks for are only times and sensors.
-  std::vector<project::Reading> readings;
-  std::vector<std::string> names;
-  for (const auto& s : project["monitoring"]) names.push_back(s["name"]);
-  for (std::size_t s = 0; s < names.size(); ++s)
-    for (int k = 1; k * 0.5 <= until + 1e-9; ++k)
-      if (k * 0.5 <= (stop.count(names[s]) ? stop[names[s]] : until) + 1e-9)
-        readings.push_back({0, s, k * 0.5 * 86400.0, 0.0});
   test::TempDir dir("frostwall-twin");
-  std::ofstream(dir.path / "readings.csv") << "sensor,time,temperature\nneck,1,0\nneck,2,0\nneck,3,0\nneck,4,0\n";
-  auto p = project::parse_project(project.dump(), "twin", dir.path.string());
-  const auto run =
-      calibrate::run_forward(calibrate::fit_project(p, values), readings, dir.path / "run");
+  const json summary = run_twin(project, values, dir.path);
   std::mt19937 rng(11);
   std::normal_distribution<double> noise(0.0, 0.1);
   std::string csv = "sensor,time,temperature\n";
-  for (std::size_t k = 0; k < readings.size(); ++k)
-    csv += fmt::format("{},{:g},{:.4f}\n", names[readings[k].sensor], readings[k].time / 86400.0,
-                       run.temperatures[k] + noise(rng));
+  for (const auto& sensor : project["monitoring"]) {
+    const std::string name = sensor["name"];
+    for (const auto& row : summary["monitoring"][name]) {
+      const double day = row[0].get<double>();
+      if (day <= (stop.count(name) ? stop[name] : until) + 1e-9)
+        csv += fmt::format("{},{:.9g},{:.4f}\n", name, day, row[1].get<double>() + noise(rng));
+    }
+  }
   return csv;
 }
 
@@ -159,7 +209,8 @@ json calibrate_in(const json& project, const std::string& readings) {
 
 }  // namespace
 
-TEST_CASE("Calibration twin: conductivities x1.15 and latent heat x0.9 recovered from three sensors to day 20",
+TEST_CASE("Calibration twin: readings of `frostwall run` with frozen conductivity x0.88, unfrozen x1.10 and latent "
+          "heat x1.08 recovered from three sensors to day 20",
           "[calibrate]") {
   const json project = twin_ring(three_factors);
   const json c = calibrate_in(project, twin_readings(project, truth, 20.0))["calibration"];
@@ -183,14 +234,9 @@ TEST_CASE("Calibration twin: readings to day 8, before closure, give a forecast 
   const json summary = calibrate_in(project, twin_readings(project, truth, 8.0));
   const json& band = summary["calibration"]["forecast"]["closure_day"];
   INFO(summary["calibration"].dump(1));
-  // The truth, run as the forecast runs the calibrated project (the
-  // project's own step control).
+  // The truth: the twin as `frostwall run` runs it.
   test::TempDir dir("frostwall-truth");
-  std::ofstream(dir.path / "readings.csv") << twin_readings(project, truth, 8.0);
-  const auto p = project::parse_project(project.dump(), "twin", dir.path.string());
-  const auto truth_run = calibrate::run_forward(calibrate::with_values(p, p.calibration->parameters, truth), {},
-                                                dir.path / "run");
-  const double true_closure = summary::to_json(truth_run.summary)["closure_time_days"].get<double>();
+  const double true_closure = run_twin(project, truth, dir.path)["closure_time_days"].get<double>();
   CHECK(summary["calibration"]["last_reading_day"].get<double>() < true_closure);
   CHECK(band["low"].get<double>() <= true_closure);
   CHECK(band["high"].get<double>() >= true_closure);
@@ -231,8 +277,8 @@ TEST_CASE("Calibration twin: a sensor that stops halfway still lets the fit conv
   const json& c = summary["calibration"];
   INFO(c.dump(1));
   CHECK(c["converged"].get<bool>());
-  CHECK(c["reading_count"].get<int>() == 40 + 40 + 20);
-  CHECK(c["parameters"]["latent_heat"]["value"].get<double>() == Approx(0.9).epsilon(0.03));
+  CHECK(c["reading_count"].get<int>() == 100 + 100 + 50);
+  CHECK(c["parameters"]["latent_heat"]["value"].get<double>() == Approx(truth[2]).epsilon(0.03));
   CHECK(c["rms_misfit_after"].get<double>() < 0.12);
   // The calibrated project file runs as calibrated: the sand's values times the fitted factors.
   const auto calibrated = project::load_project((out / "calibrated.json").string());

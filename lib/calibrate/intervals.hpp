@@ -15,6 +15,7 @@
 #pragma once
 
 #include <Eigen/Dense>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -37,13 +38,28 @@ struct Intervals {
   std::vector<std::string> warnings;
 };
 
-// |correlation| above this: the two cannot be told apart by these readings.
-inline constexpr double correlation_limit = 0.95;
+// |correlation| above this: the two are hard to tell apart by these readings.
+inline constexpr double correlation_limit = 0.9;
 
 // J: d(model - reading) / d parameter (unweighted, K per unit), residuals
 // at the optimum; noise: the thermometers' standard uncertainty, if known.
 Intervals intervals(const std::vector<ParameterSpan>& parameters, const Eigen::MatrixXd& J,
                     const std::vector<double>& residuals, std::optional<double> noise);
+
+// The intervals checked against the misfit itself, for what the Jacobian
+// cannot see: the misfit's ripple (a sensor's reading moves in small steps
+// as the particles round it freeze), and a valley flatter or more curved
+// than its tangent. Along each principal axis of the covariance, both
+// ways, the misfit should have risen by t^2 s^2 at t standard errors out;
+// where it rose less, the axis is looked at again 2t and 4t out (each
+// round one batch through ssr_at, which returns the sum of squared
+// residuals at each point), and its standard error is stretched so that a
+// misfit rising quadratically through the point looked at reaches t^2 s^2
+// at the interval's end. Intervals only widen. `runs` counts the points.
+inline constexpr int misfit_rounds = 3;
+Intervals checked_by_misfit(const std::vector<ParameterSpan>& parameters, const Intervals& linear, double ssr_at_fit,
+                            const std::function<std::vector<double>(const std::vector<std::vector<double>>&)>& ssr_at,
+                            int* runs = nullptr);
 
 // Student's t at 97.5 % for `dof` degrees of freedom (1.96 beyond 30).
 double student_t975(int dof);

@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <fmt/format.h>
+#include <numeric>
 
 #include "calibrate/fit.hpp"
 #include "calibrate/forecast.hpp"
@@ -153,6 +154,24 @@ struct Context {
   double seconds() const { return std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count(); }
 };
 
+// The residuals (simulated - measured) at several points, their runs side
+// by side.
+std::vector<std::vector<double>> residuals_at(Context& ctx, const std::vector<std::vector<double>>& points) {
+  const auto& c = *ctx.p.calibration;
+  std::vector<std::function<ForwardResult()>> tasks;
+  for (const auto& x : points) {
+    const fs::path dir = ctx.scratch / fmt::format("run{}", ctx.run_number++);
+    tasks.push_back([&ctx, &c, x, dir] { return run_forward(fit_project(ctx.p, x), c.readings, dir, &ctx.cloud); });
+  }
+  std::vector<std::vector<double>> r;
+  for (auto& result : run_batch(tasks, ctx.options)) {
+    for (std::size_t k = 0; k < result.temperatures.size(); ++k) result.temperatures[k] -= ctx.measured[k];
+    r.push_back(std::move(result.temperatures));
+  }
+  fs::remove_all(ctx.scratch);
+  return r;
+}
+
 // The least-squares fit of the readings, each batch of runs side by side.
 FitResult fit_readings(Context& ctx) {
   const auto& c = *ctx.p.calibration;
@@ -164,28 +183,32 @@ FitResult fit_readings(Context& ctx) {
     problem.step.push_back(0.05 * (q.high - q.low));
   }
   problem.residual_count = c.readings.size();
-  problem.residuals = [&](const std::vector<std::vector<double>>& points) {
-    std::vector<std::function<ForwardResult()>> tasks;
-    for (const auto& x : points) {
-      const fs::path dir = ctx.scratch / fmt::format("run{}", ctx.run_number++);
-      tasks.push_back(
-          [&ctx, &c, x, dir] { return run_forward(fit_project(ctx.p, x), c.readings, dir, &ctx.cloud); });
-    }
-    std::vector<std::vector<double>> r;
-    for (auto& result : run_batch(tasks, ctx.options)) {
-      for (std::size_t k = 0; k < result.temperatures.size(); ++k) result.temperatures[k] -= ctx.measured[k];
-      r.push_back(std::move(result.temperatures));
-    }
-    return r;
-  };
+  problem.residuals = [&ctx](const std::vector<std::vector<double>>& points) { return residuals_at(ctx, points); };
   problem.note = ctx.options.note;
   const auto [jobs, threads] = share_cores(ctx.options, c.parameters.size());
   ctx.note(fmt::format("calibrate: {} readings to day {:g}, {} parameters; forward runs {} at a time on {} thread{}",
                        c.readings.size(), ctx.last / project::seconds_per_day, c.parameters.size(), jobs, threads,
                        threads > 1 ? "s" : ""));
-  FitResult fit = least_squares(problem);
-  fs::remove_all(ctx.scratch);
-  return fit;
+  return least_squares(problem);
+}
+
+// The intervals from the Jacobian at the optimum, then checked against the
+// misfit along their axes.
+Intervals fit_intervals(Context& ctx, const FitResult& fit, int& runs) {
+  const auto& c = *ctx.p.calibration;
+  std::vector<ParameterSpan> spans;
+  for (std::size_t j = 0; j < c.parameters.size(); ++j)
+    spans.push_back(
+        {project::parameter_name(c.parameters[j].which), fit.values[j], c.parameters[j].low, c.parameters[j].high});
+  const Intervals linear = intervals(spans, fit.jacobian, fit.residuals, c.noise);
+  auto ssr_at = [&ctx](const std::vector<std::vector<double>>& points) {
+    std::vector<double> out;
+    for (const auto& r : residuals_at(ctx, points))
+      out.push_back(std::inner_product(r.begin(), r.end(), r.begin(), 0.0));
+    return out;
+  };
+  const double ssr = std::inner_product(fit.residuals.begin(), fit.residuals.end(), fit.residuals.begin(), 0.0);
+  return checked_by_misfit(spans, linear, ssr, ssr_at, &runs);
 }
 
 struct ForecastRuns {
@@ -272,16 +295,15 @@ nlohmann::ordered_json calibration_json(const Context& ctx, const FitResult& fit
 nlohmann::ordered_json run_calibration(const Project& p, const CalibrateOptions& options) {
   check_calibration(p);
   Context ctx(p, options);
-  const auto& c = *p.calibration;
-  const FitResult fit = fit_readings(ctx);
-  std::vector<ParameterSpan> spans;
-  for (std::size_t j = 0; j < c.parameters.size(); ++j)
-    spans.push_back(
-        {project::parameter_name(c.parameters[j].which), fit.values[j], c.parameters[j].low, c.parameters[j].high});
-  const Intervals iv = intervals(spans, fit.jacobian, fit.residuals, c.noise);
-  const double fit_seconds = ctx.seconds();
+  FitResult fit = fit_readings(ctx);
   ctx.note(fmt::format("calibrate: rms misfit {:.3g} K before, {:.3g} K after ({} iterations, {} runs, {:.1f} s)",
-                       rms(fit.start_residuals), rms(fit.residuals), fit.iterations, fit.forward_runs, fit_seconds));
+                       rms(fit.start_residuals), rms(fit.residuals), fit.iterations, fit.forward_runs, ctx.seconds()));
+  int check_runs = 0;
+  const Intervals iv = fit_intervals(ctx, fit, check_runs);
+  fit.forward_runs += check_runs;
+  const double fit_seconds = ctx.seconds();
+  ctx.note(fmt::format("calibrate: the intervals checked against the misfit along their axes ({} runs, {:.1f} s)",
+                       check_runs, fit_seconds));
   for (const auto& w : iv.warnings) ctx.note("warning: " + w);
 
   const ForecastRuns runs = run_forecast(ctx, fit, iv);
