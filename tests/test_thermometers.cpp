@@ -90,8 +90,9 @@ TEST_CASE("Thermometers: a run's monitoring and calibration's forward run read t
 // A reading taken while a particle next to the sensor ends freezing (its
 // temperature then falls on the time scale h^2 / alpha, 0.02 d at 4 cm)
 // moves most with the step; the others lie far within the tolerance.
-TEST_CASE("Thermometers: the readings converge as the sensor tolerance shrinks; at the default, 98 % within 0.01 K",
-          "[thermometers]") {
+TEST_CASE(
+    "Thermometers: the readings converge as the sensor tolerance shrinks, and at the default 98 % lie within 0.01 K",
+    "[thermometers]") {
   json p = twin_ring();
   test::TempDir dir("frostwall-thermometers-tolerance");
   auto readings = [&](double tolerance, const std::string& name) {
