@@ -37,10 +37,11 @@ std::optional<double> first_crossing(const std::vector<double>& values, double s
 }
 
 PlainResults::PlainResults(const project::Project& p, const Model& m)
-    : project_(p), model_(m), unit_(p.time.unit_seconds()), sampler_(m.particles(), *m.kernel, m.smoothing) {
-  std::vector<Vec2> where;
-  for (const auto& s : p.monitoring) where.emplace_back(s.x, s.y);
-  sensors_ = std::make_unique<post::PointProbe>(sampler_, where);
+    : project_(p),
+      model_(m),
+      unit_(p.time.unit_seconds()),
+      sampler_(m.particles(), *m.kernel, m.smoothing),
+      sensors_(std::make_unique<Thermometers>(p, m)) {
   const double step = 0.5 * m.particles().spacing;
   for (const auto& line : p.output.front_along) {
     // (snapshot() reads the step back from the points: the segment is split into whole steps.)
@@ -68,7 +69,7 @@ void PlainResults::attach(const SolidView* solid) {
 void PlainResults::sample(double t, const thermal::ThermalModel& model) {
   if (project_.monitoring.empty()) return;
   times_.push_back(t / unit_);
-  readings_.push_back((*sensors_)(model.temperature()));
+  readings_.push_back(sensors_->read(model.temperature()));
   if (!mechanics_) return;
   const auto& u = mechanics_->displacement();
   const auto damage = mechanics_->damage();

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "freezing/thermometers.hpp"
 #include "post/field_sampler.hpp"
 #include "post/isoline.hpp"
 #include "post/linear_probe.hpp"
@@ -42,7 +43,7 @@ class PlainResults {
   const Model& model_;
   double unit_;  // seconds per unit of the project's time
   post::FieldSampler sampler_;
-  std::unique_ptr<post::PointProbe> sensors_;
+  std::unique_ptr<Thermometers> sensors_;  // read at the output times, on which the steps land
   const SolidView* mechanics_ = nullptr;
   std::unique_ptr<post::LinearProbe> solid_sensors_;
   std::vector<std::unique_ptr<post::PointProbe>> lines_;            // samples along each front line

@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <array>
 #include <limits>
+#include <optional>
+#include <variant>
 
 #include "freezing/output_frames.hpp"
 #include "particles/mirror_images.hpp"
@@ -19,11 +22,14 @@ post::TriangleProbe shown_probe(const project::Project& p, const Model& m) {
   const auto& P = m.particles();
   std::vector<particles::Vec<2>> points;
   std::vector<std::uint32_t> source;
+  std::optional<std::array<double, 2>> plate;
+  if (const auto* rect = std::get_if<project::Rectangle>(&p.geometry)) plate = std::array{rect->width, rect->height};
   std::vector<char> shown(P.size(), 0);
   for (std::uint32_t i = 0; i < P.size(); ++i)
-    if ((shown[i] = shown_in_files(P, i, std::nullopt))) points.push_back(P.position[i]), source.push_back(i);
+    if ((shown[i] = shown_in_files(P, i, plate))) points.push_back(P.position[i]), source.push_back(i);
   if (!P.mirrors.empty()) {
-    const auto images = particles::mirror_images(P, 3.0 * P.coarsest_spacing(), post::image_reach(P));
+    const auto images = m.shaft ? particles::mirror_images(P, 3.0 * P.coarsest_spacing(), post::image_reach(P))
+                                : particles::mirror_images(P, 3.0 * P.coarsest_spacing());
     for (std::size_t k = 0; k < images.source.size(); ++k)
       if (shown[images.source[k]]) points.push_back(images.position[k]), source.push_back(images.source[k]);
   }
