@@ -211,7 +211,7 @@ json calibrate_in(const json& project, const std::string& readings) {
 }  // namespace
 
 TEST_CASE("Calibration twin: readings of `frostwall run` with frozen conductivity x0.88, unfrozen x1.10 and latent "
-          "heat x1.08 recovered from three sensors to day 20",
+          "heat x1.08 recovered from three sensors to day 20, the band holding its closure",
           "[calibrate]") {
   const json project = twin_ring(three_factors);
   const json c = calibrate_in(project, twin_readings(project, truth, 20.0))["calibration"];
@@ -227,6 +227,11 @@ TEST_CASE("Calibration twin: readings of `frostwall run` with frozen conductivit
   // The misfit after the fit is the noise's (0.1 K), not the start's.
   CHECK(c["rms_misfit_after"].get<double>() < 0.12);
   CHECK(c["rms_misfit_before"].get<double>() > 3 * c["rms_misfit_after"].get<double>());
+  // The forecast's band holds the twin's own closure.
+  test::TempDir dir("frostwall-truth");
+  const double true_closure = run_twin(project, truth, dir.path)["closure_time_days"].get<double>();
+  CHECK(c["forecast"]["closure_day"]["low"].get<double>() <= true_closure);
+  CHECK(c["forecast"]["closure_day"]["high"].get<double>() >= true_closure);
 }
 
 TEST_CASE("Calibration twin: readings to day 8, before closure, give a forecast band that covers the true closure",
