@@ -6,7 +6,6 @@
 
 #include "freezing/heat_run.hpp"
 #include "particles/side_by_side.hpp"
-#include "freezing/thermometers.hpp"
 
 namespace frostwall::calibrate {
 
@@ -15,23 +14,22 @@ using project::Reading;
 
 namespace {
 
-// Reads the sensors at the readings' times during a heat run, through the
-// run's own sensor model (freezing::Thermometers, linear in time between
-// the two steps around each reading), and ends the run after the last.
+// Reads the run's sensors (freezing::Thermometers, linear in time between
+// the two steps around each reading) at the readings' times, and ends the
+// run after the last.
 class SensorRecorder : public freezing::RunExtension {
  public:
-  SensorRecorder(const project::Project& p, const freezing::Model& m, const std::vector<Reading>& readings)
-      : thermometers_(p, m), readings_(readings), order_(readings.size()), values_(readings.size(), nan) {
+  explicit SensorRecorder(const std::vector<Reading>& readings)
+      : readings_(readings), order_(readings.size()), values_(readings.size(), nan) {
     std::iota(order_.begin(), order_.end(), std::size_t{0});
     std::stable_sort(order_.begin(), order_.end(),
                      [&](std::size_t a, std::size_t b) { return readings[a].time < readings[b].time; });
   }
 
-  void after_step(const thermal::ThermalModel& m, double t) override {
-    thermometers_.after_step(m, t);
+  void read_sensors(const freezing::Thermometers& thermometers, double t) override {
     for (; next_ < order_.size() && readings_[order_[next_]].time <= t * (1 + 1e-12); ++next_) {
       const Reading& r = readings_[order_[next_]];
-      values_[order_[next_]] = thermometers_.at(r.sensor, r.time);
+      values_[order_[next_]] = thermometers.at(r.sensor, r.time);
     }
   }
   bool finished() const override { return !order_.empty() && next_ == order_.size(); }
@@ -40,7 +38,6 @@ class SensorRecorder : public freezing::RunExtension {
 
  private:
   static constexpr double nan = std::numeric_limits<double>::quiet_NaN();
-  freezing::Thermometers thermometers_;
   const std::vector<Reading>& readings_;
   std::vector<std::size_t> order_;  // readings by time
   std::size_t next_ = 0;
@@ -56,7 +53,7 @@ ForwardResult run_forward(project::Project p, const std::vector<Reading>& readin
   p.output.report = false;
   p.numerics.error_estimate = false;
   freezing::Model built = cloud ? freezing::build_model(p, freezing::copy_cloud(*cloud, p)) : freezing::build_model(p);
-  SensorRecorder recorder(p, built, readings);
+  SensorRecorder recorder(readings);
   ForwardResult result;
   result.summary = freezing::run_heat(p, built, {}, &recorder);
   result.temperatures = recorder.values();

@@ -140,8 +140,7 @@ Intervals checked_by_misfit(const std::vector<ParameterSpan>& parameters, const 
     stretched(k) *= g * g;
   }
   const Eigen::MatrixXd C = axes.eigenvectors() * stretched.asDiagonal() * axes.eigenvectors().transpose();
-  Intervals out = from_covariance(parameters, C, linear.noise, t);
-  return out;
+  return from_covariance(parameters, C, linear.noise, t);
 }
 
 }  // namespace frostwall::calibrate

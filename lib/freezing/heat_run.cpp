@@ -162,6 +162,7 @@ void HeatRun::after_step(const thermal::ThermalModel& m, double t) {
   if (brine_) brine_->after_step(m, t);
   if (thermometers_) thermometers_->after_step(m, t);
   if (extension_) extension_->after_step(m, t);
+  if (extension_ && thermometers_) extension_->read_sensors(*thermometers_, t);
   if (results_) sample_series(m, t);
 }
 

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "freezing/model.hpp"
+#include "freezing/thermometers.hpp"
 #include "io/point_cloud_vtk.hpp"
 #include "project/project.hpp"
 #include "project/run_options.hpp"
@@ -38,6 +39,9 @@ class RunExtension {
  public:
   virtual ~RunExtension() = default;
   virtual void after_step(const thermal::ThermalModel&, double /*t*/) {}
+  // After each step (and at t = 0), with the run's sensors updated: a shaft
+  // section with `monitoring` only.
+  virtual void read_sensors(const Thermometers&, double /*t*/) {}
   virtual void at_output(const thermal::ThermalModel&, double /*t*/, bool /*is_snapshot*/,
                          const std::filesystem::path& /*out*/, const std::string& /*stem*/) {}
   virtual void add_fields(io::PointCloudFrame&, const thermal::ThermalModel&) const {}

@@ -1,8 +1,8 @@
 #include "freezing/thermometers.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <array>
+#include <cmath>
 #include <limits>
 #include <optional>
 #include <variant>
@@ -19,6 +19,7 @@ namespace {
 // The particles the snapshot files show, and their mirror images, each
 // with the particle whose value it carries.
 post::TriangleProbe shown_probe(const project::Project& p, const Model& m) {
+  if (p.monitoring.empty()) return post::TriangleProbe({}, {}, {});
   const auto& P = m.particles();
   std::vector<particles::Vec<2>> points;
   std::vector<std::uint32_t> source;
