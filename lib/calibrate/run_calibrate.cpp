@@ -106,7 +106,7 @@ void check_calibration(const Project& p) {
                         R"({"latent_heat": [0.5, 2.0], ...}}))"});
   const auto& section = std::get<project::ShaftSection>(p.geometry);
   std::vector<std::string> problems;
-  if (section.pipe.model == project::PipeModel::disc)
+  if (project::has_wall(section.pipe.model))
     for (std::size_t s = 0; s < p.monitoring.size(); ++s)
       for (const auto& pipe : geometry::pipe_positions(section.layout))
         if (std::hypot(p.monitoring[s].x - pipe.x, p.monitoring[s].y - pipe.y) < 0.5 * section.pipe.diameter)

@@ -13,6 +13,7 @@ BrineLog::BrineLog(const project::Pipe& pipe, const thermal::ThermalModel& model
                    std::vector<double> sample_times)
     : pipe_(pipe),
       boundary_(boundary),
+      drawn_heat_(model.boundaries()[boundary].film->drawn_heat),
       h_(model.boundaries()[boundary].film->heat_transfer_coefficient),
       perimeter_(model.boundaries()[boundary].film->perimeter),
       sample_times_(std::move(sample_times)) {
@@ -29,7 +30,9 @@ BrineLog::Row BrineLog::row(const thermal::ThermalModel& model, double t, double
   section_rate = 0.0;
   for (std::size_t g = 0; g < perimeter_.size(); ++g) {
     if (perimeter_[g] <= 0.0) continue;
-    section_rate += h * perimeter_[g] * (wall[g] - brine);
+    // Held at the heat drawn: `brine` is that heat per metre of pipe.
+    section_rate += drawn_heat_ ? brine * perimeter_[g] / (M_PI * pipe_.diameter)
+                                : h * perimeter_[g] * (wall[g] - brine);
     in_section += perimeter_[g];
     wall_sum += perimeter_[g] * wall[g];
     pipes += perimeter_[g] / (M_PI * pipe_.diameter);
@@ -48,6 +51,20 @@ void BrineLog::after_step(const thermal::ThermalModel& model, double t) {
 }
 
 nlohmann::json BrineLog::finish(const std::filesystem::path& out) const {
+  if (drawn_heat_) {
+    // The wall's temperature at the heat drawn: pipe_wall.csv and the summary's "pipe_wall".
+    std::string csv = "day,pipe_wall_C,heat_per_metre_W_per_m\n";
+    nlohmann::json series = nlohmann::json::array();
+    for (const auto& r : rows_) {
+      csv += fmt::format("{:.6g},{:.6g},{:.6g}\n", r.day, r.wall, r.heat_per_metre);
+      series.push_back({r.day, r.wall, r.heat_per_metre});
+    }
+    io::write_text_file(out / "pipe_wall.csv", csv);
+    return {{"series", series},
+            {"series_columns", {"day", "pipe_wall_C", "heat_per_metre_W_per_m"}},
+            {"extracted", extracted_},
+            {"unit", "J/m of the simulated section"}};
+  }
   std::string csv = "day,brine_C,pipe_wall_C,heat_per_metre_W_per_m\n";
   nlohmann::json series = nlohmann::json::array();
   for (const auto& r : rows_) {

@@ -3,7 +3,9 @@
 // every step from the film law Q = h P (T_wall - T_brine); the integral of
 // that law over the run is reported beside the heat the integrator took out
 // through the pipe walls, so the two can be compared (they are the same
-// heat, counted from the film and from the ground).
+// heat, counted from the film and from the ground). A pipe held at the heat
+// it draws instead logs its wall's temperature at that heat (pipe_wall.csv,
+// the summary's "pipe_wall").
 #pragma once
 
 #include <filesystem>
@@ -21,7 +23,7 @@ class BrineLog {
   BrineLog(const project::Pipe& pipe, const thermal::ThermalModel& model, std::size_t boundary,
            std::vector<double> sample_times);
   void after_step(const thermal::ThermalModel& model, double t);
-  // Writes brine.csv; returns the summary's "brine" block.
+  // Writes brine.csv (pipe_wall.csv); returns the summary's "brine" ("pipe_wall") block.
   nlohmann::json finish(const std::filesystem::path& out) const;
 
  private:
@@ -32,6 +34,7 @@ class BrineLog {
 
   project::Pipe pipe_;
   std::size_t boundary_;
+  bool drawn_heat_;
   double h_;                       // the film coefficient, W/(m2 K)
   std::vector<double> perimeter_;  // per pipe, in the section
   std::vector<double> sample_times_;

@@ -12,6 +12,7 @@
 #include "geometry/layout.hpp"
 #include "geometry/pores.hpp"
 #include "pd/conduction_bonds.hpp"
+#include "pipes/line_sink.hpp"
 #include "geometry/symmetry.hpp"
 #include "sph/laplacian.hpp"
 #include "sph/wall_extrapolation.hpp"
@@ -26,7 +27,7 @@ double narrowest_gap(const project::ShaftSection& s) {
   for (std::size_t a = 0; a < pipes.size(); ++a)
     for (std::size_t b = a + 1; b < pipes.size(); ++b)
       gap = std::min(gap, std::hypot(pipes[a].x - pipes[b].x, pipes[a].y - pipes[b].y));
-  const double wall = s.pipe.model == project::PipeModel::disc ? s.pipe.diameter : 0.0;
+  const double wall = project::has_wall(s.pipe.model) ? s.pipe.diameter : 0.0;
   return std::isfinite(gap) ? std::max(gap - wall, s.pipe.diameter) : std::numeric_limits<double>::infinity();
 }
 
@@ -47,17 +48,32 @@ double default_spacing(const project::Project& p) {
 
 double resolved_spacing(const project::Project& p) { return p.numerics.spacing.value_or(default_spacing(p)); }
 
-// Brine behind a film at the pipe walls: each pipe's wall particles form a
-// group (the nearest pipe centre), with the length of its wall inside the
-// simulated section (a pipe on a mirror line has half of it there).
+// Brine behind a film at the pipe walls, or pipes held at the heat they
+// draw: each pipe's wall particles form a group (the nearest pipe centre),
+// with the length of its wall inside the simulated section (a pipe on a
+// mirror line has half of it there).
 namespace {
+// The share of the wall of the pipe centred at (x, y) inside the section.
+double wall_share(const geometry::ShaftScene& scene, double x, double y) {
+  constexpr int samples = 3600;
+  int inside = 0;
+  for (int k = 0; k < samples; ++k) {
+    const double phi = 2.0 * M_PI * (k + 0.5) / samples;
+    inside += geometry::inside_wedge(scene.wedge,
+                                     {x + scene.pipe_radius * std::cos(phi), y + scene.pipe_radius * std::sin(phi)});
+  }
+  return double(inside) / samples;
+}
+
 // h is given, or follows from the annulus flow (a transitional film is
 // uncertain: the run warns).
 void attach_brine(const project::Pipe& pipe, geometry::ShaftScene& scene, std::vector<std::string>& warnings) {
-  if (pipe.boundary != project::PipeBoundary::brine) return;
+  if (pipe.boundary != project::PipeBoundary::brine && !pipe.heat_extraction) return;
   const auto& P = scene.particles;
   geometry::FilmWall film;
   film.heat_transfer_coefficient = pipe.heat_transfer_coefficient;
+  film.drawn_heat = pipe.heat_extraction;
+  film.full_perimeter = 2.0 * M_PI * scene.pipe_radius;
   if (pipe.annulus) {
     const auto annulus = design::annulus_film(*pipe.annulus, pipe.diameter);
     film.heat_transfer_coefficient = annulus.h;
@@ -75,18 +91,21 @@ void attach_brine(const project::Pipe& pipe, geometry::ShaftScene& scene, std::v
       if (const double d = (P.position[i] - particles::Vec<2>(scene.pipes[q].x, scene.pipes[q].y)).norm(); d < nearest)
         nearest = d, film.group[i - P.n_free] = int(q);
   }
-  constexpr int samples = 3600;
-  for (const auto& q : scene.pipes) {
-    int inside = 0;
-    for (int k = 0; k < samples; ++k) {
-      const double phi = 2.0 * M_PI * (k + 0.5) / samples;
-      inside += geometry::inside_wedge(
-          scene.wedge, {q.x + scene.pipe_radius * std::cos(phi), q.y + scene.pipe_radius * std::sin(phi)});
-    }
-    film.perimeter.push_back(2.0 * M_PI * scene.pipe_radius * inside / samples);
-  }
+  for (const auto& q : scene.pipes) film.perimeter.push_back(film.full_perimeter * wall_share(scene, q.x, q.y));
   scene.boundaries[scene.pipe_boundary].film = std::move(film);
 }
+// The line-sink pipes' nodes: the fixed particle at each pipe's centre in
+// the section, with the share of its wall there.
+std::vector<pipes::LineSinkNode> line_sink_nodes(const geometry::ShaftScene& scene) {
+  std::vector<pipes::LineSinkNode> nodes;
+  const auto& P = scene.particles;
+  for (std::size_t i = P.n_free; i < P.size(); ++i)
+    if (P.boundary[i] == scene.pipe_boundary)
+      nodes.push_back({P.position[i], scene.pipe_radius, static_cast<std::uint32_t>(i),
+                       wall_share(scene, P.position[i][0], P.position[i][1])});
+  return nodes;
+}
+
 }  // namespace
 
 Model build_cloud(const project::Project& p) {
@@ -169,13 +188,16 @@ Model build_model(const project::Project& p, Model cloud) {
   const double spacing = m.spacing;
   m.kernel = sph::make_kernel<2>(p.numerics.kernel);
   thermal::PhaseChangeLaw law(p.soil);
+  const bool line_sinks = m.shaft && std::get<project::ShaftSection>(p.geometry).pipe.model == project::PipeModel::line;
   particles::PairWeights pairs =
       p.numerics.method == project::Method::pd
           ? pd::build_conduction_bonds(m.particles(), {p.numerics.horizon * spacing,
                                                        p.numerics.laplacian == project::LaplacianForm::renormalised})
           : sph::build_laplacian_pairs<2>(m.particles(), *m.kernel,
                                           {m.smoothing, p.numerics.laplacian, law.anisotropic(), m.particles().graded(),
-                                           p.groundwater.has_value()});  // the water's heat needs the pairs' vectors
+                                           // the water's heat and the line sinks' fit need the pairs' vectors
+                                           p.groundwater.has_value() || line_sinks});
+  if (line_sinks) pipes::couple_line_sinks(pairs, m.particles(), line_sink_nodes(*m.shaft));
   m.model = std::make_unique<thermal::ThermalModel>(
       m.particles().volume, m.particles().boundary, std::move(pairs), law, m.scene->boundaries,
       thermal::ConductionOptions{p.numerics.conductivity_mean, p.numerics.laplacian}, p.domain.initial_temperature,

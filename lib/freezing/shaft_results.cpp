@@ -62,7 +62,7 @@ ShaftResults::ShaftResults(const project::Project& p, const Model& m)
   }
   auto in_pipe = [&](const std::vector<particles::Vec<2>>& points) {
     std::vector<char> inside(points.size(), 0);
-    if (std::get<project::ShaftSection>(p.geometry).pipe.model == project::PipeModel::point) return inside;
+    if (!project::has_wall(std::get<project::ShaftSection>(p.geometry).pipe.model)) return inside;
     for (std::size_t k = 0; k < points.size(); ++k)
       for (const auto& q : shaft.pipes)
         inside[k] |= (points[k] - particles::Vec<2>(q.x, q.y)).norm() < shaft.pipe_radius;

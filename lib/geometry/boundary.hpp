@@ -9,6 +9,11 @@
 // balance holds at every instant; one temperature per group (per pipe: the
 // steel is thin and conducts well, so its wall is taken as one temperature
 // around the pipe, as a fixed-temperature pipe is).
+//
+// A wall held at the heat it draws (drawn_heat) uses the same groups: the
+// schedule is then the heat drawn per metre of the whole pipe, W/m, and
+// each group's temperature is the one at which the ground gives up its
+// share of it (perimeter / full_perimeter).
 #pragma once
 
 #include <optional>
@@ -23,6 +28,8 @@ struct FilmWall {
   double heat_transfer_coefficient = 0.0;  // h, W/(m2 K)
   std::vector<int> group;                  // per fixed particle (index i - free count); -1: not on this wall
   std::vector<double> perimeter;           // per group: m of its wall inside the simulated section
+  bool drawn_heat = false;                 // the schedule is the heat drawn, W/m; no film
+  double full_perimeter = 0.0;             // m: one whole pipe's wall (drawn_heat)
 };
 
 struct FixedTemperatureBoundary {

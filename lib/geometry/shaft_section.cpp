@@ -65,6 +65,19 @@ void add_pipe(particles::ParticleSet<2>& P, const ShaftScene& scene, const Wedge
   }
 }
 
+}  // namespace
+
+double pipe_keep_out_radius(project::PipeModel model, double a, double dx) {
+  switch (model) {
+    case project::PipeModel::disc: return a + 0.5 * dx;   // the wall's own ring stands at a
+    case project::PipeModel::line: return a + 0.25 * dx;  // the ground begins at the wall
+    case project::PipeModel::point: return 0.5 * dx;
+  }
+  return a;
+}
+
+namespace {
+
 // What both builders share: pipes, radii, boundaries.
 ShaftScene empty_scene(const project::ShaftSection& section, const project::Domain& domain, const Wedge& wedge) {
   ShaftScene scene;
@@ -119,7 +132,7 @@ ShaftScene build_shaft_section(const project::ShaftSection& section, const proje
   const bool disc = section.pipe.model == project::PipeModel::disc;
 
   std::vector<K::Circle_2> pipe_keep_out;  // no lattice particle inside these
-  const double keep_out = disc ? a + 0.5 * dx : 0.5 * dx;
+  const double keep_out = pipe_keep_out_radius(section.pipe.model, a, dx);
   for (const auto& p : scene.pipes) pipe_keep_out.emplace_back(Point(p.x, p.y), keep_out * keep_out);
   const K::Circle_2 far_field(Point(0, 0), R * R);
   const K::Circle_2 outermost(Point(0, 0), (R + layers * dx) * (R + layers * dx));
@@ -168,7 +181,7 @@ SizeField shaft_size_field(const project::ShaftSection& section, const Wedge& we
     r_out = std::max(r_out, c.norm());
     // A pipe's own cone matters up to where it reaches the coarsest spacing.
     if (distance_to_wedge(wedge, R, c) < a + (coarsest - finest) / slope)
-      size.near_circle(c, section.pipe.model == project::PipeModel::disc ? a : 0.0, finest, slope);
+      size.near_circle(c, project::has_wall(section.pipe.model) ? a : 0.0, finest, slope);
   }
   const double w = grading.band_width.value_or(2.0);
   size.in_annulus(r_in - w, r_out + w, grading.band_coarsening * finest, slope);
@@ -209,7 +222,7 @@ ShaftScene build_graded_shaft_section(const project::ShaftSection& section, cons
   }
   region.inside = [&](const Vec<2>& x) {
     if (!inside_wedge(wedge, x) || x.norm() >= R) return false;
-    const double keep_out = (disc ? a : 0.0) + 0.3 * size(x);
+    const double keep_out = pipe_keep_out_radius(section.pipe.model, a, 0.6 * size(x));
     for (const auto& p : scene.pipes)
       if ((x - Vec<2>(p.x, p.y)).norm() < keep_out) return false;
     return true;

@@ -35,17 +35,18 @@ std::array<double, 2> read_conductivity(const Node& n) {
 
 }  // namespace
 
-// A wall temperature: a number, or [[day, degC], ...] with days ascending.
-TemperatureSchedule detail::read_schedule(const Node& n) {
+// A wall temperature: a number, or [[day, degC], ...] with days ascending
+// (another quantity in time: its unit in the messages).
+TemperatureSchedule detail::read_schedule(const Node& n, const char* unit) {
   TemperatureSchedule schedule = TemperatureSchedule::fixed(0.0);
   if (!n.given()) return schedule;
   if (n.json().is_number()) return TemperatureSchedule::fixed(n.json().get<double>());
   if (!n.json().is_array()) {
-    n.problem("must be a number or a [[day, degC], ...] schedule, got " + n.type());
+    n.problem(fmt::format("must be a number or a [[day, {}], ...] schedule, got {}", unit, n.type()));
     return schedule;
   }
   if (n.json().empty()) {
-    n.problem("must have at least one [day, degC] point");
+    n.problem(fmt::format("must have at least one [day, {}] point", unit));
     return schedule;
   }
   schedule.points.clear();
@@ -53,7 +54,7 @@ TemperatureSchedule detail::read_schedule(const Node& n) {
     const Node point = n[i];
     const Json& p = point.json();
     if (!p.is_array() || p.size() != 2 || !p[0].is_number() || !p[1].is_number()) {
-      point.problem("must be a [day, degC] pair, got " + (p.is_array() ? point.shown() : point.type()));
+      point.problem(fmt::format("must be a [day, {}] pair, got {}", unit, p.is_array() ? point.shown() : point.type()));
       continue;
     }
     const double day = p[0].get<double>();

@@ -11,7 +11,7 @@
 namespace frostwall::project::detail {
 
 // A number, or [[day, degC], ...] with days ascending.
-TemperatureSchedule read_schedule(const Node& n);
+TemperatureSchedule read_schedule(const Node& n, const char* unit = "degC");
 // A built-in soil's name or a soil object; an implausible latent heat warns.
 Soil read_soil(const Node& n, std::vector<std::string>& warnings);
 // A rectangle's spacing must leave at least 2 particle rows across its

@@ -363,6 +363,10 @@ Project read_project(const Node& root, const std::string& base_directory) {
       root["numerics"]["method"].problem(R"("pd" needs "placement": "lattice" (one horizon for the whole cloud))");
     if (project.soil.frozen.anisotropic() || project.soil.unfrozen.anisotropic())
       root["numerics"]["method"].problem(R"("pd" needs an isotropic soil (one conductivity per phase))");
+    if (const auto* section = std::get_if<ShaftSection>(&project.geometry);
+        section && section->pipe.model == PipeModel::line)
+      root["numerics"]["method"].problem(
+          R"("pd" needs "pipe": {"model": "resolved"} (a line sink is fitted to SPH pairs))");
   }
   if (const Node mech = root["mechanics"]; mech.present()) {
     if (shaft) mech.problem(R"(only used with "geometry" (plain geometries) in this version)");

@@ -113,16 +113,32 @@ double outermost_pipe_radius(const Layout& layout) {
 Pipe read_pipe(const Node& n) {
   Pipe pipe;
   if (!n.object({"diameter", "temperature", "model", "boundary", "brine_temperature", "heat_transfer_coefficient",
-                 "annulus"}))
+                 "annulus", "heat_extraction"}))
     return pipe;
   pipe.diameter = n["diameter"].required().positive().value_or(0.0);
   pipe.model = n["model"]
-                   .choice<PipeModel>("pipe model", {{"disc", PipeModel::disc}, {"point", PipeModel::point}})
+                   .choice<PipeModel>("pipe model", {{"disc", PipeModel::disc},
+                                                     {"resolved", PipeModel::disc},
+                                                     {"line", PipeModel::line},
+                                                     {"point", PipeModel::point}})
                    .value_or(PipeModel::disc);
   pipe.boundary =
       n["boundary"]
           .choice<PipeBoundary>("pipe boundary", {{"fixed", PipeBoundary::fixed}, {"brine", PipeBoundary::brine}})
           .value_or(PipeBoundary::fixed);
+  if (n["heat_extraction"].present()) {
+    // The plant's view: the heat each pipe draws, its wall's temperature computed.
+    for (const char* key : {"temperature", "brine_temperature", "heat_transfer_coefficient", "annulus"})
+      if (n[key].present()) n[key].problem(R"(not used with "heat_extraction" (the wall's temperature is computed))");
+    if (pipe.boundary == PipeBoundary::brine)
+      n["boundary"].problem(
+          R"(not used with "heat_extraction" (the heat drawn is given, not the brine's temperature))");
+    pipe.heat_extraction = true;
+    pipe.temperature = read_schedule(n["heat_extraction"], "W/m");
+    if (pipe.model == PipeModel::point)
+      n["heat_extraction"].problem(R"(needs "model": "line" or "disc" (the wall the heat is drawn through))");
+    return pipe;
+  }
   if (pipe.boundary == PipeBoundary::fixed) {
     pipe.temperature = read_schedule(n["temperature"].required());
     for (const char* key : {"brine_temperature", "heat_transfer_coefficient", "annulus"})
@@ -140,11 +156,12 @@ Pipe read_pipe(const Node& n) {
   else if (n["annulus"].present()) pipe.annulus = read_annulus(n["annulus"], pipe.diameter);
   else pipe.heat_transfer_coefficient = n["heat_transfer_coefficient"].positive().value_or(0.0);
   if (pipe.model == PipeModel::point)
-    n["boundary"].problem(R"("brine" needs "model": "disc" (a film needs the pipe's wall))");
+    n["boundary"].problem(R"("brine" needs "model": "line" or "disc" (a film needs the pipe's wall))");
   return pipe;
 }
 
 void warn_warm_pipe(const Node& n, const Pipe& pipe, double freezing_point, std::vector<std::string>& warnings) {
+  if (pipe.heat_extraction) return;
   const Node temperature = n[pipe.boundary == PipeBoundary::brine ? "brine_temperature" : "temperature"];
   if (!temperature.present()) return;
   const bool is_schedule = temperature.json().is_array();

@@ -133,7 +133,15 @@ struct Layout {
 // survey and failed_pipes may use are 1..pipe_count.
 int pipe_count(const Layout& layout);
 
-enum class PipeModel { disc, point };
+// How a pipe meets the ground: its wall resolved by a circle of fixed
+// particles ("disc", also named "resolved"); a line sink at its centre
+// joined to the particles near it through the logarithmic profile from its
+// wall ("line"); or one fixed particle at its centre ("point").
+enum class PipeModel { disc, point, line };
+const char* pipe_model_name(PipeModel model);
+// The pipe keeps a wall of its diameter in the ground (no particle, sensor
+// or profile inside it): the disc and the line sink.
+inline bool has_wall(PipeModel model) { return model != PipeModel::point; }
 
 // What holds the pipe wall: a fixed temperature (the wall at the schedule),
 // or brine behind a film (Robin: the heat the ground gives up at the wall
@@ -148,6 +156,10 @@ struct Pipe {
   double heat_transfer_coefficient = 0.0;  // h, W/(m2 K), brine only
   // Brine: h from the annulus' geometry and flow instead of a number.
   std::optional<Annulus> annulus;
+  // Held at the heat it draws instead (W per metre of pipe, > 0 cools the
+  // ground; in `temperature`'s place, as a schedule): the wall's temperature
+  // follows.
+  bool heat_extraction = false;
 };
 
 struct Shaft {

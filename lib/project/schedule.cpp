@@ -1,4 +1,5 @@
-// Time-dependent wall temperatures and the time unit of the project file.
+// Time-dependent wall temperatures, the time unit of the project file, the
+// pipe models' names.
 #include <algorithm>
 #include <iterator>
 #include <stdexcept>
@@ -31,5 +32,14 @@ double TimeSettings::unit_seconds() const {
 }
 
 const char* TimeSettings::unit_name() const { return unit == TimeUnit::s ? "s" : (unit == TimeUnit::h ? "h" : "d"); }
+
+const char* pipe_model_name(PipeModel model) {
+  switch (model) {
+    case PipeModel::disc: return "resolved";
+    case PipeModel::line: return "line";
+    case PipeModel::point: return "point";
+  }
+  return "resolved";  // unreachable; keeps -Wreturn-type quiet
+}
 
 }  // namespace frostwall::project

@@ -57,8 +57,7 @@ void add_layout(const RunRecord& run, const project::ShaftSection& section, json
   }
   rows.push_back(
       row("pipes", fmt::format("{} in all, outer diameter {} mm ({} model)", geometry::all_pipe_positions(L).size(),
-                               number(section.pipe.diameter * 1000, 1),
-                               section.pipe.model == project::PipeModel::point ? "point" : "disc")));
+                               number(section.pipe.diameter * 1000, 1), project::pipe_model_name(section.pipe.model))));
   if (!L.failed_pipes.empty())
     rows.push_back(row("failed pipes", fmt::format("{} (off; ground like the rest)", fmt::join(L.failed_pipes, ", "))));
   if (section.shaft.excavation_radius)

@@ -39,7 +39,7 @@ namespace frostwall::summary {
   X(wall) X(day) X(OA) X(OB) X(inner) X(outer) X(thickness) X(min_thickness) X(mean_temperature_OB) X(utilisation)     \
   X(isotherm_thickness) X(isotherm_mean_temperature) X(min_thickness_upstream) X(min_thickness_downstream)             \
   X(design) X(required_thickness) X(max_mean_temperature) X(reached_day) X(met_day) X(pass) X(heat_balance)            \
-  X(monitoring) X(monitoring_solid) X(interface) X(front) X(front_axis) X(front_along) X(brine) X(wedge)               \
+  X(monitoring) X(monitoring_solid) X(interface) X(front) X(front_axis) X(front_along) X(brine) X(wedge) X(pipe_wall)\
   X(run) X(particles) X(steps) X(wall_seconds) X(integrator) X(spacing) X(smoothing_length) X(warnings)                \
   X(groundwater) X(gaps) X(closure_day) X(verdict) X(error_estimate) X(status) X(coarse_closure_days)                  \
   X(sections) X(critical_depth) X(as_built) X(thinnest_wall) X(design_margin) X(intact) X(scenario_directory)          \

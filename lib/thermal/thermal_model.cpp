@@ -69,6 +69,7 @@ void ThermalModel::apply_boundaries(double t) {
 }
 
 void ThermalModel::solve_film(std::size_t b, double T_fluid, const std::vector<double>& extension) {
+  // (T_fluid: with drawn_heat, the heat drawn per metre of pipe.)
   const FilmWall& film = *boundaries_[b].film;
   const std::size_t n = pairs_.n_free;
   const bool extend = !beyond_wall_.row_start.empty();
@@ -84,6 +85,11 @@ void ThermalModel::solve_film(std::size_t b, double T_fluid, const std::vector<d
     B[g] += w * (on_wall ? 1.0 : 2.0);
   }
   for (std::size_t g = 0; g < A.size(); ++g) {
+    if (film.drawn_heat) {  // A + B T_w = -(the group's share of the heat drawn)
+      const double drawn = T_fluid * film.perimeter[g] / film.full_perimeter;
+      if (B[g] > 0.0) film_wall_T_[b][g] = (-drawn - A[g]) / B[g];
+      continue;
+    }
     const double hP = film.heat_transfer_coefficient * film.perimeter[g];
     film_wall_T_[b][g] = B[g] + hP > 0.0 ? (hP * T_fluid - A[g]) / (B[g] + hP) : T_fluid;
   }
