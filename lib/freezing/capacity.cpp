@@ -1,4 +1,5 @@
 #include "freezing/capacity.hpp"
+#include "freezing/model.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -127,9 +128,17 @@ CapacityEstimate estimate_capacity(const project::Project& p, double spacing) {
 }
 
 void check_capacity(const project::Project& p, double spacing) {
-  if (const auto* section = std::get_if<project::ShaftSection>(&p.geometry))
+  if (const auto* section = std::get_if<project::ShaftSection>(&p.geometry)) {
     if (const auto problems = geometry::layout_problems(*section); !problems.empty())
       throw project::ProjectError(problems);
+    // Line sinks: the gap between two pipe walls holds a few particles.
+    const double gap = narrowest_gap(*section);
+    if (section->pipe.model == project::PipeModel::line && spacing > gap / min_rows_in_gap * (1 + 1e-9))
+      throw project::ProjectError({fmt::format(
+          "numerics.spacing: {} m leaves fewer than {} particles across the narrowest gap between two pipe walls "
+          "({} m); use {} m or less",
+          plain(spacing), min_rows_in_gap, plain(gap), plain(round_down(gap / min_rows_in_gap)))});
+  }
   const CapacityEstimate e = estimate_capacity(p, spacing);
   if (e.fits()) return;
   const std::string needs = fmt::format("needs about {} particles (limit {}", sci(e.particles), sci(e.limit));

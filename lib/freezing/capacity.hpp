@@ -31,8 +31,13 @@ double default_particle_limit();
 // spacing: the finest spacing the run uses (freezing/model.hpp resolves it).
 CapacityEstimate estimate_capacity(const project::Project& p, double spacing);
 
+// Line-sink pipes: the narrowest gap between two pipe walls holds at least
+// this many spacings (closure is decided there).
+inline constexpr double min_rows_in_gap = 4.0;
+
 // Throws project::ProjectError naming numerics.spacing or domain.outer_radius
-// (or the rectangle's size) when the estimate is over the limit.
+// (or the rectangle's size) when the estimate is over the limit, or when a
+// line-sink cloud is too coarse for the gap between two pipes.
 void check_capacity(const project::Project& p, double spacing);
 
 }  // namespace frostwall::freezing

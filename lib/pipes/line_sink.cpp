@@ -124,10 +124,12 @@ LinearFit assemble(const PairWeights& pairs, const particles::ParticleSet<2>& P,
       }
     }
     const long w = static_cast<long>(fit.factors + q);
+    lin.cost(w) = options.exchange_cost;
+    lin.x0(w) = 0.0;
+    if ((xi - node.centre).norm() > node.radius + options.exchange_reach * P.spacing_of(i)) continue;
     for (int f = 0; f < exact_fields; ++f) lin.A(static_cast<long>(exact_fields * q) + f, w) = -fi[f];
     lin.A(rows - 1, w) = P.volume[i] * row_sum * fi[0] / (std::numbers::pi * node.share);
     lin.x0(w) = std::max(0.0, own_row / fi[0]);
-    lin.cost(w) = options.exchange_cost;
   }
   lin.b(rows - 1) = 1.0;
   return lin;

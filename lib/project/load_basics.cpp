@@ -117,6 +117,9 @@ std::optional<std::string> rectangle_spacing_problem(const Rectangle& r, double 
 }
 
 std::optional<std::string> shaft_spacing_problem(const ShaftSection& s, double spacing) {
+  // A line sink needs no particles across its pipe (the gap between two
+  // pipes bounds its spacing: freezing/capacity.cpp).
+  if (s.pipe.model == PipeModel::line) return std::nullopt;
   if (!(s.pipe.diameter > 0) || spacing <= s.pipe.diameter * (1 + 1e-9)) return std::nullopt;
   return fmt::format("{} m is larger than the pipe diameter ({} m): a pipe needs particles across it; use {} m or less",
                      spacing, s.pipe.diameter, s.pipe.diameter);
