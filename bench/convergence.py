@@ -3,12 +3,15 @@
 
   python3 bench/convergence.py                 # single ring, three-hole, four-hole at 3, 2.5, 2, 1.5, 1 cm
   python3 bench/convergence.py --spacings 0.03,0.02  --projects single_ring_sand
+  python3 bench/convergence.py --model line --placement lattice --spacings 0.08,0.06,0.05,0.04,0.03
 
 Each project runs to its own end (120 days) with only numerics.spacing
-changed, without VTK, report or error estimate, on all cores. Prints one
-markdown table per project (closure day, OB thickness at 60 days, free
-particles, wall seconds) and the observed order of the closure day from
-each three successive spacings ('-' where the two differences change sign).
+changed (and pipe.model and numerics.placement when given), without VTK,
+report or error estimate, on all cores. Prints one markdown table per
+project (closure day, OA and OB thickness at 60 days, free particles, wall
+seconds) and the observed order of the closure day and of the OB thickness
+from each three successive spacings ('-' where the two differences change
+sign).
 """
 import argparse
 import json
@@ -27,12 +30,16 @@ REFERENCES = {"single_ring_sand": (13.845, 0.004), "three_hole_sand": (6.612, 0.
               "four_hole_sand": (1.1436, 0.0095)}
 
 
-def run(name, spacing, work, threads, exe=EXE):
+def run(name, spacing, work, threads, exe=EXE, model=None, placement=None):
     with open(os.path.join(ROOT, "projects", name + ".json")) as f:
         project = json.load(f)
     project.setdefault("numerics", {})
     project["numerics"].update({"spacing": spacing, "error_estimate": False})
-    out = os.path.join(work, f"{name}_{spacing}")
+    if model:
+        project["pipe"]["model"] = model
+    if placement:
+        project["numerics"]["placement"] = placement
+    out = os.path.join(work, f"{name}_{spacing}_{model}_{placement}")
     project["output"] = {"directory": out, "vtk": False, "full_ring": False, "report": False}
     path = out + ".json"
     with open(path, "w") as f:
@@ -46,7 +53,9 @@ def run(name, spacing, work, threads, exe=EXE):
     with open(os.path.join(out, "summary.json")) as f:
         s = json.load(f)
     ob60 = next((w["OB"]["thickness"] for w in s["wall"] if round(w["day"]) == 60), None)
-    return {"closure": s["closure_time_days"], "ob60": ob60, "particles": s["run"]["particles"], "wall": wall}
+    oa60 = next((w["OA"]["thickness"] for w in s["wall"] if round(w["day"]) == 60), None)
+    return {"closure": s["closure_time_days"], "ob60": ob60, "oa60": oa60, "particles": s["run"]["particles"],
+            "wall": wall}
 
 
 def observed_order(h, c):
@@ -84,24 +93,32 @@ def main():
     ap.add_argument("--spacings", default=",".join(str(s) for s in SPACINGS))
     ap.add_argument("--threads", type=int, default=os.cpu_count() or 1)
     ap.add_argument("--exe", default=EXE, help="the frostwall program (default: build/app/frostwall)")
+    ap.add_argument("--model", help="pipe.model (default: the project's)")
+    ap.add_argument("--placement", help="numerics.placement (default: the project's)")
     args = ap.parse_args()
     spacings = [float(s) for s in args.spacings.split(",")]
     work = tempfile.mkdtemp(prefix="frostwall-convergence-")
     for name in args.projects.split(","):
         ref, u = REFERENCES.get(name, (None, None))
         print(f"\n{name} (reference {ref} +- {u} d)\n")
-        print("| spacing (m) | free particles | closure day | vs reference | OB thickness 60 d (m) | wall s |")
-        print("|---|---|---|---|---|---|")
-        closures = []
+        print("| spacing (m) | free particles | closure day | vs reference | OA 60 d (m) | OB 60 d (m) | wall s |")
+        print("|---|---|---|---|---|---|---|")
+        closures, obs = [], []
         for h in spacings:
-            r = run(name, h, work, args.threads, args.exe)
+            r = run(name, h, work, args.threads, args.exe, args.model, args.placement)
             closures.append(r["closure"])
+            obs.append(r["ob60"])
             vs = f"{100 * (r['closure'] / ref - 1):+.2f} %" if ref else ""
+            oa = f"{r['oa60']:.3f}" if r["oa60"] is not None else "-"
             ob = f"{r['ob60']:.3f}" if r["ob60"] is not None else "-"
-            print(f"| {h} | {r['particles']} | {r['closure']:.4f} | {vs} | {ob} | {r['wall']:.1f} |", flush=True)
-        orders = observed_order(spacings, closures)
-        print("\nobserved order of the closure day (successive triples): " +
-              ", ".join("-" if p is None else f"{p:.2f}" for p in orders))
+            print(f"| {h} | {r['particles']} | {r['closure']:.4f} | {vs} | {oa} | {ob} | {r['wall']:.1f} |", flush=True)
+
+        def orders_text(values):
+            if any(v is None for v in values):
+                return "-"
+            return ", ".join("-" if p is None else f"{p:.2f}" for p in observed_order(spacings, values))
+        print("\nobserved order (successive triples): closure day " + orders_text(closures) + "; OB thickness " +
+              orders_text(obs))
 
 
 if __name__ == "__main__":

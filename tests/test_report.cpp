@@ -200,6 +200,9 @@ TEST_CASE("The report of a shaft run fills every placeholder, loads nothing and 
   CHECK(html.find("Frozen columns touch") != std::string::npos);
   CHECK(html.find(fmt::format("day {:.1f}", summary["front_contact_days"].get<double>())) != std::string::npos);
   CHECK(html.find(summary["design"]["pass"].get<bool>() ? ">PASS<" : ">FAIL<") != std::string::npos);
+  // The pipe model is named, as the summary has it.
+  CHECK(summary["run"]["pipe_model"] == "resolved");
+  CHECK(html.find("(resolved model)") != std::string::npos);
   for (const char* link :
        {"href=\"summary.json\"", "href=\"wall.csv\"", "href=\"field_0004.vtu\"", "href=\"ring.pvd\""})
     CHECK(html.find(link) != std::string::npos);

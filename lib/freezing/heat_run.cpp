@@ -325,6 +325,8 @@ nlohmann::ordered_json HeatRun::summary(const thermal::TimeLoopResult& loop) con
   }
   if (const auto* rkl2 = thermal::find_integrator<thermal::SuperTimeStepping>(built_.integrator.get()))
     summary[keys::run]["stages"] = rkl2->statistics().stages;
+  if (const auto* section = std::get_if<project::ShaftSection>(&p_.geometry))
+    summary[keys::run]["pipe_model"] = project::pipe_model_name(section->pipe.model);
   if (extension_) extension_->run_facts(summary[keys::run]);
   if (flow_)
     summary[keys::groundwater] =
