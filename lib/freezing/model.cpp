@@ -12,7 +12,7 @@
 #include "geometry/layout.hpp"
 #include "geometry/pores.hpp"
 #include "pd/conduction_bonds.hpp"
-#include "pipes/line_sink.hpp"
+#include "pipes/pipe_exchange.hpp"
 #include "geometry/symmetry.hpp"
 #include "sph/laplacian.hpp"
 #include "sph/wall_extrapolation.hpp"
@@ -188,7 +188,9 @@ Model build_model(const project::Project& p, Model cloud) {
   const double spacing = m.spacing;
   m.kernel = sph::make_kernel<2>(p.numerics.kernel);
   thermal::PhaseChangeLaw law(p.soil);
-  const bool line_sinks = m.shaft && std::get<project::ShaftSection>(p.geometry).pipe.model == project::PipeModel::line;
+  const auto exchange = m.shaft ? pipes::make_pipe_exchange(std::get<project::ShaftSection>(p.geometry).pipe.model)
+                                : nullptr;
+  const bool pair_vectors = exchange && exchange->needs_pair_vectors();
   particles::PairWeights pairs =
       p.numerics.method == project::Method::pd
           ? pd::build_conduction_bonds(m.particles(), {p.numerics.horizon * spacing,
@@ -196,8 +198,8 @@ Model build_model(const project::Project& p, Model cloud) {
           : sph::build_laplacian_pairs<2>(m.particles(), *m.kernel,
                                           {m.smoothing, p.numerics.laplacian, law.anisotropic(), m.particles().graded(),
                                            // the water's heat and the line sinks' fit need the pairs' vectors
-                                           p.groundwater.has_value() || line_sinks});
-  if (line_sinks) pipes::couple_line_sinks(pairs, m.particles(), line_sink_nodes(*m.shaft));
+                                           p.groundwater.has_value() || pair_vectors});
+  if (exchange) exchange->couple(pairs, m.particles(), line_sink_nodes(*m.shaft));
   m.model = std::make_unique<thermal::ThermalModel>(
       m.particles().volume, m.particles().boundary, std::move(pairs), law, m.scene->boundaries,
       thermal::ConductionOptions{p.numerics.conductivity_mean, p.numerics.laplacian}, p.domain.initial_temperature,

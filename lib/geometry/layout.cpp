@@ -1,4 +1,5 @@
 #include "geometry/layout.hpp"
+#include "pipes/pipe_exchange.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -195,7 +196,7 @@ std::vector<std::string> layout_problems(const project::ShaftSection& section) {
 
   // One line for the far field, naming the pipe that decides how large it must be.
   const double far = section.outer_radius;
-  const bool disc = section.pipe.model == project::PipeModel::disc;
+  const bool disc = pipes::make_pipe_exchange(section.pipe.model)->rings_on_wall();
   const double clearance = disc ? far_field_clearance_diameters * d : 0.0;
   if (far > 0 && !farthest.who.empty()) {
     if (farthest.reach > far)

@@ -11,6 +11,7 @@
 #include <numbers>
 
 #include "particles/symmetry_group.hpp"
+#include "pipes/pipe_exchange.hpp"
 
 namespace frostwall::geometry {
 
@@ -65,19 +66,6 @@ void add_pipe(particles::ParticleSet<2>& P, const ShaftScene& scene, const Wedge
   }
 }
 
-}  // namespace
-
-double pipe_keep_out_radius(project::PipeModel model, double a, double dx) {
-  switch (model) {
-    case project::PipeModel::disc: return a + 0.5 * dx;   // the wall's own ring stands at a
-    case project::PipeModel::line: return a + 0.25 * dx;  // the ground begins at the wall
-    case project::PipeModel::point: return 0.5 * dx;
-  }
-  return a;
-}
-
-namespace {
-
 // What both builders share: pipes, radii, boundaries.
 ShaftScene empty_scene(const project::ShaftSection& section, const project::Domain& domain, const Wedge& wedge) {
   ShaftScene scene;
@@ -129,10 +117,11 @@ ShaftScene build_shaft_section(const project::ShaftSection& section, const proje
   ShaftScene scene = empty_scene(section, domain, wedge);
   const double dx = spacing, R = section.outer_radius, a = scene.pipe_radius;
   const int layers = static_cast<int>(std::ceil(2.0 * h / dx - 1e-9));
-  const bool disc = section.pipe.model == project::PipeModel::disc;
+  const auto exchange = pipes::make_pipe_exchange(section.pipe.model);
+  const bool disc = exchange->rings_on_wall();
 
   std::vector<K::Circle_2> pipe_keep_out;  // no lattice particle inside these
-  const double keep_out = pipe_keep_out_radius(section.pipe.model, a, dx);
+  const double keep_out = exchange->keep_out(a, dx);
   for (const auto& p : scene.pipes) pipe_keep_out.emplace_back(Point(p.x, p.y), keep_out * keep_out);
   const K::Circle_2 far_field(Point(0, 0), R * R);
   const K::Circle_2 outermost(Point(0, 0), (R + layers * dx) * (R + layers * dx));
@@ -195,7 +184,8 @@ ShaftScene build_graded_shaft_section(const project::ShaftSection& section, cons
                                       const Wedge& wedge, const SizeField& size, double smoothing_ratio) {
   ShaftScene scene = empty_scene(section, domain, wedge);
   const double R = section.outer_radius, a = scene.pipe_radius;
-  const bool disc = section.pipe.model == project::PipeModel::disc;
+  const auto exchange = pipes::make_pipe_exchange(section.pipe.model);
+  const bool disc = exchange->rings_on_wall();
   auto& P = scene.particles;
   P.spacing = size.finest();
   add_mirror_planes(P, wedge);
@@ -222,7 +212,7 @@ ShaftScene build_graded_shaft_section(const project::ShaftSection& section, cons
   }
   region.inside = [&](const Vec<2>& x) {
     if (!inside_wedge(wedge, x) || x.norm() >= R) return false;
-    const double keep_out = pipe_keep_out_radius(section.pipe.model, a, 0.6 * size(x));
+    const double keep_out = exchange->keep_out(a, 0.6 * size(x));
     for (const auto& p : scene.pipes)
       if ((x - Vec<2>(p.x, p.y)).norm() < keep_out) return false;
     return true;

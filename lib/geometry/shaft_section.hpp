@@ -7,8 +7,8 @@
 //  - Each pipe disc holds ceil(2h/spacing) rings of fixed particles that
 //    follow its circle, the outer one on the pipe wall (the paper's point
 //    pipe, "pipe": {"model": "point"}, is a single fixed particle; so is a
-//    line sink, "line", whose ground begins at the wall: the exchange is
-//    joined to it by pipes/line_sink.hpp).
+//    line sink, "line", whose ground begins at the wall: pipes/ holds how
+//    each model meets the ground).
 //  - Beyond the far-field arc, the same number of lattice layers hold the
 //    far-field temperature (none when the far field is adiabatic).
 //  - The wedge sides are mirror planes; pipes they cut are kept on the
@@ -36,9 +36,6 @@ struct ShaftScene : Scene {
   int pipe_boundary = -1;       // boundary id of the pipes
   int far_field_boundary = -1;  // boundary id of the far field, -1 if adiabatic
 };
-
-// No free particle nearer a pipe's centre than this, for the spacing dx there.
-double pipe_keep_out_radius(project::PipeModel model, double a, double dx);
 
 ShaftScene build_shaft_section(const project::ShaftSection& section, const project::Domain& domain, const Wedge& wedge,
                                double spacing, double h);
