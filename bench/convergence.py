@@ -30,6 +30,22 @@ REFERENCES = {"single_ring_sand": (13.845, 0.004), "three_hole_sand": (6.612, 0.
               "four_hole_sand": (1.1436, 0.0095)}
 
 
+def run_project(project, out, threads, exe=EXE):
+    """Writes `project` beside `out` (its output directory), runs it and
+    returns the wall seconds and its summary.json."""
+    path = out + ".json"
+    with open(path, "w") as f:
+        json.dump(project, f)
+    start = time.perf_counter()
+    proc = subprocess.run([exe, "--threads", str(threads), "run", path], capture_output=True, text=True,
+                          env=dict(os.environ, CI="1"))
+    wall = time.perf_counter() - start
+    if proc.returncode != 0:
+        sys.exit(f"{project.get('name')} ({out}) failed: {proc.stderr}")
+    with open(os.path.join(out, "summary.json")) as f:
+        return wall, json.load(f)
+
+
 def run(name, spacing, work, threads, exe=EXE, model=None, placement=None):
     with open(os.path.join(ROOT, "projects", name + ".json")) as f:
         project = json.load(f)
@@ -41,17 +57,7 @@ def run(name, spacing, work, threads, exe=EXE, model=None, placement=None):
         project["numerics"]["placement"] = placement
     out = os.path.join(work, f"{name}_{spacing}_{model}_{placement}")
     project["output"] = {"directory": out, "vtk": False, "full_ring": False, "report": False}
-    path = out + ".json"
-    with open(path, "w") as f:
-        json.dump(project, f)
-    start = time.perf_counter()
-    proc = subprocess.run([exe, "--threads", str(threads), "run", path], capture_output=True, text=True,
-                          env=dict(os.environ, CI="1"))
-    wall = time.perf_counter() - start
-    if proc.returncode != 0:
-        sys.exit(f"convergence: {name} at {spacing} failed: {proc.stderr}")
-    with open(os.path.join(out, "summary.json")) as f:
-        s = json.load(f)
+    wall, s = run_project(project, out, threads, exe)
     ob60 = next((w["OB"]["thickness"] for w in s["wall"] if round(w["day"]) == 60), None)
     oa60 = next((w["OA"]["thickness"] for w in s["wall"] if round(w["day"]) == 60), None)
     return {"closure": s["closure_time_days"], "ob60": ob60, "oa60": oa60, "particles": s["run"]["particles"],

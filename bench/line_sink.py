@@ -12,7 +12,9 @@ temporary directory. Prints medians of the wall seconds, the median of the
 pairwise ratios line / resolved, and the closure day and OB thickness at
 60 days of each.
 """
-import argparse, json, os, statistics, subprocess, sys, tempfile, time
+import argparse, json, os, statistics, tempfile
+
+import convergence
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 EXE = os.path.join(ROOT, "build", "app", "frostwall")
@@ -35,17 +37,7 @@ def run(name, patch, work, tag):
     project["output"]["directory"] = out
     if "survey" in project:  # its file, from the project's folder
         project["survey"]["file"] = os.path.join(ROOT, "projects", project["survey"]["file"])
-    path = out + ".json"
-    with open(path, "w") as f:
-        json.dump(project, f)
-    start = time.perf_counter()
-    proc = subprocess.run([EXE, "--threads", "2", "run", path], capture_output=True, text=True,
-                          env=dict(os.environ, CI="1"))
-    wall = time.perf_counter() - start
-    if proc.returncode != 0:
-        sys.exit(f"line_sink: {name} ({tag}) failed: {proc.stderr}")
-    with open(os.path.join(out, "summary.json")) as f:
-        s = json.load(f)
+    wall, s = convergence.run_project(project, out, 2, EXE)
     ob60 = next((w["OB"]["thickness"] for w in s.get("wall", []) if round(w["day"]) == 60), None)
     return wall, s.get("closure_time_days"), ob60, s.get("run", {}).get("particles")
 

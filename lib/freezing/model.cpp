@@ -42,6 +42,9 @@ double default_spacing(const project::Project& p) {
   // "Convergence of the closure day in the spacing".
   const auto& s = std::get<project::ShaftSection>(p.geometry);
   const double gap = narrowest_gap(s);
+  // Line sinks: the pipe's diameter no longer bounds it; 25 across the gap,
+  // at most 5 cm.
+  if (s.pipe.model == project::PipeModel::line) return std::min(0.05, gap / 25.0);
   if (p.numerics.placement == project::Placement::graded) return std::min({0.02, 0.3 * s.pipe.diameter, gap / 25.0});
   return std::min({0.025, 0.4 * s.pipe.diameter, gap / 25.0});
 }

@@ -121,9 +121,11 @@ Rectangle read_rectangle(const Node& n) {
 // problems keep the lattice. RKL2 steps may change a particle's enthalpy by
 // one latent heat (its stages follow the front), an implicit step by a
 // quarter (its Newton iteration needs it); bench/README.md has the numbers.
-Numerics read_numerics(const Node& n, bool shaft) {
+Numerics read_numerics(const Node& n, bool shaft, bool line_sinks) {
   Numerics numerics;
-  numerics.placement = shaft ? Placement::graded : Placement::lattice;
+  // Line-sink pipes keep the lattice: its rows stand symmetric about every
+  // neck (bench/README.md, "Pipes as line sinks").
+  numerics.placement = shaft && !line_sinks ? Placement::graded : Placement::lattice;
   auto default_step_change = [&] {
     if (!n["step_change"].present()) numerics.step_change = numerics.integrator == IntegratorKind::rkl2 ? 1.0 : 0.25;
   };
@@ -345,7 +347,9 @@ Project read_project(const Node& root, const std::string& base_directory) {
   }
 
   project.time = read_time(root["time"].required());
-  project.numerics = read_numerics(root["numerics"], shaft);
+  const auto* shaft_section = std::get_if<ShaftSection>(&project.geometry);
+  project.numerics =
+      read_numerics(root["numerics"], shaft, shaft_section && shaft_section->pipe.model == PipeModel::line);
   if (const auto* r = std::get_if<Rectangle>(&project.geometry))
     detail::check_rectangle_spacing(root["numerics"]["spacing"], *r, project.numerics.spacing);
   else
