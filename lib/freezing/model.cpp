@@ -202,7 +202,7 @@ Model build_model(const project::Project& p, Model cloud) {
                                           {m.smoothing, p.numerics.laplacian, law.anisotropic(), m.particles().graded(),
                                            // the water's heat and the line sinks' fit need the pairs' vectors
                                            p.groundwater.has_value() || pair_vectors});
-  if (exchange) exchange->couple(pairs, m.particles(), line_sink_nodes(*m.shaft));
+  if (exchange && exchange->couples()) exchange->couple(pairs, m.particles(), line_sink_nodes(*m.shaft));
   m.model = std::make_unique<thermal::ThermalModel>(
       m.particles().volume, m.particles().boundary, std::move(pairs), law, m.scene->boundaries,
       thermal::ConductionOptions{p.numerics.conductivity_mean, p.numerics.laplacian}, p.domain.initial_temperature,

@@ -15,6 +15,7 @@ class LineSink : public PipeExchange {
   bool rings_on_wall() const override { return false; }
   double keep_out(double a, double dx) const override { return a + 0.25 * dx; }  // the ground begins at the wall
   bool needs_pair_vectors() const override { return true; }
+  bool couples() const override { return true; }
   void couple(particles::PairWeights& pairs, const particles::ParticleSet<2>& particles,
               const std::vector<LineSinkNode>& nodes) const override {
     couple_line_sinks(pairs, particles, nodes);

@@ -31,6 +31,8 @@ class PipeExchange {
   virtual double keep_out(double a, double dx) const = 0;
   // The exchange needs each pair's vector x_j - x_i.
   virtual bool needs_pair_vectors() const { return false; }
+  // couple() changes the pair list (the SPH pairs alone join the others).
+  virtual bool couples() const { return false; }
   // Joins the pipes' particles (nodes: one per pipe at its centre) to the
   // ground in the pair list.
   virtual void couple(particles::PairWeights& /*pairs*/, const particles::ParticleSet<2>& /*particles*/,
