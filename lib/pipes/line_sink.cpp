@@ -52,7 +52,14 @@ Eigen::VectorXd solve_nonnegative(const LinearFit& fit) {
 struct PipeFit {
   std::vector<std::uint32_t> near;  // free particles
   std::vector<int> equation;        // per particle: its row in `near`, -1 if not near
-  std::vector<int> variable;        // per pair entry: its factor, -1 if fixed
+  // The factor of each entry of the near particles' rows (-1: fixed), the
+  // entries of near[q]'s row from first[q] on.
+  std::vector<int> variable;
+  std::vector<std::size_t> first;
+  std::vector<double> row_sum;  // D_i = sum_e |G_e| of near[q]'s row before the fit
+  int factor(const PairWeights& pairs, std::size_t q, std::size_t e) const {
+    return variable[first[q] + (e - pairs.row_start[near[q]])];
+  }
   std::size_t factors = 0;
 };
 
@@ -71,17 +78,22 @@ PipeFit find_near(const PairWeights& pairs, const particles::ParticleSet<2>& P, 
   // The two halves of a pair (i sees j, j sees i, directly or through the
   // same mirror) have the same length: they share one factor.
   std::map<std::tuple<std::uint32_t, std::uint32_t, long long>, int> factor_of;
-  fit.variable.assign(pairs.pairs(), -1);
-  for (std::uint32_t i : fit.near)
+  for (std::uint32_t i : fit.near) {
+    fit.first.push_back(fit.variable.size());
+    fit.row_sum.push_back(0.0);
+    for (std::size_t e = pairs.row_start[i]; e < pairs.row_start[i + 1]; ++e)
+      fit.row_sum.back() += std::abs(pairs.weight[e]);
     for (std::size_t e = pairs.row_start[i]; e < pairs.row_start[i + 1]; ++e) {
+      fit.variable.push_back(-1);
       const std::uint32_t j = pairs.column[e];
       if (j >= pairs.n_free || fit.equation[j] < 0) continue;
       const double length = Vec<2>(pairs.vector[2 * e], pairs.vector[2 * e + 1]).norm();
       const auto key = std::make_tuple(std::min(i, j), std::max(i, j), std::llround(length / P.spacing * 1e8));
       const auto [it, added] = factor_of.emplace(key, static_cast<int>(fit.factors));
       if (added) ++fit.factors;
-      fit.variable[e] = it->second;
+      fit.variable.back() = it->second;
     }
+  }
   return fit;
 }
 
@@ -109,9 +121,7 @@ LinearFit assemble(const PairWeights& pairs, const particles::ParticleSet<2>& P,
     const std::uint32_t i = fit.near[q];
     const Vec<2> xi = P.position[i];
     const auto fi = fields_at(xi, node);
-    double row_sum = 0.0;
-    for (std::size_t e = pairs.row_start[i]; e < pairs.row_start[i + 1]; ++e) row_sum += std::abs(pairs.weight[e]);
-    const double s = 1.0 / row_sum;
+    const double row_sum = fit.row_sum[q], s = 1.0 / row_sum;
     double own_row = 0.0;  // the logarithm's row with every factor at 1
     for (std::size_t e = pairs.row_start[i]; e < pairs.row_start[i + 1]; ++e) {
       const auto fj = fields_at(xi + Vec<2>(pairs.vector[2 * e], pairs.vector[2 * e + 1]), node);
@@ -119,7 +129,7 @@ LinearFit assemble(const PairWeights& pairs, const particles::ParticleSet<2>& P,
       for (int f = 0; f < exact_fields; ++f) {
         const long row = static_cast<long>(exact_fields * q) + f;
         const double term = s * pairs.weight[e] * (fj[f] - fi[f]);
-        if (fit.variable[e] >= 0) lin.A(row, fit.variable[e]) += term;
+        if (const int v = fit.factor(pairs, q, e); v >= 0) lin.A(row, v) += term;
         else lin.b(row) -= term;
       }
     }
@@ -135,16 +145,15 @@ LinearFit assemble(const PairWeights& pairs, const particles::ParticleSet<2>& P,
   return lin;
 }
 
-// The pair list without the pairs to `drop`, with the factors applied and
-// the exchange pairs (i, node, weight) added at the end of their rows.
+// The pair list without the pairs to `drop`, with the exchange pairs
+// (i, node, weight) added at the end of their rows.
 struct Exchange {
   std::uint32_t row, node;
   double weight;
   Vec<2> vector;
 };
 
-PairWeights rebuilt(const PairWeights& pairs, const std::vector<char>& drop, const std::vector<double>& factor,
-                    const std::vector<Exchange>& exchange) {
+PairWeights rebuilt(const PairWeights& pairs, const std::vector<char>& drop, const std::vector<Exchange>& exchange) {
   PairWeights out = pairs;
   out.column.clear();
   out.weight.clear();
@@ -158,7 +167,7 @@ PairWeights rebuilt(const PairWeights& pairs, const std::vector<char>& drop, con
     for (std::size_t e = pairs.row_start[i]; e < pairs.row_start[i + 1]; ++e) {
       if (drop[pairs.column[e]]) continue;
       out.column.push_back(pairs.column[e]);
-      out.weight.push_back(pairs.weight[e] * factor[e]);
+      out.weight.push_back(pairs.weight[e]);
       for (int d = 0; d < 2; ++d) {
         if (vectors) out.vector.push_back(pairs.vector[2 * e + d]);
         if (directions) out.direction2.push_back(pairs.direction2[2 * e + d]);
@@ -186,7 +195,7 @@ std::vector<LineSinkFit> couple_line_sinks(PairWeights& pairs, const particles::
   std::vector<char> drop(P.size(), 0);
   for (const auto& node : nodes) drop[node.node] = 1;
   // The SPH pairs to the nodes go first: the fit replaces them.
-  pairs = rebuilt(pairs, drop, std::vector<double>(pairs.pairs(), 1.0), {});
+  pairs = rebuilt(pairs, drop, {});
   std::fill(drop.begin(), drop.end(), 0);
 
   std::vector<LineSinkFit> fits;
@@ -203,22 +212,19 @@ std::vector<LineSinkFit> couple_line_sinks(PairWeights& pairs, const particles::
     report.residual = r.cwiseAbs().maxCoeff();
     for (std::size_t p = 0; p < fit.factors; ++p)
       report.largest_change = std::max(report.largest_change, std::abs(x(static_cast<long>(p)) - 1.0));
-    std::vector<double> factor(pairs.pairs(), 1.0);
-    for (std::size_t e = 0; e < pairs.pairs(); ++e)
-      if (fit.variable[e] >= 0) factor[e] = x(fit.variable[e]);
+    for (std::size_t q = 0; q < fit.near.size(); ++q)
+      for (std::size_t e = pairs.row_start[fit.near[q]]; e < pairs.row_start[fit.near[q] + 1]; ++e)
+        if (const int v = fit.factor(pairs, q, e); v >= 0) pairs.weight[e] *= x(v);
     for (std::size_t q = 0; q < fit.near.size(); ++q) {
       const std::uint32_t i = fit.near[q];
-      double row_sum = 0.0;
-      for (std::size_t e = pairs.row_start[i]; e < pairs.row_start[i + 1]; ++e) row_sum += std::abs(pairs.weight[e]);
-      const double w = x(static_cast<long>(fit.factors + q)) * row_sum;
+      const double w = x(static_cast<long>(fit.factors + q)) * fit.row_sum[q];
       if (w <= 0.0) continue;
       ++report.exchanging;
       exchange.push_back({i, node.node, w, node.centre - P.position[i]});
     }
-    pairs = rebuilt(pairs, drop, factor, {});
     fits.push_back(report);
   }
-  pairs = rebuilt(pairs, drop, std::vector<double>(pairs.pairs(), 1.0), exchange);
+  pairs = rebuilt(pairs, drop, exchange);
   return fits;
 }
 
