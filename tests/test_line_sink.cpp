@@ -284,3 +284,34 @@ TEST_CASE("The single ring with line-sink pipes closes on the converged day", "[
   const std::string html((std::istreambuf_iterator<char>(html_in)), std::istreambuf_iterator<char>());
   CHECK(html.find("(line model)") != std::string::npos);
 }
+
+// Story: brine behind a film on line-sink pipes. A film of 1e7 W/(m2 K)
+// passes any heat at a few thousandths of a kelvin, so the wall sits at the
+// brine's temperature: the run closes on the day of the same pipes held at
+// that temperature (within 0.1 %), and the wall the film reports is the
+// brine's within 0.01 K.
+TEST_CASE("Line-sink pipes behind a stiff film close with pipes held at the brine's temperature", "[line_sink]") {
+  auto closure = [](const nlohmann::json& pipe, std::vector<double>* wall) {
+    const nlohmann::json patch = {{"pipe", pipe},
+                                  {"numerics", {{"spacing", 0.08}}},
+                                  {"time", {{"end", 20}, {"unit", "d"}, {"snapshots", nlohmann::json::array({20})}}}};
+    auto m = freezing::build_model(test::shipped_project("single_ring_sand.json", patch));
+    const auto days = test::closure_days(m, 20 * 86400.0);
+    if (wall) *wall = m.model->wall_temperatures(static_cast<std::size_t>(m.shaft->pipe_boundary));
+    REQUIRE(days.closure);
+    return *days.closure;
+  };
+  std::vector<double> wall;
+  const double fixed = closure({{"model", "line"}, {"temperature", -30.0}}, nullptr);
+  const double film = closure({{"model", "line"},
+                               {"temperature", nullptr},
+                               {"boundary", "brine"},
+                               {"brine_temperature", -30.0},
+                               {"heat_transfer_coefficient", 1e7}},
+                              &wall);
+  fmt::print("\nLine sinks, 8 cm lattice: closure {:.4f} d held at -30 C, {:.4f} d behind a 1e7 W/(m2 K) film\n", fixed,
+             film);
+  CHECK(std::abs(film / fixed - 1.0) < 0.001);
+  REQUIRE_FALSE(wall.empty());
+  for (double T : wall) CHECK(std::abs(T + 30.0) < 0.01);
+}
