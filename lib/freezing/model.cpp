@@ -215,6 +215,16 @@ Model build_model(const project::Project& p, Model cloud) {
     m.model->set_materials({law, thermal::pore_water_law(p.pore_fluid)}, std::move(material),
                            p.domain.initial_temperature);
   }
+  // Zones that start at their own temperature (a later one over an earlier one).
+  if (!p.domain.initial_zones.empty())
+    for (std::size_t i = 0; i < m.model->free_count(); ++i) {
+      const auto& x = m.particles().position[i];
+      for (auto zone = p.domain.initial_zones.rbegin(); zone != p.domain.initial_zones.rend(); ++zone)
+        if (zone->contains(x[0], x[1])) {
+          m.model->set_enthalpy(i, m.model->law_of(i).enthalpy(zone->temperature));
+          break;
+        }
+    }
   const double explicit_step = p.numerics.beta * m.h * m.h / m.model->max_diffusivity();
   if (p.numerics.integrator == project::IntegratorKind::implicit) {
     thermal::BackwardEulerSettings settings;

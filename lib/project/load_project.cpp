@@ -18,6 +18,7 @@
 #include "project/load_pores.hpp"
 #include "project/load_reports.hpp"
 #include "project/load_basics.hpp"
+#include "project/load_zones.hpp"
 #include "project/load_shaft.hpp"
 #include "project/load_calibrate.hpp"
 #include "project/load_survey.hpp"
@@ -206,8 +207,9 @@ Numerics read_numerics(const Node& n, bool shaft, bool line_sinks) {
 // The domain block: the initial temperature; a shaft section's outer
 // radius and far field.
 void read_domain(const Node& domain, bool shaft, ShaftSection& section, Project& project) {
-  if (domain.object({"outer_radius", "initial_temperature", "far_field"})) {
+  if (domain.object({"outer_radius", "initial_temperature", "far_field", "initial_zones"})) {
     project.domain.initial_temperature = domain["initial_temperature"].required().number().value_or(0.0);
+    project.domain.initial_zones = detail::read_initial_zones(domain["initial_zones"]);
     if (shaft) {
       const Node outer = domain["outer_radius"].required();
       section.outer_radius = outer.positive().value_or(0.0);

@@ -175,8 +175,21 @@ struct ShaftSection {
 
 // ---- what every project has ----------------------------------------------------
 
+// A part of the domain that starts at its own temperature: a rectangle
+// [x0, y0, x1, y1], a circle [x, y, r] or a polygon's corners (m, in the
+// particles' coordinates).
+struct InitialZone {
+  enum class Shape { rectangle, circle, polygon } shape = Shape::rectangle;
+  std::vector<double> numbers;                 // rectangle, circle
+  std::vector<std::array<double, 2>> corners;  // polygon
+  double temperature = 0.0;
+  bool contains(double x, double y) const;
+};
+
 struct Domain {
   double initial_temperature = 0.0;
+  // Zones over the initial temperature; a later zone lies over an earlier one.
+  std::vector<InitialZone> initial_zones;
   // Far field of a shaft section: fixed temperature, or nullopt = adiabatic.
   std::optional<double> far_field_temperature;
 };
