@@ -1,5 +1,6 @@
 // Temperature schedules and soils (load_basics.hpp).
 #include "project/load_basics.hpp"
+#include "project/load_constituents.hpp"
 
 #include <algorithm>
 #include <array>
@@ -82,6 +83,11 @@ Soil detail::read_soil(const Node& n, std::vector<std::string>& warnings) {
   if (!n.json().is_object()) {
     n.problem("must be a built-in soil name or an object, got " + n.type());
     return soil;
+  }
+  if (n["porosity"].present()) {
+    for (const char* key : {"density", "unfrozen", "frozen", "latent_heat", "freezing_range"})
+      if (n[key].present()) n[key].problem(R"(computed from the constituents with "porosity"; give one or the other)");
+    return soil_from_constituents(n);
   }
   n.object({"name", "density", "unfrozen", "frozen", "latent_heat", "freezing_point", "freezing_range"});
   soil.name = n["name"].string().value_or("custom soil");

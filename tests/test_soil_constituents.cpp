@@ -1,0 +1,77 @@
+// Story: a soil given by what it is made of, InterFrost TH2's sand
+// (porosity 0.37; solid 2650 kg/m3, 835 J/(kg K), 9 W/(m K); water 1000,
+// 4182, 0.6, latent heat 3.34e5 J/kg; ice 920, 2060, 2.14), saturated, the
+// step freezing curve. Reference: the hand calculation per unit volume,
+//   rho C unfrozen = 0.63 * 2650 * 835 + 0.37 * 1000 * 4182 = 2 941 372.5 J/(m3 K)
+//   rho C frozen   = 0.63 * 2650 * 835 + 0.37 *  920 * 2060 = 2 095 256.5
+//   latent heat    = 0.37 * 1000 * 3.34e5                   = 1.2358e8 J/m3
+//   k arithmetic   = 0.63 * 9 + 0.37 * 0.6 = 5.892; frozen 0.63 * 9 + 0.37 * 2.14 = 6.4618
+//   k geometric    = 9^0.63 * 0.6^0.37 = 3.3937...; frozen 9^0.63 * 2.14^0.37 = 5.3437...
+// and the soil's fields given the old way with those values load the same
+// soil. Bad input names its path.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <string>
+
+#include "project/project.hpp"
+
+using namespace frostwall;
+
+namespace {
+
+project::Soil soil_of(const std::string& soil) {
+  return project::parse_project(R"({ "name": "c", "geometry": { "type": "rectangle", "width": 1, "height": 1,
+      "boundaries": { "left": "adiabatic", "right": "adiabatic", "top": "adiabatic", "bottom": "adiabatic" } },
+    "soil": )" + soil + R"(, "domain": { "initial_temperature": 5 }, "time": { "end": 1, "unit": "s" },
+    "numerics": { "spacing": 0.05 }, "output": { "directory": "unused" } })")
+      .soil;
+}
+
+const std::string th2 = R"({ "porosity": 0.37,
+    "solid": { "density": 2650, "heat_capacity": 835, "conductivity": 9 },
+    "water": { "density": 1000, "heat_capacity": 4182, "conductivity": 0.6, "latent_heat": 3.34e5 },
+    "ice":   { "density": 920,  "heat_capacity": 2060, "conductivity": 2.14 })";
+
+}  // namespace
+
+TEST_CASE("A soil from its constituents: volumetric heat, latent heat and both mixing rules by hand",
+          "[soil_constituents]") {
+  const auto arithmetic = soil_of(th2 + "}");
+  CHECK(arithmetic.density * arithmetic.unfrozen.heat_capacity == Approx(2941372.5).epsilon(1e-12));
+  CHECK(arithmetic.density * arithmetic.frozen.heat_capacity == Approx(2095256.5).epsilon(1e-12));
+  CHECK(arithmetic.density * arithmetic.latent_heat == Approx(1.2358e8).epsilon(1e-12));
+  CHECK(arithmetic.unfrozen.conductivity[0] == Approx(5.892).epsilon(1e-12));
+  CHECK(arithmetic.frozen.conductivity[1] == Approx(6.4618).epsilon(1e-12));
+  CHECK(arithmetic.freezing_point == 0.0);
+
+  const auto geometric = soil_of(th2 + R"(, "conductivity_mixing": "geometric" })");
+  CHECK(geometric.unfrozen.conductivity[0] == Approx(std::exp(0.63 * std::log(9.0) + 0.37 * std::log(0.6))));
+  CHECK(geometric.frozen.conductivity[0] == Approx(std::exp(0.63 * std::log(9.0) + 0.37 * std::log(2.14))));
+
+  // The same soil given the old way.
+  const double rho = 0.63 * 2650 + 0.37 * 1000;
+  const auto old = soil_of(R"({ "density": )" + std::to_string(rho) + R"(,
+      "unfrozen": { "conductivity": 5.892, "heat_capacity": )" +
+                           std::to_string(2941372.5 / rho) + R"( },
+      "frozen": { "conductivity": 6.4618, "heat_capacity": )" +
+                           std::to_string(2095256.5 / rho) + R"( },
+      "latent_heat": )" + std::to_string(1.2358e8 / rho) +
+                           "}");
+  CHECK(old.unfrozen.heat_capacity == Approx(arithmetic.unfrozen.heat_capacity).epsilon(1e-6));
+  CHECK(old.latent_heat == Approx(arithmetic.latent_heat).epsilon(1e-6));
+
+  try {
+    soil_of(R"({ "porosity": 1.2, "density": 2000, "solid": { "density": 2650 }, "water": {}, "ice": {},
+                 "conductivity_mixing": "harmonic" })");
+    FAIL("bad constituents were accepted");
+  } catch (const project::ProjectError& e) {
+    const std::string text = e.what();
+    for (const char* path :
+         {"soil.porosity: must be below 1", "soil.density: computed from the constituents",
+          "soil.solid.heat_capacity: required", "soil.water.latent_heat: required", "soil.conductivity_mixing:"}) {
+      INFO(text);
+      CHECK(text.find(path) != std::string::npos);
+    }
+  }
+}
