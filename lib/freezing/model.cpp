@@ -51,10 +51,6 @@ double default_spacing(const project::Project& p) {
 
 double resolved_spacing(const project::Project& p) { return p.numerics.spacing.value_or(default_spacing(p)); }
 
-// Brine behind a film at the pipe walls, or pipes held at the heat they
-// draw: each pipe's wall particles form a group (the nearest pipe centre),
-// with the length of its wall inside the simulated section (a pipe on a
-// mirror line has half of it there).
 namespace {
 // The share of the wall of the pipe centred at (x, y) inside the section.
 double wall_share(const geometry::ShaftScene& scene, double x, double y) {
@@ -68,9 +64,12 @@ double wall_share(const geometry::ShaftScene& scene, double x, double y) {
   return double(inside) / samples;
 }
 
-// h is given, or follows from the annulus flow (a transitional film is
-// uncertain: the run warns).
-void attach_brine(const project::Pipe& pipe, geometry::ShaftScene& scene, std::vector<std::string>& warnings) {
+// Brine behind a film at the pipe walls, or pipes held at the heat they
+// draw: each pipe's wall particles form a group (the nearest pipe centre),
+// with the length of its wall inside the simulated section (a pipe on a
+// mirror line has half of it there). h is given, or follows from the
+// annulus flow (a transitional film is uncertain: the run warns).
+void attach_wall_balance(const project::Pipe& pipe, geometry::ShaftScene& scene, std::vector<std::string>& warnings) {
   if (pipe.boundary != project::PipeBoundary::brine && !pipe.heat_extraction) return;
   const auto& P = scene.particles;
   geometry::FilmWall film;
@@ -156,7 +155,7 @@ Model build_cloud(const project::Project& p) {
       geometry::unfold_to_full_ring(*scene);
       scene->notes.push_back("symmetry: off (numerics.symmetry): the wedge's particles mirrored around the full ring");
     }
-    attach_brine(section.pipe, *scene, m.warnings);
+    attach_wall_balance(section.pipe, *scene, m.warnings);
     m.shaft = scene.get();
     m.scene = std::move(scene);
   }
