@@ -51,32 +51,22 @@ void BrineLog::after_step(const thermal::ThermalModel& model, double t) {
 }
 
 nlohmann::json BrineLog::finish(const std::filesystem::path& out) const {
-  if (drawn_heat_) {
-    // The wall's temperature at the heat drawn: pipe_wall.csv and the summary's "pipe_wall".
-    std::string csv = "day,pipe_wall_C,heat_per_metre_W_per_m\n";
-    nlohmann::json series = nlohmann::json::array();
-    for (const auto& r : rows_) {
-      csv += fmt::format("{:.6g},{:.6g},{:.6g}\n", r.day, r.wall, r.heat_per_metre);
-      series.push_back({r.day, r.wall, r.heat_per_metre});
-    }
-    io::write_text_file(out / "pipe_wall.csv", csv);
-    return {{"series", series},
-            {"series_columns", {"day", "pipe_wall_C", "heat_per_metre_W_per_m"}},
-            {"extracted", extracted_},
-            {"unit", "J/m of the simulated section"}};
-  }
-  std::string csv = "day,brine_C,pipe_wall_C,heat_per_metre_W_per_m\n";
+  // Held at the heat drawn there is no brine column, and no film.
+  std::string csv = drawn_heat_ ? "day,pipe_wall_C,heat_per_metre_W_per_m\n"
+                                : "day,brine_C,pipe_wall_C,heat_per_metre_W_per_m\n";
   nlohmann::json series = nlohmann::json::array();
   for (const auto& r : rows_) {
-    csv += fmt::format("{:.6g},{:.6g},{:.6g},{:.6g}\n", r.day, r.brine, r.wall, r.heat_per_metre);
+    csv += drawn_heat_ ? fmt::format("{:.6g},", r.day) : fmt::format("{:.6g},{:.6g},", r.day, r.brine);
+    csv += fmt::format("{:.6g},{:.6g}\n", r.wall, r.heat_per_metre);
     series.push_back({r.day, r.wall, r.heat_per_metre});
   }
-  io::write_text_file(out / "brine.csv", csv);
-  nlohmann::json brine = {{"heat_transfer_coefficient", h_},
-                          {"series", series},
+  io::write_text_file(out / (std::string(summary_key()) + ".csv"), csv);
+  nlohmann::json brine = {{"series", series},
                           {"series_columns", {"day", "pipe_wall_C", "heat_per_metre_W_per_m"}},
-                          {"extracted_by_film", extracted_},
+                          {drawn_heat_ ? "extracted" : "extracted_by_film", extracted_},
                           {"unit", "J/m of the simulated section"}};
+  if (drawn_heat_) return brine;
+  brine["heat_transfer_coefficient"] = h_;
   if (pipe_.annulus) {
     const auto film = design::annulus_film(*pipe_.annulus, pipe_.diameter);
     brine["annulus"] = {{"reynolds", film.reynolds},

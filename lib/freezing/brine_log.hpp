@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "project/project.hpp"
+#include "summary/summary.hpp"
 #include "thermal/thermal_model.hpp"
 
 namespace frostwall::freezing {
@@ -23,7 +24,10 @@ class BrineLog {
   BrineLog(const project::Pipe& pipe, const thermal::ThermalModel& model, std::size_t boundary,
            std::vector<double> sample_times);
   void after_step(const thermal::ThermalModel& model, double t);
-  // Writes brine.csv (pipe_wall.csv); returns the summary's "brine" ("pipe_wall") block.
+  // The summary's block and the CSV file's stem: "brine", or "pipe_wall"
+  // for pipes held at the heat they draw.
+  const char* summary_key() const { return drawn_heat_ ? summary::keys::pipe_wall : summary::keys::brine; }
+  // Writes <summary_key>.csv; returns the summary's block.
   nlohmann::json finish(const std::filesystem::path& out) const;
 
  private:

@@ -279,9 +279,7 @@ nlohmann::ordered_json HeatRun::summary(const thermal::TimeLoopResult& loop) con
     for (const char* key : {keys::wall, keys::design, keys::monitoring, keys::interface})
       if (parts.contains(key)) summary[key] = parts[key];
     summary[keys::thinnest_angle_deg] = parts.value(keys::thinnest_angle_deg, nlohmann::json());
-    if (brine_)
-      summary[std::get<project::ShaftSection>(p_.geometry).pipe.heat_extraction ? keys::pipe_wall : keys::brine] =
-          brine_->finish(out_);
+    if (brine_) summary[brine_->summary_key()] = brine_->finish(out_);
     const auto& w = built_.shaft->wedge;
     summary[keys::wedge] = {{"mirror_lines", w.mirror_count},
                             {"start_deg", w.start_angle * 180 / M_PI},
