@@ -4,7 +4,8 @@
 // step freezing curve. Reference: the hand calculation per unit volume,
 //   rho C unfrozen = 0.63 * 2650 * 835 + 0.37 * 1000 * 4182 = 2 941 372.5 J/(m3 K)
 //   rho C frozen   = 0.63 * 2650 * 835 + 0.37 *  920 * 2060 = 2 095 256.5
-//   latent heat    = 0.37 * 1000 * 3.34e5                   = 1.2358e8 J/m3
+//   latent heat    = 0.37 *  920 * 3.34e5                   = 1.136936e8 J/m3
+//                    (the pore's mass when full of ice freezes)
 //   k arithmetic   = 0.63 * 9 + 0.37 * 0.6 = 5.892; frozen 0.63 * 9 + 0.37 * 2.14 = 6.4618
 //   k geometric    = 9^0.63 * 0.6^0.37 = 3.3937...; frozen 9^0.63 * 2.14^0.37 = 5.3437...
 // and the soil's fields given the old way with those values load the same
@@ -40,7 +41,7 @@ TEST_CASE("A soil from its constituents: volumetric heat, latent heat and both m
   const auto arithmetic = soil_of(th2 + "}");
   CHECK(arithmetic.density * arithmetic.unfrozen.heat_capacity == Approx(2941372.5).epsilon(1e-12));
   CHECK(arithmetic.density * arithmetic.frozen.heat_capacity == Approx(2095256.5).epsilon(1e-12));
-  CHECK(arithmetic.density * arithmetic.latent_heat == Approx(1.2358e8).epsilon(1e-12));
+  CHECK(arithmetic.density * arithmetic.latent_heat == Approx(1.136936e8).epsilon(1e-12));
   CHECK(arithmetic.unfrozen.conductivity[0] == Approx(5.892).epsilon(1e-12));
   CHECK(arithmetic.frozen.conductivity[1] == Approx(6.4618).epsilon(1e-12));
   CHECK(arithmetic.freezing_point == 0.0);
@@ -56,7 +57,7 @@ TEST_CASE("A soil from its constituents: volumetric heat, latent heat and both m
                            std::to_string(2941372.5 / rho) + R"( },
       "frozen": { "conductivity": 6.4618, "heat_capacity": )" +
                            std::to_string(2095256.5 / rho) + R"( },
-      "latent_heat": )" + std::to_string(1.2358e8 / rho) +
+      "latent_heat": )" + std::to_string(1.136936e8 / rho) +
                            "}");
   CHECK(old.unfrozen.heat_capacity == Approx(arithmetic.unfrozen.heat_capacity).epsilon(1e-6));
   CHECK(old.latent_heat == Approx(arithmetic.latent_heat).epsilon(1e-6));

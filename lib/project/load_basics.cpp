@@ -85,11 +85,12 @@ Soil detail::read_soil(const Node& n, std::vector<std::string>& warnings) {
     return soil;
   }
   if (n["porosity"].present()) {
-    for (const char* key : {"density", "unfrozen", "frozen", "latent_heat", "freezing_range"})
+    for (const char* key : {"density", "unfrozen", "frozen", "latent_heat"})
       if (n[key].present()) n[key].problem(R"(computed from the constituents with "porosity"; give one or the other)");
     return soil_from_constituents(n);
   }
-  n.object({"name", "density", "unfrozen", "frozen", "latent_heat", "freezing_point", "freezing_range"});
+  n.object(
+      {"name", "density", "unfrozen", "frozen", "latent_heat", "freezing_point", "freezing_range", "freezing_curve"});
   soil.name = n["name"].string().value_or("custom soil");
   soil.density = n["density"].required().positive().value_or(0.0);
   for (const auto& [key, phase] : {std::pair{"unfrozen", &soil.unfrozen}, std::pair{"frozen", &soil.frozen}}) {
@@ -101,7 +102,7 @@ Soil detail::read_soil(const Node& n, std::vector<std::string>& warnings) {
   // Zero is allowed: a soil without phase change (pure conduction checks).
   soil.latent_heat = n["latent_heat"].required().non_negative().value_or(0.0);
   soil.freezing_point = n["freezing_point"].number().value_or(0.0);
-  soil.freezing_range = n["freezing_range"].non_negative().value_or(0.0);
+  read_freezing_curve(n, soil, 0.0);
   if (soil.latent_heat > pure_water_latent_heat)
     warnings.push_back(
         fmt::format("{}: {} J/kg is more than pure water's 334 kJ/kg; probably a slipped decimal point ({}?)",

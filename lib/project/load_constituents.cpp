@@ -1,6 +1,8 @@
 #include "project/load_constituents.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <string_view>
 
 namespace frostwall::project::detail {
 
@@ -33,8 +35,8 @@ Constituent read_constituent(const Node& n, bool with_latent_heat) {
 Soil soil_from_constituents(const Node& n) {
   Soil soil;
   // (The other soil's fields are refused by the caller, one line each.)
-  n.object({"name", "porosity", "solid", "water", "ice", "conductivity_mixing", "freezing_point", "density", "unfrozen",
-            "frozen", "latent_heat", "freezing_range"});
+  n.object({"name", "porosity", "solid", "water", "ice", "conductivity_mixing", "freezing_point", "freezing_curve",
+            "density", "unfrozen", "frozen", "latent_heat", "freezing_range"});
   soil.name = n["name"].string().value_or("soil from its constituents");
   const double porosity = n["porosity"].required().positive().value_or(0.0);
   if (porosity >= 1.0) n["porosity"].problem("must be below 1, got " + n["porosity"].shown());
@@ -56,9 +58,67 @@ Soil soil_from_constituents(const Node& n) {
   soil.frozen.heat_capacity = (solid_heat + porosity * ice.density * ice.heat_capacity) / soil.density;
   soil.unfrozen.conductivity = {mix(water.conductivity), mix(water.conductivity)};
   soil.frozen.conductivity = {mix(ice.conductivity), mix(ice.conductivity)};
-  soil.latent_heat = porosity * water.density * latent / soil.density;
+  soil.latent_heat = porosity * ice.density * latent / soil.density;
   soil.freezing_point = n["freezing_point"].number().value_or(0.0);
+  soil.geometric_conductivity = geometric;
+  read_freezing_curve(n, soil, porosity * water.density / ((1.0 - porosity) * solid.density));
   return soil;
+}
+
+void read_freezing_curve(const Node& soil_node, Soil& soil, double water_content) {
+  const Node n = soil_node["freezing_curve"];
+  if (soil_node["freezing_range"].present()) {
+    if (n.present())
+      soil_node["freezing_range"].problem(R"(give the range as freezing_curve {"model": "linear", "range": ...})");
+    soil.freezing_range = soil_node["freezing_range"].non_negative().value_or(0.0);
+    if (soil.freezing_range > 0.0) soil.freezing_curve.model = CurveModel::linear;
+  }
+  if (!n.present() || !n.object({"model", "range", "width", "residual_saturation", "alpha", "beta", "water_content"}))
+    return;
+  auto& c = soil.freezing_curve;
+  c.model = n["model"]
+                .required()
+                .choice<CurveModel>("freezing curve", {{"step", CurveModel::step},
+                                                       {"linear", CurveModel::linear},
+                                                       {"exponential", CurveModel::exponential},
+                                                       {"power", CurveModel::power}})
+                .value_or(CurveModel::step);
+  auto refuse_others = [&](std::initializer_list<const char*> own) {
+    for (const char* key : {"range", "width", "residual_saturation", "alpha", "beta", "water_content"})
+      if (n[key].present() &&
+          std::find_if(own.begin(), own.end(), [&](const char* o) { return std::string_view(o) == key; }) == own.end())
+        n[key].problem("not a field of the " + n["model"].json().get<std::string>() + " curve");
+  };
+  switch (c.model) {
+    case CurveModel::step: refuse_others({}); break;
+    case CurveModel::linear:
+      refuse_others({"range"});
+      soil.freezing_range = n["range"].required().positive().value_or(0.0);
+      break;
+    case CurveModel::exponential:
+      refuse_others({"width", "residual_saturation"});
+      c.width = n["width"].required().positive().value_or(1.0);
+      c.residual_saturation = n["residual_saturation"].non_negative().value_or(0.0);
+      if (c.residual_saturation >= 0.5)
+        n["residual_saturation"].problem(
+            "must be below 0.5 (ground counts as frozen once half its water is ice), got " +
+            n["residual_saturation"].shown());
+      break;
+    case CurveModel::power: {
+      refuse_others({"alpha", "beta", "water_content"});
+      c.alpha = n["alpha"].required().positive().value_or(1.0);
+      c.beta = n["beta"].required().number().value_or(-1.0);
+      if (!(c.beta < 0.0))
+        n["beta"].problem("must be negative (less water stays liquid the colder), got " + n["beta"].shown());
+      const Node w = water_content > 0.0 ? n["water_content"] : n["water_content"].required();
+      c.water_content = w.positive().value_or(water_content > 0.0 ? water_content : 1.0);
+      // The share still liquid 60 K below the onset (the table's end).
+      const double onset = std::pow(c.water_content / c.alpha, 1.0 / c.beta);
+      if (c.beta < 0.0 && c.alpha * std::pow(onset + 60.0, c.beta) / c.water_content >= 0.5)
+        n.problem("keeps half its water liquid 60 K below its onset: it never counts as frozen");
+      break;
+    }
+  }
 }
 
 }  // namespace frostwall::project::detail

@@ -30,6 +30,20 @@ struct PhaseProperties {
   bool anisotropic() const { return conductivity[0] != conductivity[1]; }
 };
 
+// How the pore water freezes below the freezing point (docs/reference/soil.md):
+// step (all at Tf), linear (over freezing_range), exponential (InterFrost:
+// S_w = S_r + (1 - S_r) exp(-((T - Tf)/W)^2)) or power (Anderson and Tice:
+// unfrozen water content w_u = alpha theta^beta, theta = Tf - T in K).
+enum class CurveModel { step, linear, exponential, power };
+struct FreezingCurve {
+  CurveModel model = CurveModel::step;
+  double width = 0.0;                // exponential: W, K
+  double residual_saturation = 0.0;  // exponential: S_r
+  double alpha = 0.0, beta = 0.0;    // power: kg water per kg solid at theta = 1 K, and the exponent
+  double water_content = 0.0;        // power: kg water per kg solid when unfrozen
+  bool smooth() const { return model == CurveModel::exponential || model == CurveModel::power; }
+};
+
 struct Soil {
   std::string name;
   double density = 0.0;  // kg/m3
@@ -38,6 +52,14 @@ struct Soil {
   double latent_heat = 0.0;     // J per kg of soil
   double freezing_point = 0.0;  // degC
   double freezing_range = 0.0;  // K; latent heat released over [Tf - range, Tf]
+  // The curve; step and linear follow freezing_range. Exponential and power
+  // release the latent heat as the unfrozen water share falls: the share
+  // is the liquid fraction, and heat capacity (and, for a soil from its
+  // constituents, conductivity) follow it.
+  FreezingCurve freezing_curve;
+  // Conductivity between frozen and unfrozen: geometric in the liquid
+  // fraction (a soil from its constituents mixed geometrically), else linear.
+  bool geometric_conductivity = false;
 };
 
 // ---- temperatures that may change in time ----------------------------------

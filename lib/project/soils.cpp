@@ -18,7 +18,8 @@ const std::pair<const char*, Soil> builtin_soils[] = {
       .unfrozen = isotropic(1.86, 1465.1),
       .frozen = isotropic(2.56, 1088.4),
       .latent_heat = 52875.8,
-      .freezing_point = 0.0}},
+      .freezing_point = 0.0,
+      .freezing_curve = {}}},
     // Section 3; the paper prints L = 530718, a slipped decimal point (more
     // than pure water's 334 kJ/kg).
     {"clay",
@@ -27,7 +28,8 @@ const std::pair<const char*, Soil> builtin_soils[] = {
       .unfrozen = isotropic(1.51, 1548.8),
       .frozen = isotropic(2.05, 1172.1),
       .latent_heat = 53071.8,
-      .freezing_point = 0.0}},
+      .freezing_point = 0.0,
+      .freezing_curve = {}}},
     // Section 2.2, the soil column.
     {"silty_clay",
      {.name = "silty clay",
@@ -35,7 +37,8 @@ const std::pair<const char*, Soil> builtin_soils[] = {
       .unfrozen = isotropic(3.05, 2124.0),
       .frozen = isotropic(2.68, 2508.5),
       .latent_heat = 33500.0,
-      .freezing_point = -0.25}},
+      .freezing_point = -0.25,
+      .freezing_curve = {}}},
 };
 
 }  // namespace

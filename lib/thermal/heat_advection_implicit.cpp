@@ -17,8 +17,9 @@ namespace frostwall::thermal {
 namespace {
 
 // The H that solves V H + c T(H) = R, c >= 0: T(H) is linear on each of
-// the law's three pieces (frozen, freezing, unfrozen) and the left side
-// rises with H, so the root is found on the piece where it changes sign.
+// the law's three pieces (frozen, freezing, unfrozen; a smooth curve's on
+// each segment of its table) and the left side rises with H, so the root is
+// found on the piece where it changes sign (by bisection on a table).
 double solve_particle(const PhaseChangeLaw& law, double V, double c, double R) {
   const double Hl = law.latent_enthalpy();
   auto g = [&](double H) { return V * H + c * law.temperature(H) - R; };
@@ -28,6 +29,15 @@ double solve_particle(const PhaseChangeLaw& law, double V, double c, double R) {
     return -g0 / (V + c * slope);
   }
   const double gl = g(Hl);
+  if (gl >= 0.0 && law.tabulated()) {  // a smooth curve: g is linear on each segment of its table
+    double lo = 0.0, hi = Hl, g_lo = g0, g_hi = gl;
+    for (int it = 0; it < 60 && hi - lo > 1e-12 * Hl; ++it) {
+      const double mid = 0.5 * (lo + hi), gm = g(mid);
+      (gm < 0.0 ? lo : hi) = mid;
+      (gm < 0.0 ? g_lo : g_hi) = gm;
+    }
+    return g_hi > g_lo ? lo + (hi - lo) * (-g_lo) / (g_hi - g_lo) : lo;
+  }
   if (gl >= 0.0) return Hl > 0.0 ? Hl * (-g0) / (gl - g0) : 0.0;  // freezing: g linear between the kinks
   const double slope = law.temperature_slope(Hl, 1.0);
   return Hl - gl / (V + c * slope);  // unfrozen
