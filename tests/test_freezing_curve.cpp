@@ -13,24 +13,15 @@
 #include <string>
 
 #include "project/project.hpp"
+#include "soil_text.hpp"
 #include "thermal/phase_change.hpp"
 
 using namespace frostwall;
 
 namespace {
 
-project::Soil soil_of(const std::string& soil) {
-  return project::parse_project(R"({ "name": "c", "geometry": { "type": "rectangle", "width": 1, "height": 1,
-      "boundaries": { "left": "adiabatic", "right": "adiabatic", "top": "adiabatic", "bottom": "adiabatic" } },
-    "soil": )" + soil + R"(, "domain": { "initial_temperature": 5 }, "time": { "end": 1, "unit": "s" },
-    "numerics": { "spacing": 0.05 }, "output": { "directory": "unused" } })")
-      .soil;
-}
-
-const std::string th2 = R"({ "porosity": 0.37,
-    "solid": { "density": 2650, "heat_capacity": 835, "conductivity": 9 },
-    "water": { "density": 1000, "heat_capacity": 4182, "conductivity": 0.6, "latent_heat": 3.34e5 },
-    "ice":   { "density": 920,  "heat_capacity": 2060, "conductivity": 2.14 }, )";
+const std::string th2 = testing::th2_constituents + ", ";
+using testing::soil_of;
 
 double simpson(const std::function<double(double)>& g, double a, double b) {
   const int n = 200000;
