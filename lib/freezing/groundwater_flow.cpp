@@ -18,15 +18,37 @@ using project::seconds_per_day;
 
 namespace {
 
-// The potential each fixed particle holds: -q . x on the far field, none
-// (no flow) on the pipes.
-std::vector<double> fixed_potentials(const project::Groundwater& water, const Model& m) {
+// The potential each fixed particle holds: on a shaft section -q . x on the
+// far field, none (no flow) on the pipes; on a rectangle K h on a face with
+// a head, continued beyond it along the straight head between it and the
+// opposite face when that has a head too (exact for the flow before any
+// ice), none on faces without one.
+std::vector<double> fixed_potentials(const project::Project& p, const Model& m) {
+  const auto& water = *p.groundwater;
   const auto& P = m.particles();
   std::vector<double> fixed;
-  for (std::size_t j = P.n_free; j < P.size(); ++j)
-    fixed.push_back(P.boundary[j] == m.shaft->far_field_boundary
-                        ? -(water.darcy_flux[0] * P.position[j][0] + water.darcy_flux[1] * P.position[j][1])
-                        : std::nan(""));
+  const auto* rect = std::get_if<project::Rectangle>(&p.geometry);
+  const double K = water.conductivity_m_per_s();
+  for (std::size_t j = P.n_free; j < P.size(); ++j) {
+    const auto& x = P.position[j];
+    if (!rect) {
+      fixed.push_back(P.boundary[j] == m.shaft->far_field_boundary
+                          ? -(water.darcy_flux[0] * x[0] + water.darcy_flux[1] * x[1])
+                          : std::nan(""));
+      continue;
+    }
+    const std::string& side = m.scene->boundaries[P.boundary[j]].name;
+    const int s = side == "left" ? 0 : side == "right" ? 1 : side == "bottom" ? 2 : 3;
+    const auto& head = rect->heads[s];
+    const auto& opposite = rect->heads[s ^ 1];
+    if (!head) fixed.push_back(std::nan(""));
+    else if (!opposite) fixed.push_back(K * *head);
+    else {
+      const double length = s < 2 ? rect->width : rect->height, along = s < 2 ? x[0] : x[1];
+      const double low = s % 2 == 0 ? *head : *opposite, high = s % 2 == 0 ? *opposite : *head;
+      fixed.push_back(K * (low + (high - low) * along / length));
+    }
+  }
   return fixed;
 }
 
@@ -42,15 +64,15 @@ thermal::AdvectionScheme scheme_of(project::Advection a) {
 
 }  // namespace
 
-GroundwaterFlow::GroundwaterFlow(const project::Groundwater& water, Model& m)
-    : water_(water),
-      law_(groundwater::permeability_law(water.law)),
+GroundwaterFlow::GroundwaterFlow(const project::Project& p, Model& m)
+    : water_(*p.groundwater),
+      law_(groundwater::permeability_law(water_.law)),
       conduction_(std::move(m.integrator)),
       name_(std::string(conduction_->name()) + "+groundwater"),
-      darcy_(m.model->pairs(), m.particles().volume, fixed_potentials(water, m)),
-      heat_(water.water_density * water.water_heat_capacity, {}, scheme_of(water.advection)),
+      darcy_(m.model->pairs(), m.particles().volume, fixed_potentials(p, m)),
+      heat_(water_.water_density * water_.water_heat_capacity, {}, scheme_of(water_.advection)),
       k_(m.particles().size(), 1.0) {
-  if (water.flows_coupled()) {
+  if (water_.flows_coupled()) {
     auto* implicit = thermal::find_integrator<thermal::BackwardEuler>(conduction_.get());
     if (!implicit) throw std::logic_error("GroundwaterFlow: the coupled scheme needs the backward-Euler integrator");
     implicit->couple(&heat_);
@@ -60,7 +82,7 @@ GroundwaterFlow::GroundwaterFlow(const project::Groundwater& water, Model& m)
 }
 
 void GroundwaterFlow::solve_if_changed(const thermal::ThermalModel& model) {
-  if (water_.speed() == 0.0 && solves_ > 0) return;  // still water: the potential stays 0
+  if (!water_.flows() && solves_ > 0) return;  // still water: the potential stays 0
   const auto& f = model.liquid_fraction();
   for (std::size_t i = 0; i < model.free_count(); ++i) k_[i] = law_.relative(f[i]);
   if (!k_solved_.empty()) {
@@ -68,10 +90,16 @@ void GroundwaterFlow::solve_if_changed(const thermal::ThermalModel& model) {
     // throughflow weighted by its permeability's relative change (at most
     // 1) since the last solve. Ice closing a gap changes few particles but
     // those that carry the water; a particle frozen off long ago none.
+    // A particle that thaws carries what its new permeability lets
+    // through, at most the mean particle's share.
     double changed = 0.0, total = 0.0;
+    for (std::size_t i = 0; i < model.free_count(); ++i) total += throughflow_[i];
+    const double mean = total / static_cast<double>(model.free_count());
     for (std::size_t i = 0; i < model.free_count(); ++i) {
-      total += throughflow_[i];
-      if (k_[i] != k_solved_[i]) changed += throughflow_[i] * std::min(1.0, std::abs(k_[i] / k_solved_[i] - 1.0));
+      if (k_[i] == k_solved_[i]) continue;
+      const double ratio = k_[i] / k_solved_[i];
+      const double carried = ratio > 1.0 ? std::min(mean, throughflow_[i] * ratio) : throughflow_[i];
+      changed += std::max(carried, throughflow_[i]) * std::min(1.0, std::abs(ratio - 1.0));
     }
     if (changed <= water_.resolve_tolerance * total) return;
   }
@@ -88,12 +116,12 @@ void GroundwaterFlow::solve_if_changed(const thermal::ThermalModel& model) {
 
 double GroundwaterFlow::preferred_step(const thermal::ThermalModel& model) const {
   const double conduction = conduction_->preferred_step(model);
-  if (water_.speed() == 0.0) return conduction;
+  if (!water_.flows()) return conduction;
   return std::min(conduction, courant_ * heat_.stable_step(model));  // unbounded when implicit
 }
 
 std::vector<double> GroundwaterFlow::advance(thermal::ThermalModel& model, double t, double dt) {
-  if (water_.speed() == 0.0) return conduction_->advance(model, t, dt);  // still water carries nothing
+  if (!water_.flows()) return conduction_->advance(model, t, dt);  // still water carries nothing
   solve_if_changed(model);
   if (heat_.scheme() == thermal::AdvectionScheme::coupled)
     return conduction_->advance(model, t, dt);  // both in one step

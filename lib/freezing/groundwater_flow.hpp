@@ -5,7 +5,8 @@
 // heat, the conduction integrator's step, the other half). The flow is
 // solved again when the share of the water whose path ice has changed since
 // the last solve exceeds groundwater.resolve_tolerance. Pipes carry no
-// flow; the far field holds the regional potential -q . x. An Integrator
+// flow; the far field holds the regional potential -q . x, a rectangle's
+// faces their heads. An Integrator
 // itself, so the time loop, closure and energy balance see one step.
 #pragma once
 
@@ -31,7 +32,8 @@ struct Model;
 class GroundwaterFlow final : public thermal::Integrator {
  public:
   // Takes over the model's conduction integrator.
-  GroundwaterFlow(const project::Groundwater& water, Model& model);
+  // p.groundwater is set.
+  GroundwaterFlow(const project::Project& p, Model& model);
   // The conduction's step, and no longer than the water takes to carry heat
   // across a particle (advective Courant number 1): the splitting's error
   // grows with the distance the heat front moves within one step.
@@ -41,6 +43,9 @@ class GroundwaterFlow final : public thermal::Integrator {
   Integrator* wrapped() const override { return conduction_.get(); }
 
   int flow_solves() const { return solves_; }
+  // The water entering through the boundaries at the last solve, m^2/s per
+  // metre of depth (what leaves not counted).
+  double inflow_from_boundary() const { return darcy_.inflow_from_boundary(true); }
   // Q_e of every pair at the last solve (groundwater::DarcyCloud).
   const std::vector<double>& pair_flux() const { return darcy_.pair_flux(); }
   // The VTU's flow fields at the last solve: "darcy_flux" (m/s, a vector;

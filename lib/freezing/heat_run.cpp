@@ -12,6 +12,7 @@
 
 #include "freezing/brine_log.hpp"
 #include "freezing/closure_tracker.hpp"
+#include "freezing/balance_log.hpp"
 #include "freezing/groundwater_flow.hpp"
 #include "freezing/output_frames.hpp"
 #include "freezing/plain_results.hpp"
@@ -80,6 +81,7 @@ class HeatRun {
   std::unique_ptr<ShaftResults> results_;
   std::unique_ptr<PlainResults> plain_;
   std::unique_ptr<BrineLog> brine_;
+  std::optional<BalanceLog> balance_;  // plain geometries
   double heat_before_ = 0.0;
   std::size_t next_sample_ = 0;
   double t_before_ = 0.0;
@@ -113,12 +115,14 @@ HeatRun::HeatRun(const Project& p, Model& built, const project::RunOptions& opti
   // Flowing groundwater: the conduction integrator wrapped with the flow
   // and the heat it carries.
   if (p.groundwater) {
-    gaps_.emplace(built.particles(), geometry::pipe_positions(std::get<project::ShaftSection>(p.geometry).layout),
-                  built.shaft->pipe_radius);
-    auto wrapped = std::make_unique<GroundwaterFlow>(*p.groundwater, built);
+    auto wrapped = std::make_unique<GroundwaterFlow>(p, built);
     flow_ = wrapped.get();
     built.integrator = std::move(wrapped);
-    gaps_->observe_flow(0.0, built.particles(), built.model->pairs(), flow_->pair_flux());
+    if (built.shaft) {
+      gaps_.emplace(built.particles(), geometry::pipe_positions(std::get<project::ShaftSection>(p.geometry).layout),
+                    built.shaft->pipe_radius);
+      gaps_->observe_flow(0.0, built.particles(), built.model->pairs(), flow_->pair_flux());
+    }
     flow_observed_ = flow_->flow_solves();
   }
   // Closure of a shaft section (a fully frozen path) and the day the frozen
@@ -127,7 +131,13 @@ HeatRun::HeatRun(const Project& p, Model& built, const project::RunOptions& opti
   if (built.shaft) closure_.emplace(built, p.time.end, longest_step);
   times_ = built.shaft ? sample_times(p.time, 0) : series_;
   if (built.shaft) results_ = std::make_unique<ShaftResults>(p, built);
-  else plain_ = std::make_unique<PlainResults>(p, built);
+  else {
+    plain_ = std::make_unique<PlainResults>(p, built);
+    balance_.emplace(p.soil.porosity > 0.0 ? p.soil.porosity
+                     : p.groundwater       ? p.groundwater->law.porosity
+                                           : 0.0,
+                     unit_);
+  }
   if (extension_ && extension_->solid()) plain_->attach(extension_->solid());
   if (built.shaft && !p.monitoring.empty()) thermometers_.emplace(p, built);
   heat_before_ = built.model->stored_heat();
@@ -159,6 +169,7 @@ void HeatRun::after_step(const thermal::ThermalModel& m, double t) {
     frozen_area_.add(t / project::seconds_per_day, area);
   }
   if (closure_) closure_->after_step(m, t, gaps_ ? &*gaps_ : nullptr);
+  if (balance_) balance_->after_step(m, t);
   if (brine_) brine_->after_step(m, t);
   if (thermometers_) thermometers_->after_step(m, t);
   if (extension_) extension_->after_step(m, t);
@@ -205,6 +216,7 @@ void HeatRun::at_output(const thermal::ThermalModel& m, double t) {
   if (results_ && is_snapshot) results_->snapshot(t, m, out_, stem);
   if (extension_) extension_->at_output(m, t, is_snapshot, out_, stem);
   if (plain_) plain_->sample(t, m);
+  if (balance_) balance_->sample(m, t);
   if (plain_ && is_snapshot) plain_->snapshot(t, m, out_, stem);
   if (p_.output.vtk && is_snapshot) write_snapshot(m, t, stem);
 }
@@ -291,6 +303,9 @@ nlohmann::ordered_json HeatRun::summary(const thermal::TimeLoopResult& loop) con
     for (const char* key : {keys::front_along, keys::monitoring, keys::monitoring_solid, keys::interface})
       if (parts.contains(key)) summary[key] = parts[key];
     if (extension_) extension_->summarise(summary, out_);
+    summary[keys::balance] = balance_->finish(out_);
+    const auto thaw = balance_->thaw_time();
+    summary[keys::thaw_time] = thaw ? nlohmann::json(*thaw) : nlohmann::json(nullptr);
   }
   const auto& P = built_.particles();
   std::vector<std::string> warnings = p_.warnings;
@@ -326,9 +341,12 @@ nlohmann::ordered_json HeatRun::summary(const thermal::TimeLoopResult& loop) con
   if (const auto* section = std::get_if<project::ShaftSection>(&p_.geometry))
     summary[keys::run]["pipe_model"] = project::pipe_model_name(section->pipe.model);
   if (extension_) extension_->run_facts(summary[keys::run]);
-  if (flow_)
+  if (flow_ && gaps_)
     summary[keys::groundwater] =
         groundwater_summary(*p_.groundwater, *flow_, *gaps_, frozen_area_, closure_->closure_time());
+  else if (flow_)
+    summary[keys::groundwater] = {{"flow_solves", flow_->flow_solves()},
+                                  {"inflow_m2_per_s", flow_->inflow_from_boundary()}};
   return summary;
 }
 

@@ -185,6 +185,43 @@ Model copy_cloud(const Model& cloud, const project::Project& p) {
 
 Model build_model(const project::Project& p) { return build_model(p, build_cloud(p)); }
 
+namespace {
+// Zones that start at their own temperature (a later one over an earlier
+// one): each particle's enthalpy is the mean over its cell (a square of its
+// volume, 8 x 8 points), so the heat stored at the start is the zones'
+// heat to within the sampling of the cells an outline cuts.
+void start_in_zones(Model& m, const project::Project& p) {
+  constexpr int n = 8;
+  const auto& zones = p.domain.initial_zones;
+  const auto& P = m.particles();
+  for (std::size_t i = 0; i < m.model->free_count(); ++i) {
+    const auto& law = m.model->law_of(i);
+    const double side = std::sqrt(P.volume[i]);
+    double H = 0.0;
+    for (int a = 0; a < n; ++a)
+      for (int b = 0; b < n; ++b) {
+        const double x = P.position[i][0] + side * ((a + 0.5) / n - 0.5);
+        const double y = P.position[i][1] + side * ((b + 0.5) / n - 0.5);
+        double T = p.domain.initial_temperature;
+        for (auto zone = zones.rbegin(); zone != zones.rend(); ++zone)
+          if (zone->contains(x, y)) {
+            T = zone->temperature;
+            break;
+          }
+        H += law.enthalpy(T);
+      }
+    m.model->set_enthalpy(i, H / (n * n));
+  }
+}
+
+// Which boundaries conduct no heat (their particles copy their reflections).
+std::vector<bool> insulated_boundaries(const geometry::Scene& scene) {
+  std::vector<bool> insulated;
+  for (const auto& b : scene.boundaries) insulated.push_back(b.insulated);
+  return insulated;
+}
+}  // namespace
+
 Model build_model(const project::Project& p, Model cloud) {
   Model m = std::move(cloud);
   const double spacing = m.spacing;
@@ -205,7 +242,7 @@ Model build_model(const project::Project& p, Model cloud) {
   m.model = std::make_unique<thermal::ThermalModel>(
       m.particles().volume, m.particles().boundary, std::move(pairs), law, m.scene->boundaries,
       thermal::ConductionOptions{p.numerics.conductivity_mean, p.numerics.laplacian}, p.domain.initial_temperature,
-      sph::build_wall_extrapolation(m.particles(), *m.kernel, m.smoothing));
+      sph::build_wall_extrapolation(m.particles(), *m.kernel, m.smoothing, insulated_boundaries(*m.scene)));
   if (const auto* rect = std::get_if<project::Rectangle>(&p.geometry); rect && !rect->pores.empty()) {
     const auto& P = m.particles();
     m.pore_of = geometry::pore_membership(P.position, P.n_free, rect->pores);
@@ -214,16 +251,7 @@ Model build_model(const project::Project& p, Model cloud) {
     m.model->set_materials({law, thermal::pore_water_law(p.pore_fluid)}, std::move(material),
                            p.domain.initial_temperature);
   }
-  // Zones that start at their own temperature (a later one over an earlier one).
-  if (!p.domain.initial_zones.empty())
-    for (std::size_t i = 0; i < m.model->free_count(); ++i) {
-      const auto& x = m.particles().position[i];
-      for (auto zone = p.domain.initial_zones.rbegin(); zone != p.domain.initial_zones.rend(); ++zone)
-        if (zone->contains(x[0], x[1])) {
-          m.model->set_enthalpy(i, m.model->law_of(i).enthalpy(zone->temperature));
-          break;
-        }
-    }
+  if (!p.domain.initial_zones.empty()) start_in_zones(m, p);
   const double explicit_step = p.numerics.beta * m.h * m.h / m.model->max_diffusivity();
   if (p.numerics.integrator == project::IntegratorKind::implicit) {
     thermal::BackwardEulerSettings settings;

@@ -65,7 +65,7 @@ void check_explicit_advection(const Project& p) {
 
 void check_run_inputs(const Project& p) {
   // The regional flow is held on the far field: an adiabatic one has none.
-  if (p.groundwater && !p.domain.far_field_temperature)
+  if (p.groundwater && std::holds_alternative<project::ShaftSection>(p.geometry) && !p.domain.far_field_temperature)
     throw project::ProjectError(
         {"groundwater: needs domain.far_field_temperature (the far field holds the regional flow "
          "and the temperature of the water that enters)"});

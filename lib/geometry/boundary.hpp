@@ -36,6 +36,10 @@ struct FixedTemperatureBoundary {
   std::string name;  // "pipe", "far_field", "left", ...
   project::TemperatureSchedule temperature;
   std::optional<FilmWall> film = std::nullopt;  // set: the schedule is the fluid's, behind a film
+  // No heat conducted through the face: its particles copy the field at
+  // their reflections (an adiabatic face that water flows through; the
+  // schedule is 0, see sph/wall_extrapolation.hpp).
+  bool insulated = false;
 };
 
 }  // namespace frostwall::geometry

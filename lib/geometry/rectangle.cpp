@@ -13,6 +13,12 @@ namespace {
 
 bool is_fixed(const project::SideCondition& c) { return std::holds_alternative<project::FixedTemperature>(c); }
 
+// How a side is laid: a fixed temperature (face on a row, fixed layers
+// beyond), a mirror plane (halfway between rows), or open (an adiabatic
+// face with a head: halfway between rows, fixed layers beyond that copy
+// their reflections).
+enum class Side { fixed, mirror, open };
+
 // Particle rows along one axis of length L between a low and a high side.
 struct AxisRows {
   double spacing = 0.0;
@@ -20,7 +26,8 @@ struct AxisRows {
   std::vector<double> below, above;  // fixed layers beyond each side (empty if mirror)
 };
 
-AxisRows axis_rows(double L, bool fixed_lo, bool fixed_hi, double s, int layers) {
+AxisRows axis_rows(double L, Side lo, Side hi, double s, int layers) {
+  const bool fixed_lo = lo == Side::fixed, fixed_hi = hi == Side::fixed;
   AxisRows a;
   // Fixed faces sit on a row, mirror planes halfway between rows.
   const double half_rows = (fixed_lo != fixed_hi) ? 0.5 : 0.0;
@@ -31,11 +38,17 @@ AxisRows axis_rows(double L, bool fixed_lo, bool fixed_hi, double s, int layers)
   const double x0 = fixed_lo ? d : 0.5 * d;
   const long n_free = fixed_lo && fixed_hi ? m - 1 : m;
   for (long k = 0; k < n_free; ++k) a.free.push_back(x0 + k * d);
-  if (fixed_lo)
+  if (lo != Side::mirror)
     for (int l = 0; l < layers; ++l) a.below.push_back(a.free.front() - (l + 1) * d);
-  if (fixed_hi)
+  if (hi != Side::mirror)
     for (int l = 0; l < layers; ++l) a.above.push_back(a.free.back() + (l + 1) * d);
   return a;
+}
+
+Side side_kind(const project::Rectangle& rect, int s) {
+  const std::array<const project::SideCondition*, 4> sides{&rect.left, &rect.right, &rect.bottom, &rect.top};
+  if (is_fixed(*sides[s])) return Side::fixed;
+  return rect.heads[s] ? Side::open : Side::mirror;
 }
 
 }  // namespace
@@ -43,24 +56,28 @@ AxisRows axis_rows(double L, bool fixed_lo, bool fixed_hi, double s, int layers)
 RectangleScene build_rectangle(const project::Rectangle& rect, double spacing, double h) {
   RectangleScene scene;
   const int layers = static_cast<int>(std::ceil(2.0 * h / spacing - 1e-9));
-  const AxisRows X = axis_rows(rect.width, is_fixed(rect.left), is_fixed(rect.right), spacing, layers);
-  const AxisRows Y = axis_rows(rect.height, is_fixed(rect.bottom), is_fixed(rect.top), spacing, layers);
+  std::array<Side, 4> kind;
+  for (int s = 0; s < 4; ++s) kind[s] = side_kind(rect, s);
+  const AxisRows X = axis_rows(rect.width, kind[0], kind[1], spacing, layers);
+  const AxisRows Y = axis_rows(rect.height, kind[2], kind[3], spacing, layers);
   scene.spacing = {X.spacing, Y.spacing};
   for (int d = 0; d < 2; ++d)
     if (std::abs(scene.spacing[d] - spacing) > 1e-9 * spacing)
       scene.notes.push_back(fmt::format("numerics.spacing: {:.6g} m along {} to fit the rectangle (asked {:.6g} m)",
                                         scene.spacing[d], d == 0 ? "x" : "y", spacing));
 
-  // Boundary ids in the order left, right, bottom, top (fixed sides only);
-  // a corner particle beyond two fixed sides belongs to the first.
+  // Boundary ids in the order left, right, bottom, top (fixed and open
+  // sides); a corner particle beyond two such sides belongs to the first.
   const std::array<std::pair<const char*, const project::SideCondition*>, 4> sides{
       {{"left", &rect.left}, {"right", &rect.right}, {"bottom", &rect.bottom}, {"top", &rect.top}}};
   std::array<int, 4> id{-1, -1, -1, -1};
-  for (int s = 0; s < 4; ++s)
-    if (is_fixed(*sides[s].second)) {
-      id[s] = static_cast<int>(scene.boundaries.size());
+  for (int s = 0; s < 4; ++s) {
+    if (kind[s] == Side::mirror) continue;
+    id[s] = static_cast<int>(scene.boundaries.size());
+    if (kind[s] == Side::fixed)
       scene.boundaries.push_back({sides[s].first, std::get<project::FixedTemperature>(*sides[s].second).temperature});
-    }
+    else scene.boundaries.push_back({sides[s].first, project::TemperatureSchedule::fixed(0.0), std::nullopt, true});
+  }
 
   auto with = [](std::vector<double> a, const std::vector<double>& b) {
     a.insert(a.end(), b.begin(), b.end());
@@ -88,13 +105,21 @@ RectangleScene build_rectangle(const project::Rectangle& rect, double spacing, d
       const double wall[4] = {0.0, rect.width, 0.0, rect.height};
       if (count == 1 && std::abs((owner < 2 ? x : y) - wall[owner]) > 1e-9 * X.spacing)
         reflected = owner < 2 ? particles::Vec<2>(2 * wall[owner] - x, y) : particles::Vec<2>(x, 2 * wall[owner] - y);
+      // An open side's corner particles reflect across both sides.
+      if (count == 2 && kind[owner] == Side::open)
+        reflected = particles::Vec<2>(beyond[0]   ? -x
+                                      : beyond[1] ? 2 * rect.width - x
+                                                  : x,
+                                      beyond[2]   ? -y
+                                      : beyond[3] ? 2 * rect.height - y
+                                                  : y);
       P.add(particles::Vec<2>(x, y), volume, b, reflected);
     }
   using V = particles::Vec<2>;
-  if (!is_fixed(rect.left)) P.mirrors.push_back({V(0, 0), V(1, 0)});
-  if (!is_fixed(rect.right)) P.mirrors.push_back({V(rect.width, 0), V(1, 0)});
-  if (!is_fixed(rect.bottom)) P.mirrors.push_back({V(0, 0), V(0, 1)});
-  if (!is_fixed(rect.top)) P.mirrors.push_back({V(0, rect.height), V(0, 1)});
+  if (kind[0] == Side::mirror) P.mirrors.push_back({V(0, 0), V(1, 0)});
+  if (kind[1] == Side::mirror) P.mirrors.push_back({V(rect.width, 0), V(1, 0)});
+  if (kind[2] == Side::mirror) P.mirrors.push_back({V(0, 0), V(0, 1)});
+  if (kind[3] == Side::mirror) P.mirrors.push_back({V(0, rect.height), V(0, 1)});
   P.order_free_first();
   return scene;
 }

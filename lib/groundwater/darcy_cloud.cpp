@@ -114,11 +114,11 @@ DarcySolveReport DarcyCloud::solve(const std::vector<double>& k) {
   return report;
 }
 
-double DarcyCloud::inflow_from_boundary() const {
+double DarcyCloud::inflow_from_boundary(bool gross) const {
   double in = 0.0;
   for (std::size_t i = 0; i < pairs_.n_free; ++i)
     for (std::size_t e = pairs_.row_start[i]; e < pairs_.row_start[i + 1]; ++e)
-      if (pairs_.column[e] >= pairs_.n_free) in -= flux_[e];
+      if (pairs_.column[e] >= pairs_.n_free && (!gross || flux_[e] < 0.0)) in -= flux_[e];
   return in;
 }
 

@@ -46,8 +46,8 @@ class DarcyCloud {
   // 0 for pairs to a no-flow particle.
   const std::vector<double>& pair_flux() const { return flux_; }
   // The volume flow into the free particles from the fixed ones holding a
-  // potential (m^2/s per metre of depth; in minus out).
-  double inflow_from_boundary() const;
+  // potential (m^2/s per metre of depth; in minus out; gross: in only).
+  double inflow_from_boundary(bool gross = false) const;
 
  private:
   struct Factor;

@@ -51,7 +51,13 @@ struct Groundwater {
   double resolve_tolerance = 3e-4;
   Advection advection = Advection::coupled;
 
-  double speed() const;                 // |q|, m/s
+  // Plain geometries: the largest difference between two faces' heads, m
+  // (the flow follows the faces' heads; darcy_flux stays 0).
+  double head_difference = 0.0;
+
+  double speed() const;  // |q|, m/s
+  // Water moves: a regional flux, or faces at different heads.
+  bool flows() const { return speed() > 0.0 || head_difference > 0.0; }
   double permeability_m2() const;       // k, m^2 (from K when K was given)
   double conductivity_m_per_s() const;  // K, m/s (from k when k was given)
   // Water flows (|q| > 0) and its heat is stepped by the coupled scheme,

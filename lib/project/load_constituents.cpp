@@ -61,6 +61,7 @@ Soil soil_from_constituents(const Node& n) {
   soil.latent_heat = porosity * ice.density * latent / soil.density;
   soil.freezing_point = n["freezing_point"].number().value_or(0.0);
   soil.geometric_conductivity = geometric;
+  soil.porosity = porosity;
   read_freezing_curve(n, soil, porosity * water.density / ((1.0 - porosity) * solid.density));
   return soil;
 }

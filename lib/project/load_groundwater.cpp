@@ -8,7 +8,7 @@ namespace frostwall::project {
 
 double Groundwater::speed() const { return std::hypot(darcy_flux[0], darcy_flux[1]); }
 
-bool Groundwater::flows_coupled() const { return advection == Advection::coupled && speed() > 0.0; }
+bool Groundwater::flows_coupled() const { return advection == Advection::coupled && flows(); }
 
 double Groundwater::permeability_m2() const {
   if (permeability) return *permeability;
@@ -22,7 +22,7 @@ double Groundwater::conductivity_m_per_s() const {
 
 namespace detail {
 
-Groundwater read_groundwater(const Node& n) {
+Groundwater read_groundwater(const Node& n, bool plain) {
   Groundwater g;
   n.object({"permeability", "hydraulic_conductivity", "porosity", "permeability_law", "darcy_flux",
             "hydraulic_gradient", "unit", "water", "resolve_tolerance", "advection"});
@@ -57,7 +57,10 @@ Groundwater read_groundwater(const Node& n) {
   double per_second = 1.0 / seconds_per_day;
   if (const auto unit = n["unit"].choice<double>("unit", {{"m/d", 1.0 / seconds_per_day}, {"m/s", 1.0}}))
     per_second = *unit;
-  if (n["darcy_flux"].present() == n["hydraulic_gradient"].present())
+  if (plain) {
+    for (const char* key : {"darcy_flux", "hydraulic_gradient"})
+      if (n[key].present()) n[key].problem("a rectangle's flow follows the heads of its faces");
+  } else if (n["darcy_flux"].present() == n["hydraulic_gradient"].present())
     n["darcy_flux"].problem(
         R"(give either "darcy_flux" (the regional flux) or "hydraulic_gradient" (the head's fall per metre))");
   if (const Node i = n["hydraulic_gradient"]; i.present()) {

@@ -8,6 +8,6 @@
 
 namespace frostwall::project::detail {
 
-Groundwater read_groundwater(const Node& n);
+Groundwater read_groundwater(const Node& n, bool plain = false);
 
 }  // namespace frostwall::project::detail

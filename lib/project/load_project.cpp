@@ -74,27 +74,24 @@ TimeSettings detail::read_time(const Node& n) {
 
 namespace {
 
-// A boundary is "adiabatic" or {"temperature": T}: returns the node of T, or
-// nullopt for adiabatic (and for a bad value, which is reported).
-std::optional<Node> side_temperature(const Node& n) {
-  if (!n.given()) return std::nullopt;
-  const std::string expected = R"((expected "adiabatic" or {"temperature": T}))";
+// A boundary is "adiabatic", {"temperature": T}, {"temperature": T,
+// "head": h} or {"head": h} (adiabatic, water flows through it).
+SideCondition read_side(const Node& n, std::optional<double>& head) {
+  if (!n.given()) return Adiabatic{};
+  const std::string expected = R"((expected "adiabatic", {"temperature": T} or {"head": h}))";
   if (n.json().is_string()) {
     const auto name = n.json().get<std::string>();
     if (name != "adiabatic") n.problem("unknown boundary condition '" + name + "' " + expected);
-    return std::nullopt;
+    return Adiabatic{};
   }
   if (!n.json().is_object()) {
     n.problem("must be \"adiabatic\" or {\"temperature\": T}, got " + n.type());
-    return std::nullopt;
+    return Adiabatic{};
   }
-  n.object({"temperature"});
-  return n["temperature"].required();
-}
-
-SideCondition read_side(const Node& n) {
-  if (const auto t = side_temperature(n)) return FixedTemperature{read_schedule(*t)};
-  return Adiabatic{};
+  n.object({"temperature", "head"});
+  if (n["head"].present()) head = n["head"].number();
+  if (!n["temperature"].present() && n["head"].present()) return Adiabatic{};
+  return FixedTemperature{read_schedule(n["temperature"].required())};
 }
 
 }  // namespace
@@ -110,9 +107,11 @@ Rectangle read_rectangle(const Node& n) {
   detail::read_pores(n["pores"], rectangle, n["saturation"]);
   const Node sides = n["boundaries"].required();
   if (!sides.object({"left", "right", "top", "bottom"})) return rectangle;
-  for (const auto& [key, side] : {std::pair{"left", &rectangle.left}, std::pair{"right", &rectangle.right},
-                                  std::pair{"top", &rectangle.top}, std::pair{"bottom", &rectangle.bottom}})
-    *side = read_side(sides[key].required());
+  auto& h = rectangle.heads;
+  for (const auto& [key, side, head] :
+       {std::tuple{"left", &rectangle.left, &h[0]}, std::tuple{"right", &rectangle.right, &h[1]},
+        std::tuple{"top", &rectangle.top, &h[3]}, std::tuple{"bottom", &rectangle.bottom, &h[2]}})
+    *side = read_side(sides[key].required(), *head);
   return rectangle;
 }
 
@@ -220,8 +219,10 @@ void read_domain(const Node& domain, bool shaft, ShaftSection& section, Project&
       // Default: the far field stays at the initial ground temperature.
       project.domain.far_field_temperature = project.domain.initial_temperature;
       if (const Node far = domain["far_field"]; far.present()) {
-        const auto t = side_temperature(far);
-        project.domain.far_field_temperature = t ? t->number() : std::nullopt;
+        std::optional<double> head;
+        const bool adiabatic = std::holds_alternative<Adiabatic>(read_side(far, head));
+        if (head) far["head"].problem("only used on a rectangle's faces");
+        project.domain.far_field_temperature = adiabatic ? std::nullopt : far["temperature"].number();
       }
     }
   }
@@ -232,11 +233,24 @@ void read_domain(const Node& domain, bool shaft, ShaftSection& section, Project&
 // brings that integrator and its step change. An explicit integrator asked
 // for keeps the explicit limited scheme; still water keeps the still-water run.
 void read_groundwater_block(const Node& root, bool shaft, Project& project) {
+  const auto* rect = std::get_if<Rectangle>(&project.geometry);
+  if (rect && rect->has_heads() && !root["groundwater"].present())
+    root["geometry"]["boundaries"].problem(
+        R"(a face's "head" needs the "groundwater" block (the soil's permeability))");
   if (const Node water = root["groundwater"]; water.present()) {
-    if (!shaft) water.problem(R"(only used with "shaft" sections in this version)");
+    if (!shaft && rect && !rect->has_heads())
+      water.problem(R"(a rectangle's water flows between faces with a "head" (geometry.boundaries.<face>.head))");
+    else if (!shaft && project.numerics.placement == Placement::graded)
+      root["numerics"]["placement"].problem(R"(faces with a head need "lattice")");
     else {
-      project.groundwater = detail::read_groundwater(water);
+      project.groundwater = detail::read_groundwater(water, !shaft);
       auto& g = *project.groundwater;
+      if (rect) {
+        double lo = 1e300, hi = -1e300;
+        for (const auto& h : rect->heads)
+          if (h) lo = std::min(lo, *h), hi = std::max(hi, *h);
+        g.head_difference = hi - lo;
+      }
       const Node numerics = root["numerics"];
       const bool other_integrator = numerics["integrator"].present() &&
                                     project.numerics.integrator != IntegratorKind::implicit;
@@ -252,10 +266,11 @@ void read_groundwater_block(const Node& root, bool shaft, Project& project) {
         // closure (docs/groundwater.md).
         if (!numerics["step_change"].present()) project.numerics.step_change = 1.0;
       }
-      project.warnings.push_back(
-          "groundwater: a full-size run under flow takes minutes at a 4 cm spacing (projects/seepage_reference.json) "
-          "and several times that at the default 2 cm on two cores, and beside frozen ground "
-          "the Darcy flux is 7-9 % off (docs/groundwater.md, Limits)");
+      if (shaft)
+        project.warnings.push_back(
+            "groundwater: a full-size run under flow takes minutes at a 4 cm spacing (projects/seepage_reference.json) "
+            "and several times that at the default 2 cm on two cores, and beside frozen ground "
+            "the Darcy flux is 7-9 % off (docs/groundwater.md, Limits)");
     }
   }
 }

@@ -57,6 +57,9 @@ struct Soil {
   // is the liquid fraction, and heat capacity (and, for a soil from its
   // constituents, conductivity) follow it.
   FreezingCurve freezing_curve;
+  // The pore space's share of the volume, when the soil is given by its
+  // constituents (0: not known).
+  double porosity = 0.0;
   // Conductivity between frozen and unfrozen: geometric in the liquid
   // fraction (a soil from its constituents mixed geometrically), else linear.
   bool geometric_conductivity = false;
@@ -120,6 +123,10 @@ struct Rectangle {
   double width = 0.0;   // along x
   double height = 0.0;  // along y
   SideCondition left, right, top, bottom;
+  // Hydraulic heads, m, of the faces left, right, bottom, top (with the
+  // groundwater block); a face without one is impermeable.
+  std::array<std::optional<double>, 4> heads;
+  bool has_heads() const { return heads[0] || heads[1] || heads[2] || heads[3]; }
   std::vector<Pore> pores;                      // explicit or drawn; none: a plain plate
   std::optional<PoreGenerator> pore_generator;  // how they were drawn, when they were
 };

@@ -15,7 +15,8 @@ using particles::mirror_images;
 
 template <int Dim>
 WallExtrapolation build_wall_extrapolation(const ParticleSet<Dim>& particles, const Kernel& kernel,
-                                           const SmoothingLengths& smoothing) {
+                                           const SmoothingLengths& smoothing,
+                                           const std::vector<bool>& insulated_walls) {
   // Graded clouds: each fixed particle's own support (its spacing is the
   // spacing of the ground it mirrors).
   const double reach = Kernel::support_factor * smoothing.largest();
@@ -40,6 +41,19 @@ WallExtrapolation build_wall_extrapolation(const ParticleSet<Dim>& particles, co
     const double h = smoothing.of(particles.n_free + f);
     w.row_start[f + 1] = w.row_start[f];
     if (x.hasNaN()) continue;
+    const int b = particles.boundary[particles.n_free + f];
+    const bool insulated = b >= 0 && static_cast<std::size_t>(b) < insulated_walls.size() && insulated_walls[b];
+    const double sign = insulated ? -1.0 : 1.0;
+    if (insulated) {
+      std::int64_t at = -1;
+      cells.for_each_within(x, 1e-6 * h, [&](std::uint32_t k, double) { at = source[k]; });
+      if (at >= 0) {  // the reflection is a particle: its value exactly
+        w.column.push_back(static_cast<std::uint32_t>(at));
+        w.weight.push_back(-1.0);
+        w.row_start[f + 1] = w.column.size();
+        continue;
+      }
+    }
     std::vector<std::pair<std::uint32_t, double>> near;
     Eigen::Matrix<double, Dim + 1, Dim + 1> M = Eigen::Matrix<double, Dim + 1, Dim + 1>::Zero();
     auto basis = [&](const Vec<Dim>& y) {
@@ -65,13 +79,14 @@ WallExtrapolation build_wall_extrapolation(const ParticleSet<Dim>& particles, co
     const P e0 = linear ? P(lu.solve(P::UnitX())) : P::Zero();
     for (const auto& [k, W] : near) {
       w.column.push_back(source[k]);
-      w.weight.push_back(linear ? W * e0.dot(basis(points[k])) : W / total);
+      w.weight.push_back(sign * (linear ? W * e0.dot(basis(points[k])) : W / total));
     }
     w.row_start[f + 1] = w.column.size();
   }
   return w;
 }
 
-template WallExtrapolation build_wall_extrapolation<2>(const ParticleSet<2>&, const Kernel&, const SmoothingLengths&);
+template WallExtrapolation build_wall_extrapolation<2>(const ParticleSet<2>&, const Kernel&, const SmoothingLengths&,
+                                                       const std::vector<bool>&);
 
 }  // namespace frostwall::sph

@@ -1,5 +1,6 @@
 // Temperatures of fixed particles beyond a wall, by antisymmetric
-// extension: T_j = 2 T_wall - T(reflection_j), with T at the reflection
+// extension: T_j = 2 T_wall - T(reflection_j) (symmetric for an insulated
+// wall, below), with T at the reflection
 // point from the free particles around it by moving least squares, linear
 // (exact for a linear field, so a wall with a straight temperature profile
 // is seen exactly where it is). Weights are computed once.
@@ -30,8 +31,13 @@ struct WallExtrapolation {
   bool on_wall(std::size_t fixed_index) const { return row_start[fixed_index] == row_start[fixed_index + 1]; }
 };
 
+// insulated_walls[b]: boundary b conducts no heat. Its wall holds 0 and its
+// rows carry the negated weights, so T_j = 2 * 0 + T(reflection_j): the
+// symmetric extension, in the same arithmetic as the others. A reflection
+// that is a particle (a lattice mirrored across a face between rows) takes
+// that particle's value exactly.
 template <int Dim>
 WallExtrapolation build_wall_extrapolation(const ParticleSet<Dim>& particles, const Kernel& kernel,
-                                           const SmoothingLengths& h);
+                                           const SmoothingLengths& h, const std::vector<bool>& insulated_walls = {});
 
 }  // namespace frostwall::sph

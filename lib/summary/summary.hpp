@@ -43,7 +43,8 @@ namespace frostwall::summary {
   X(run) X(particles) X(steps) X(wall_seconds) X(integrator) X(spacing) X(smoothing_length) X(warnings)                \
   X(groundwater) X(gaps) X(closure_day) X(verdict) X(error_estimate) X(status) X(coarse_closure_days)                  \
   X(sections) X(critical_depth) X(as_built) X(thinnest_wall) X(design_margin) X(intact) X(scenario_directory)          \
-  X(layers) X(governing_layer) X(calibration) X(forecast) X(parameters) X(physics) X(soil) X(pores) X(damage)
+  X(layers) X(governing_layer) X(calibration) X(forecast) X(parameters) X(physics) X(soil) X(pores) X(damage)      \
+  X(balance) X(thaw_time)
 // clang-format on
 
 namespace keys {

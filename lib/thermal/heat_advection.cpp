@@ -57,10 +57,11 @@ void HeatAdvection::rate(const ThermalModel& model, double t, std::vector<double
       const double Q = flux_[e];
       const std::uint32_t j = P.column[e];
       const bool fixed = j >= P.n_free;
-      if (fixed) {  // across the wall, at the wall's temperature
+      if (fixed) {  // across the wall, at the wall's temperature (an insulated wall has none: upwind)
         if (Q == 0.0) continue;
         const std::size_t b = std::size_t(boundary[j]);
-        const double heat = rho_c_w_ * Q * (Q > 0.0 && leave_upwind ? T[i] : wall[b]);
+        const bool insulated = model.boundaries()[b].insulated;
+        const double heat = rho_c_w_ * Q * (Q > 0.0 && (leave_upwind || insulated) ? T[i] : insulated ? T[j] : wall[b]);
         rate[i] -= heat;
         boundary_heat[b] -= heat;
       } else if (Q > 0.0) {

@@ -106,11 +106,12 @@ std::vector<double> HeatAdvection::advance_implicit(ThermalModel& model, double 
     for (std::size_t e = P.row_start[i]; e < P.row_start[i + 1]; ++e) {
       const double Q = flux_[e];
       const std::size_t j = P.column[e];
-      if (j >= n) {  // in across a wall at its temperature; out at the particle's (upwind)
+      if (j >= n) {  // in across a wall at its temperature (insulated: its particle's); out at the particle's
         if (Q < 0.0) {
           const std::size_t b = std::size_t(boundary[j]);
-          in -= Q * wall[b];
-          carried[b] -= w * Q * wall[b];
+          const double T_in = model.boundaries()[b].insulated ? model.temperature()[j] : wall[b];
+          in -= Q * T_in;
+          carried[b] -= w * Q * T_in;
         } else if (Q > 0.0) out += Q, out_wall += Q;
       } else if (Q > 0.0 && j != i) out += Q;
     }
