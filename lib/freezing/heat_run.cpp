@@ -137,6 +137,7 @@ HeatRun::HeatRun(const Project& p, Model& built, const project::RunOptions& opti
                      : p.groundwater       ? p.groundwater->law.porosity
                                            : 0.0,
                      unit_);
+    balance_->sample(*built.model, 0.0);
   }
   if (extension_ && extension_->solid()) plain_->attach(extension_->solid());
   if (built.shaft && !p.monitoring.empty()) thermometers_.emplace(p, built);
