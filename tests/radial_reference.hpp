@@ -92,12 +92,15 @@ class RadialReference {
     f_.assign(n, 0.0);
     refresh(H_, T_, f_);
     // The branches of the law, read off the law itself (each is linear).
-    isothermal_ = p_.soil.freezing_range <= 0.0;
+    // A smooth curve's freezing branch is curved: it is linearised at each
+    // iterate with the law's local slope (Newton), the others as before.
+    smooth_ = law_.tabulated();
+    isothermal_ = !smooth_ && p_.soil.freezing_range <= 0.0;
     const double Tf = law_.freezing_point(), Ts = Tf - p_.soil.freezing_range;
-    H_l_ = law_.enthalpy(Tf);            // unfrozen end of freezing
-    rho_cs_ = -law_.enthalpy(Ts - 1.0);  // H = 0 at Ts
+    H_l_ = smooth_ ? law_.latent_enthalpy() : law_.enthalpy(Tf);  // unfrozen end of freezing
+    rho_cs_ = smooth_ ? 1.0 / law_.temperature_slope(-1.0, -1.0) : -law_.enthalpy(Ts - 1.0);  // H = 0 at Ts
     rho_cl_ = law_.enthalpy(Tf + 1.0) - H_l_;
-    rho_cm_ = isothermal_ ? 0.0 : H_l_ / p_.soil.freezing_range;  // inside the range
+    rho_cm_ = isothermal_ || smooth_ ? 0.0 : H_l_ / p_.soil.freezing_range;  // inside the range
     inv_rho_cs_ = 1.0 / rho_cs_;
     inv_rho_cl_ = 1.0 / rho_cl_;
     inv_rho_cm_ = isothermal_ ? 0.0 : 1.0 / rho_cm_;
@@ -368,14 +371,18 @@ class RadialReference {
 
   // dH/dT of the branch of the law H lies on (outside an isothermal
   // plateau), and its inverse.
-  double capacity(double H) const { return H < 0.0 ? rho_cs_ : H > H_l_ ? rho_cl_ : rho_cm_; }
-  double inverse_capacity(double H) const { return H < 0.0 ? inv_rho_cs_ : H > H_l_ ? inv_rho_cl_ : inv_rho_cm_; }
+  double capacity(double H) const {
+    return H < 0.0 ? rho_cs_ : H > H_l_ ? rho_cl_ : smooth_ ? 1.0 / law_.temperature_slope(H, 1.0) : rho_cm_;
+  }
+  double inverse_capacity(double H) const {
+    return H < 0.0 ? inv_rho_cs_ : H > H_l_ ? inv_rho_cl_ : smooth_ ? law_.temperature_slope(H, 1.0) : inv_rho_cm_;
+  }
 
   RadialProblem p_;
   thermal::PhaseChangeLaw law_;
   RadialOptions opt_;
   double dr_ = 0.0, t_ = 0.0;
-  bool isothermal_ = true;
+  bool isothermal_ = true, smooth_ = false;
   double H_l_ = 0.0, rho_cs_ = 0.0, rho_cl_ = 0.0, rho_cm_ = 0.0;
   double inv_rho_cs_ = 0.0, inv_rho_cl_ = 0.0, inv_rho_cm_ = 0.0;
   std::vector<double> r_, V_, inv_V_, G_, H_, T_, f_;
