@@ -7,6 +7,7 @@
 //    (conduction and water), to the coupled step's Newton tolerance;
 //  - PM3 by hand: 0.37 x (3 - 0.95 / 9) m3/m liquid at the start (the
 //    square's water 95 % ice at -5 C), 0.37 x 3 once all has thawed;
+//  - the report names the curve and draws it;
 //  - the flow once thawed: K dh / L x 1 m with K = k rho g / mu, the
 //    straight head between the faces, within 1e-3.
 #include <catch2/catch.hpp>
@@ -14,6 +15,8 @@
 #include <cmath>
 #include <fmt/core.h>
 #include <fstream>
+#include <iterator>
+#include <string>
 #include <nlohmann/json.hpp>
 
 #include "shipped_run.hpp"
@@ -57,6 +60,12 @@ TEST_CASE("InterFrost TH2 at 3 %: the inclusion thaws inside the codes' range",
     lost += rows[k]["net_heat_out_W"].get<double>() * 3600.0 *
             (rows[k]["time"].get<double>() - rows[k - 1]["time"].get<double>());
   CHECK(-lost == Approx(balance["stored_change"].get<double>()).epsilon(1e-3));
+
+  // The report names the curve and draws it.
+  std::ifstream report_in(dir.path / "report.html");
+  const std::string report((std::istreambuf_iterator<char>(report_in)), std::istreambuf_iterator<char>());
+  CHECK(report.find("exponential, S_w = 0.050 + 0.950 exp(-((T - Tf)/0.500 K)²)") != std::string::npos);
+  CHECK(report.find("The liquid share of the pore water as the solver holds it") != std::string::npos);
 
   const double K = 1.3e-10 * 1000 * 9.81 / 1.793e-3;
   // (The discrete flow's boundary error is first order: 3.6e-4 at 2 cm,

@@ -8,6 +8,7 @@
 #include "report/layout_drawing.hpp"
 #include "report/report_sections.hpp"
 #include "report/svg_chart.hpp"
+#include "thermal/phase_change.hpp"
 #include "geometry/interface_planes.hpp"
 
 namespace frostwall::report::detail {
@@ -85,6 +86,47 @@ void add_layout(const RunRecord& run, const project::ShaftSection& section, json
       "OA runs through a pipe of the outer ring, OB halfway to the next one, where the wall is thinnest.";
 }
 
+// The freezing curve in words, with its parameters and source.
+std::string curve_text(const project::Soil& s) {
+  const auto& c = s.freezing_curve;
+  switch (c.model) {
+    case project::CurveModel::exponential:
+      return fmt::format("exponential, S_w = {} + {} exp(-((T - Tf)/{} K)²) (InterFrost)",
+                         number(c.residual_saturation, 3), number(1.0 - c.residual_saturation, 3), number(c.width, 3));
+    case project::CurveModel::power:
+      return fmt::format("power law, unfrozen water {} θ^{} of {} kg/kg (Anderson and Tice)", number(c.alpha, 4),
+                         number(c.beta, 3), number(c.water_content, 4));
+    case project::CurveModel::linear: return "linear over the freezing range";
+    default: return "step (all at the freezing point)";
+  }
+}
+
+// The liquid fraction against temperature, as the solver holds it, from
+// 3 K above the freezing point down past where three quarters of the
+// freezable water is ice.
+json curve_svg(const project::Soil& s) {
+  if (s.latent_heat <= 0.0) return false;
+  const thermal::PhaseChangeLaw law(s);
+  double low = law.frozen_temperature() - 1.0;
+  if (law.tabulated())
+    while (low > law.freezing_point() - 60.0 && law.liquid_fraction(law.enthalpy(low)) > 0.25) low -= 0.5;
+  low = std::min(low, s.freezing_point - s.freezing_range - 1.0);
+  const double high = s.freezing_point + 3.0;
+  Chart chart;
+  chart.title = "freezing curve";
+  chart.x_label = "temperature (°C)";
+  chart.y_label = "liquid share of the pore water";
+  chart.width = 440, chart.height = 220;
+  Series curve{"", {}, {}, "#0b3c73", false, true};
+  for (int k = 0; k <= 400; ++k) {
+    const double T = low + (high - low) * k / 400.0;
+    curve.x.push_back(T);
+    curve.y.push_back(law.liquid_fraction(law.enthalpy(T)));
+  }
+  chart.series.push_back(curve);
+  return render_svg(chart);
+}
+
 void add_soil(const project::Soil& s, json& view) {
   const auto vol = [&](const project::PhaseProperties& p) { return s.density * p.heat_capacity; };
   const auto alpha = [&](const project::PhaseProperties& p) { return p.conductivity[0] / vol(p) * 1e6; };
@@ -113,7 +155,9 @@ void add_soil(const project::Soil& s, json& view) {
       row("freezing point", number(s.freezing_point, 2) + " °C"),
       row("freezing range", s.freezing_range > 0 ? number(s.freezing_range, 2) + " K below the freezing point"
                                                  : std::string("none (isothermal)")),
+      row("freezing curve", curve_text(s)),
   });
+  view["soil_curve_svg"] = curve_svg(s);
 }
 
 void add_schedule(const project::Project& p, const project::TemperatureSchedule& schedule, json& view) {
@@ -305,6 +349,7 @@ void add_project(const RunRecord& run, json& view) {
     view[key] = json::array();
   for (const char* key : {"layout_svg", "layout_caption", "soil_name", "schedule_note"}) view[key] = "";
   view["schedule_svg"] = false;
+  view["soil_curve_svg"] = false;
   for (const char* key : {"has_sensors", "has_design_rows", "has_design_or_sensors", "has_solid_rows"})
     view[key] = false;
   view["solid_rows"] = json::array();
