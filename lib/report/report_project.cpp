@@ -86,6 +86,16 @@ void add_layout(const RunRecord& run, const project::ShaftSection& section, json
       "OA runs through a pipe of the outer ring, OB halfway to the next one, where the wall is thinnest.";
 }
 
+// A chart of the project section's size (one dark line follows).
+Chart small_chart(const std::string& title, const std::string& x_label, const std::string& y_label) {
+  Chart chart;
+  chart.title = title;
+  chart.x_label = x_label;
+  chart.y_label = y_label;
+  chart.width = 440, chart.height = 220;
+  return chart;
+}
+
 // The freezing curve in words, with its parameters and source.
 std::string curve_text(const project::Soil& s) {
   const auto& c = s.freezing_curve;
@@ -112,11 +122,7 @@ json curve_svg(const project::Soil& s) {
     while (low > law.freezing_point() - 60.0 && law.liquid_fraction(law.enthalpy(low)) > 0.25) low -= 0.5;
   low = std::min(low, s.freezing_point - s.freezing_range - 1.0);
   const double high = s.freezing_point + 3.0;
-  Chart chart;
-  chart.title = "freezing curve";
-  chart.x_label = "temperature (°C)";
-  chart.y_label = "liquid share of the pore water";
-  chart.width = 440, chart.height = 220;
+  Chart chart = small_chart("freezing curve", "temperature (°C)", "liquid share of the pore water");
   Series curve{"", {}, {}, "#0b3c73", false, true};
   for (int k = 0; k <= 400; ++k) {
     const double T = low + (high - low) * k / 400.0;
@@ -170,11 +176,7 @@ void add_schedule(const project::Project& p, const project::TemperatureSchedule&
                               : "Linear between the points, held at the first and last value outside them.";
   view["schedule_svg"] = false;
   if (schedule.constant()) return;
-  Chart chart;
-  chart.title = "pipe wall temperature over time";
-  chart.x_label = "time (d)";
-  chart.y_label = "pipe wall (°C)";
-  chart.width = 440, chart.height = 220;
+  Chart chart = small_chart("pipe wall temperature over time", "time (d)", "pipe wall (°C)");
   Series s{"", {}, {}, "#0b3c73", false, true};
   std::vector<double> t{0.0};
   for (const auto& pt : schedule.points) t.push_back(pt.first);
