@@ -187,8 +187,8 @@ TEST_CASE("The report of a shaft run fills every placeholder, loads nothing and 
   // One inline PNG map per snapshot, as <img> with a data URI.
   CHECK(test::count(html, "<img src=\"data:image/png;base64,") == 3);
   CHECK(test::count(html, "<img ") == 3);
-  // Charts: pipe schedule, thickness, OB temperature, OA and OB profiles, sensors.
-  CHECK(test::count(html, "<svg class=\"chart\"") == 6);
+  // Charts: freezing curve, pipe schedule, thickness, OB temperature, OA and OB profiles, sensors.
+  CHECK(test::count(html, "<svg class=\"chart\"") == 7);
   CHECK(test::count(html, "<svg class=\"layout\"") == 1);
   CHECK(test::count(html, "<svg class=\"colour-bar\"") == 1);
   // The headline numbers are the summary's.
