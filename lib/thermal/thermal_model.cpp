@@ -117,6 +117,14 @@ double ThermalModel::coefficient(std::size_t i, std::size_t j, std::size_t e) co
 
 const std::vector<double>& ThermalModel::pair_coefficients() const {
   const auto& P = pairs_;
+  // Many changed (a smooth freezing curve changes every frozen particle's
+  // conductivity at every stage): all pairs again, on every thread, rather
+  // than the changed ones one by one.
+  if (!all_changed_ && !coefficient_.empty()) {
+    std::size_t changed = 0;
+    for (const int c : k_changed_) changed += c != 0;
+    if (8 * changed > k_changed_.size()) all_changed_ = true;
+  }
   if (all_changed_) {
     coefficient_.resize(P.pairs());
     particles::for_each_particle(P.n_free, [&](std::size_t i) {
