@@ -1,7 +1,10 @@
 // A rectangle [0, width] x [0, height] on a lattice. A fixed-temperature
 // side has its face on a particle row and ceil(2h/spacing) fixed layers
 // from the face outwards (the kernel support of the first free row is
-// full); an adiabatic side is a mirror plane halfway between two rows.
+// full); an adiabatic side is a mirror plane halfway between two rows, or,
+// with a hydraulic head, lies there with fixed layers beyond it that copy
+// their mirror images' temperatures (an insulated boundary: no heat is
+// conducted through it, water flows through it).
 // The spacing along each axis is adjusted (slightly) so both sides fit.
 #pragma once
 
