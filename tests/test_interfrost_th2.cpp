@@ -54,7 +54,8 @@ TEST_CASE("InterFrost TH2 at 3 %: the inclusion thaws inside the codes' range",
   CHECK(rows.front()["liquid_water_m3"].get<double>() == Approx(0.37 * (area - 0.95 / 9.0)).epsilon(1e-3));
   CHECK(rows.back()["liquid_water_m3"].get<double>() == Approx(0.37 * area).epsilon(1e-9));
   CHECK(rows.front()["min_temperature"].get<double>() == Approx(-5.0).margin(1e-9));
-  // The heat leaving per metre adds up to what the domain lost.
+  // The heat leaving per metre (W, over hours) adds up to what the domain
+  // lost: the rows' units and intervals.
   double lost = 0.0;
   for (std::size_t k = 1; k < rows.size(); ++k)
     lost += rows[k]["net_heat_out_W"].get<double>() * 3600.0 *

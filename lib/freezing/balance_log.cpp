@@ -14,18 +14,16 @@ double coldest(const thermal::ThermalModel& model) {
 }
 }  // namespace
 
-BalanceLog::BalanceLog(double porosity, double time_unit_seconds) : porosity_(porosity), unit_(time_unit_seconds) {}
+BalanceLog::BalanceLog(const thermal::ThermalModel& model, double porosity, double time_unit_seconds)
+    : porosity_(porosity), unit_(time_unit_seconds) {
+  sample(model, 0.0);
+  last_min_ = rows_.front().min_temperature;
+}
 
 void BalanceLog::after_step(const thermal::ThermalModel& model, double t) {
   const double Tf = model.law().freezing_point();
   const double now = coldest(model);
-  if (!started_) {
-    started_ = true;
-    last_t_ = 0.0;
-    last_min_ = now;
-  }
-  if (now < Tf) was_frozen_ = true;
-  if (!thaw_time_ && was_frozen_ && last_min_ < Tf && now >= Tf) {
+  if (!thaw_time_ && last_min_ < Tf && now >= Tf) {  // between the two steps
     const double w = (Tf - last_min_) / (now - last_min_);
     thaw_time_ = (last_t_ + w * (t - last_t_)) / unit_;
   }
@@ -34,11 +32,6 @@ void BalanceLog::after_step(const thermal::ThermalModel& model, double t) {
 }
 
 void BalanceLog::sample(const thermal::ThermalModel& model, double t) {
-  if (!started_) {
-    started_ = true;
-    last_min_ = coldest(model);
-    was_frozen_ = last_min_ < model.law().freezing_point();
-  }
   double water = 0.0;
   for (std::size_t i = 0; i < model.free_count(); ++i) water += model.volume()[i] * model.liquid_fraction()[i];
   rows_.push_back({t, coldest(model), porosity_ * water, model.stored_heat()});

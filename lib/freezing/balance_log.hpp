@@ -20,8 +20,9 @@ namespace frostwall::freezing {
 
 class BalanceLog {
  public:
-  // porosity: the ground's, for the liquid water (0: not known, none written).
-  BalanceLog(double porosity, double time_unit_seconds);
+  // porosity: the ground's, for the liquid water (0: not known, none
+  // written). The first row is the model's state at t = 0.
+  BalanceLog(const thermal::ThermalModel& model, double porosity, double time_unit_seconds);
   // Every step: the coldest temperature's crossing of the freezing point.
   void after_step(const thermal::ThermalModel& model, double t);
   // At the regular output times: one row.
@@ -38,8 +39,7 @@ class BalanceLog {
   };
   double porosity_, unit_;
   std::vector<Row> rows_;
-  double last_t_ = 0.0, last_min_ = 0.0;
-  bool started_ = false, was_frozen_ = false;
+  double last_t_ = 0.0, last_min_ = 0.0;  // the last step's time and coldest temperature
   std::optional<double> thaw_time_;
 };
 

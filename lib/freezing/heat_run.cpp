@@ -133,11 +133,11 @@ HeatRun::HeatRun(const Project& p, Model& built, const project::RunOptions& opti
   if (built.shaft) results_ = std::make_unique<ShaftResults>(p, built);
   else {
     plain_ = std::make_unique<PlainResults>(p, built);
-    balance_.emplace(p.soil.porosity > 0.0 ? p.soil.porosity
+    balance_.emplace(*built.model,
+                     p.soil.porosity > 0.0 ? p.soil.porosity
                      : p.groundwater       ? p.groundwater->law.porosity
                                            : 0.0,
                      unit_);
-    balance_->sample(*built.model, 0.0);
   }
   if (extension_ && extension_->solid()) plain_->attach(extension_->solid());
   if (built.shaft && !p.monitoring.empty()) thermometers_.emplace(p, built);

@@ -25,11 +25,11 @@ Constituent read_constituent(const Node& n, bool with_latent_heat) {
 
 }  // namespace
 
-// Saturated ground, the step freezing curve: unfrozen, the pores hold water;
-// frozen, ice. Per unit volume:
+// Saturated ground: unfrozen, the pores hold water; frozen, ice (between
+// them, soil.freezing_curve). Per unit volume:
 //   rho C = (1 - n) rho_s c_s + n rho_f c_f          (f the pore fluid)
 //   k     = (1 - n) k_s + n k_f   (arithmetic)  or  k_s^(1-n) k_f^n   (geometric)
-//   latent heat = n rho_w L.
+//   latent heat = n rho_i L (the mass of the ice the pores hold).
 // The soil's density is the unfrozen bulk density; heat capacity and latent
 // heat are per kg of it, so that density x each is the volumetric value.
 Soil soil_from_constituents(const Node& n) {
@@ -113,9 +113,9 @@ void read_freezing_curve(const Node& soil_node, Soil& soil, double water_content
         n["beta"].problem("must be negative (less water stays liquid the colder), got " + n["beta"].shown());
       const Node w = water_content > 0.0 ? n["water_content"] : n["water_content"].required();
       c.water_content = w.positive().value_or(water_content > 0.0 ? water_content : 1.0);
-      // The share still liquid 60 K below the onset (the table's end).
-      const double onset = std::pow(c.water_content / c.alpha, 1.0 / c.beta);
-      if (c.beta < 0.0 && c.alpha * std::pow(onset + 60.0, c.beta) / c.water_content >= 0.5)
+      // The share still liquid at the phase law table's end.
+      const double Tf = soil.freezing_point;
+      if (c.beta < 0.0 && c.liquid_fraction(c.bottom(Tf), Tf) >= 0.5)
         n.problem("keeps half its water liquid 60 K below its onset: it never counts as frozen");
       break;
     }

@@ -30,10 +30,11 @@ struct PhaseProperties {
   bool anisotropic() const { return conductivity[0] != conductivity[1]; }
 };
 
-// How the pore water freezes below the freezing point (docs/reference/soil.md):
-// step (all at Tf), linear (over freezing_range), exponential (InterFrost:
-// S_w = S_r + (1 - S_r) exp(-((T - Tf)/W)^2)) or power (Anderson and Tice:
-// unfrozen water content w_u = alpha theta^beta, theta = Tf - T in K).
+// How the pore water freezes below the freezing point (docs/reference/common.md,
+// soil.freezing_curve): step (all at Tf), linear (over freezing_range),
+// exponential (InterFrost: S_w = S_r + (1 - S_r) exp(-((T - Tf)/W)^2)) or
+// power (Anderson and Tice: unfrozen water content w_u = alpha theta^beta,
+// theta = Tf - T in K, beta < 0; the liquid share min(1, w_u / w)).
 enum class CurveModel { step, linear, exponential, power };
 struct FreezingCurve {
   CurveModel model = CurveModel::step;
@@ -42,6 +43,14 @@ struct FreezingCurve {
   double alpha = 0.0, beta = 0.0;    // power: kg water per kg solid at theta = 1 K, and the exponent
   double water_content = 0.0;        // power: kg water per kg solid when unfrozen
   bool smooth() const { return model == CurveModel::exponential || model == CurveModel::power; }
+  // A smooth curve at freezing point Tf: the liquid share at T (1 at and
+  // above the onset); where the water begins to freeze (the power law
+  // theta* = (w / alpha)^(1/beta) below Tf); where the phase law's table
+  // ends (the exponential's share within 1e-6 of S_r, the power law 60 K
+  // below its onset, colder than any brine).
+  double liquid_fraction(double T, double Tf) const;
+  double onset(double Tf) const;
+  double bottom(double Tf) const;
 };
 
 struct Soil {

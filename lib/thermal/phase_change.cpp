@@ -2,8 +2,6 @@
 
 #include <algorithm>
 
-#include "thermal/freezing_curve.hpp"
-
 namespace frostwall::thermal {
 
 PhaseChangeLaw::PhaseChangeLaw(const project::Soil& soil)
@@ -29,9 +27,9 @@ PhaseChangeLaw::PhaseChangeLaw(const project::Soil& soil)
 // sensible heat, exact latent heat), then T and f at equal steps of H by
 // linear interpolation in that grid.
 void PhaseChangeLaw::tabulate(const project::Soil& soil) {
-  const SmoothCurve curve{soil.freezing_curve, soil.freezing_point};
-  Tf_ = curve.onset();
-  Ts_ = curve.bottom();
+  const auto& curve = soil.freezing_curve;
+  Tf_ = curve.onset(soil.freezing_point);
+  Ts_ = curve.bottom(soil.freezing_point);
   range_ = Tf_ - Ts_;
   constexpr int fine = 40000;
   const double dT = range_ / fine;
@@ -39,7 +37,7 @@ void PhaseChangeLaw::tabulate(const project::Soil& soil) {
   auto capacity = [&](double fi) { return rho_cs_ + fi * (rho_cl_ - rho_cs_); };
   for (int k = 0; k <= fine; ++k) {
     T[k] = Ts_ + k * dT;
-    f[k] = curve.liquid_fraction(T[k]);
+    f[k] = curve.liquid_fraction(T[k], soil.freezing_point);
   }
   f[fine] = 1.0;
   H[0] = 0.0;

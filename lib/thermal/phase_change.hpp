@@ -9,7 +9,7 @@
 // inside the range. The SPH paper's per-particle latent-heat accumulator is
 // this bookkeeping with range = 0.
 //
-// A smooth curve (exponential or power, thermal/freezing_curve.hpp) keeps
+// A smooth curve (exponential or power, project::FreezingCurve) keeps
 // the three pieces with Tf its onset and T_s its table's bottom; in between
 // T and f are tabulated at equal steps of H (H from the exact latent heat
 // rho L (1 - f) and the sensible capacity (1 - f) rho Cs + f rho Cl
