@@ -16,6 +16,7 @@ double PermeabilityLaw::relative(double liquid_fraction) const {
       break;
     }
     case PermeabilityModel::threshold: k = f >= threshold_liquid_fraction ? 1.0 : 0.0; break;
+    case PermeabilityModel::constant: break;
   }
   return std::max(k, floor);
 }
@@ -25,6 +26,7 @@ std::string PermeabilityLaw::name() const {
     case PermeabilityModel::impedance: return "impedance";
     case PermeabilityModel::kozeny_carman: return "kozeny_carman";
     case PermeabilityModel::threshold: return "threshold";
+    case PermeabilityModel::constant: return "constant";
   }
   return "?";
 }
@@ -32,7 +34,8 @@ std::string PermeabilityLaw::name() const {
 PermeabilityLaw permeability_law(const project::PermeabilitySettings& s) { return {s}; }
 
 bool permeability_model_from_name(const std::string& name, PermeabilityModel& model) {
-  for (auto m : {PermeabilityModel::impedance, PermeabilityModel::kozeny_carman, PermeabilityModel::threshold})
+  for (auto m : {PermeabilityModel::impedance, PermeabilityModel::kozeny_carman, PermeabilityModel::threshold,
+                 PermeabilityModel::constant})
     if (PermeabilityLaw{m}.name() == name) {
       model = m;
       return true;

@@ -6,7 +6,9 @@
 //    the InterFrost benchmarks: Omega = 50);
 //  - kozeny_carman: Kozeny-Carman on the liquid porosity n_l = n f,
 //    k_r = [n_l^3 / (1 - n_l)^2] / [n^3 / (1 - n)^2];
-//  - threshold: k_r = 1 while f >= f_c, impermeable below.
+//  - threshold: k_r = 1 while f >= f_c, impermeable below;
+//  - constant: k_r = 1, ice or not (water at a fixed velocity, as in the
+//    benchmarks with advection through frozen ground).
 // Every law is held at or above `floor` (relative), so the flow problem
 // stays solvable where the ground is frozen solid.
 #pragma once
@@ -31,7 +33,7 @@ struct PermeabilityLaw : project::PermeabilitySettings {
 // The law as the project file gives it.
 PermeabilityLaw permeability_law(const project::PermeabilitySettings& s);
 
-// "impedance", "kozeny_carman", "threshold"; false if unknown.
+// "impedance", "kozeny_carman", "threshold", "constant"; false if unknown.
 bool permeability_model_from_name(const std::string& name, PermeabilityModel& model);
 
 }  // namespace frostwall::groundwater

@@ -12,8 +12,9 @@ namespace frostwall::project {
 
 // How ice cuts the permeability, as given (groundwater/permeability_law.hpp
 // evaluates it): k_r = 10^(-impedance S_ice), Kozeny-Carman on the liquid
-// porosity, or a threshold liquid fraction; never below `floor`.
-enum class PermeabilityModel { impedance, kozeny_carman, threshold };
+// porosity, a threshold liquid fraction, or unchanged by ice (constant: the
+// fixed-velocity benchmarks); never below `floor`.
+enum class PermeabilityModel { impedance, kozeny_carman, threshold, constant };
 struct PermeabilitySettings {
   PermeabilityModel model = PermeabilityModel::impedance;
   double impedance = 7.0;                  // Omega

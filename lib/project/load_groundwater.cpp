@@ -38,7 +38,8 @@ Groundwater read_groundwater(const Node& n, bool plain) {
     if (const auto m = law["model"].required().choice<PermeabilityModel>(
             "permeability law", {{"impedance", PermeabilityModel::impedance},
                                  {"kozeny_carman", PermeabilityModel::kozeny_carman},
-                                 {"threshold", PermeabilityModel::threshold}}))
+                                 {"threshold", PermeabilityModel::threshold},
+                                 {"constant", PermeabilityModel::constant}}))
       g.law.model = *m;
     if (const auto omega = law["impedance"].positive()) g.law.impedance = *omega;
     if (law["impedance"].present() && g.law.model != PermeabilityModel::impedance)

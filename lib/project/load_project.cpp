@@ -228,6 +228,10 @@ void read_groundwater_block(const Node& root, bool shaft, Project& project) {
         // closure (docs/groundwater.md).
         if (!numerics["step_change"].present()) project.numerics.step_change = 1.0;
       }
+      if (g.law.model == PermeabilityModel::constant)
+        project.warnings.push_back(
+            R"(groundwater.permeability_law: "constant" lets water through frozen ground as through thawed )"
+            "(a benchmark's simplification); ice blocks real pores");
       if (shaft)
         project.warnings.push_back(
             "groundwater: a full-size run under flow takes minutes at a 4 cm spacing (projects/seepage_reference.json) "
