@@ -103,3 +103,26 @@ TEST_CASE("Freeze pipe films: laminar by hand, continuous where turbulence begin
   }
   CHECK(pipe_nusselt(5e4, 7.0, 0.0) > pipe_nusselt(2e4, 7.0, 0.0));
 }
+
+TEST_CASE("The brine driven by the heat the ground draws reproduces the brine driven by the wall",
+          "[design][brine][coaxial]") {
+  // The same pipe: the wall's solution gives each cell's draw; handed back
+  // as the draw, it must give the same temperatures, and the brine's gain
+  // must be the draw's sum.
+  const auto r = coaxial_resistances(pipe(), brine(), flow);
+  const double W = brine().density * brine().heat_capacity * flow;
+  for (auto s : {SupplyChannel::annulus, SupplyChannel::inner}) {
+    const int cells = 40;
+    const auto by_wall = steady_brine(length, cells, r, W, s, supply, [](double z) { return wall + 0.2 * z; });
+    const auto by_draw = brine_with_draw(length, cells, r, W, s, supply, [&](double z) {
+      return by_wall.draw[std::min(cells - 1, static_cast<int>(z / (length / cells)))];
+    });
+    for (int i = 0; i <= cells; ++i) {
+      CHECK(by_draw.down[i] == Approx(by_wall.down[i]).margin(1e-9));
+      CHECK(by_draw.up[i] == Approx(by_wall.up[i]).margin(1e-9));
+    }
+    double drawn = 0.0;
+    for (double q : by_draw.draw) drawn += q * length / cells;
+    CHECK(by_draw.heat == Approx(drawn).epsilon(1e-12));
+  }
+}

@@ -39,4 +39,11 @@ BrineProfile steady_brine(double length, int cells, const CoaxialResistances& r,
                           SupplyChannel supply_channel, double supply,
                           const std::function<double(double)>& wall_temperature);
 
+// The same circuit with the heat the ground gives the annulus prescribed
+// (W per metre at depth z, as the ground's sections drew it) instead of the
+// wall's temperature: R_ground then plays no part, and the brine's heat
+// gain is the drawn heat's integral over the cells (midpoint rule) exactly.
+BrineProfile brine_with_draw(double length, int cells, const CoaxialResistances& r, double capacity_rate,
+                             SupplyChannel supply_channel, double supply, const std::function<double(double)>& draw);
+
 }  // namespace frostwall::design
