@@ -20,6 +20,8 @@ errors halve from level to level and the limit is 2 d(1.5) - d(1).
 """
 import argparse, json, math, os, shutil, subprocess, sys, tempfile, time
 
+from freefem import run_freefem
+
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 EXE = os.path.join(ROOT, "build", "app", "frostwall")
 CASE = os.path.join(ROOT, "projects", "seepage_reference.json")
@@ -32,14 +34,7 @@ def run_peer(level, days, flux, work):
     """The peer at `level` to `days`: its JSON, with the script's wall time added."""
     out = os.path.join(work, f"peer_L{level:g}_d{days:g}.json")
     os.makedirs(os.path.join(work, "runs"), exist_ok=True)
-    start = time.perf_counter()
-    subprocess.run(["FreeFem++-nw", PEER, "-v", "0", "-level", f"{level:g}", "-q", f"{flux:g}", "-days", f"{days:g}",
-                    "-out", out], check=True, cwd=work, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-    wall = time.perf_counter() - start
-    with open(out) as f:
-        r = json.load(f)
-    r["script_wall_s"] = wall
-    return r
+    return run_freefem(PEER, ["-level", f"{level:g}", "-q", f"{flux:g}", "-days", f"{days:g}"], out, work)
 
 
 def peer_days(r):

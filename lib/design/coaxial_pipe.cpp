@@ -20,8 +20,7 @@ double konakov(double reynolds) { return std::pow(1.8 * std::log10(reynolds) - 1
 // linear in Re between the laminar value and the turbulent one at 1e4.
 double blended(double laminar, double factor, double reynolds, double prandtl, double diameter_over_length) {
   if (reynolds < laminar_below) return laminar;
-  if (reynolds >= turbulent_from)
-    return factor * turbulent(reynolds, prandtl, konakov(reynolds), diameter_over_length);
+  if (reynolds >= turbulent_from) return factor * turbulent(reynolds, prandtl, konakov(reynolds), diameter_over_length);
   const double g = (reynolds - laminar_below) / (turbulent_from - laminar_below);
   return (1.0 - g) * laminar + g * factor * turbulent(turbulent_from, prandtl, 0.0308, diameter_over_length);
 }
