@@ -60,3 +60,35 @@ TEST_CASE("Cooled face: energy lost equals the boundary flux integrated in time"
   CHECK(change < 0.0);
   CHECK(std::abs(change - r.boundary_heat) < 1e-6 * std::abs(change));
 }
+
+TEST_CASE("A time loop advanced in parts lands on each stop and, stopping at its snapshots, steps as in one run",
+          "[freezing][energy][time_loop]") {
+  // Invariants of the march: stops at the snapshots change no step (the
+  // same fields bit for bit); a stop between them is landed on exactly, and
+  // the heat through the boundaries still adds up to the change in storage.
+  auto build = [] {
+    return freezing::build_model(test::rectangle_project(
+        1.0, 1.0,
+        R"({ "left": { "temperature": -10.0 }, "right": "adiabatic", "top": "adiabatic", "bottom": "adiabatic" })",
+        R"("sand")", 5.0, 4000.0, test::numerics(1.0 / 20, "renormalised", "rkl2")));
+  };
+  const std::vector<double> snapshots{1000.0, 4000.0};
+  auto whole = build();
+  thermal::run_time_loop(*whole.model, *whole.integrator, 4000.0, snapshots, {});
+  auto parts = build();
+  thermal::TimeLoop loop(*parts.model, *parts.integrator, 4000.0, snapshots, {});
+  CHECK(loop.advance_to(1000.0) == 1000.0);
+  CHECK_FALSE(loop.done());
+  CHECK(loop.advance_to(1e9) == 4000.0);
+  CHECK(loop.done());
+  CHECK(parts.model->temperature() == whole.model->temperature());
+
+  auto between = build();
+  const double before = between.model->stored_heat();
+  thermal::TimeLoop stops(*between.model, *between.integrator, 4000.0, snapshots, {});
+  for (double stop : {333.0, 1000.0, 2718.0}) CHECK(stops.advance_to(stop) == stop);
+  stops.advance_to(4000.0);
+  double brought = 0.0;
+  for (double q : stops.result().boundary_heat) brought += q;
+  CHECK(between.model->stored_heat() - before == Approx(brought).epsilon(1e-9));
+}

@@ -1,5 +1,8 @@
 // Marches a model to the end time, landing exactly on every output time,
-// and tells observers after each step and at each snapshot.
+// and tells observers after each step and at each snapshot. A TimeLoop can
+// also be advanced in parts, to any stop in between (landing on it as on a
+// snapshot), so that several models can march side by side and exchange
+// what couples them at the stops.
 #pragma once
 
 #include <cstddef>
@@ -22,6 +25,31 @@ struct TimeLoopObservers {
 struct TimeLoopResult {
   std::size_t steps = 0;
   std::vector<double> boundary_heat;  // J that entered from each boundary
+};
+
+class TimeLoop {
+ public:
+  // Starts at t = 0: the boundaries applied and after_step called there.
+  // Snapshots ascending, in (0, t_end].
+  TimeLoop(ThermalModel& model, Integrator& integrator, double t_end, std::vector<double> snapshots,
+           TimeLoopObservers observers);
+  // Steps until the time reaches `stop` (or t_end, or finished() says so);
+  // returns the time reached.
+  double advance_to(double stop);
+  double time() const { return t_; }
+  bool done() const { return done_; }
+  const TimeLoopResult& result() const { return result_; }
+
+ private:
+  ThermalModel& model_;
+  Integrator& integrator_;
+  double t_end_;
+  std::vector<double> snapshots_;
+  TimeLoopObservers observers_;
+  TimeLoopResult result_;
+  std::size_t next_ = 0;
+  double t_ = 0.0;
+  bool done_ = false;
 };
 
 // Runs from t = 0 to t_end. Snapshots (ascending, in (0, t_end]) are hit
