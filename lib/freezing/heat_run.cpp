@@ -36,7 +36,7 @@ namespace fs = std::filesystem;
 namespace keys = summary::keys;
 using project::Project;
 
-namespace {
+namespace detail {
 
 // One run's state: built once (set-up), updated by the observers of the
 // time loop, and turned into the snapshot series and summary.json.
@@ -351,18 +351,33 @@ nlohmann::ordered_json HeatRun::summary(const thermal::TimeLoopResult& loop) con
   return summary;
 }
 
-}  // namespace
+// The scene's notes and the model's warnings, before the run.
+void tell(const Model& built, const project::RunOptions& options) {
+  if (!options.note) return;
+  for (const auto& n : built.scene->notes) options.note(n);
+  for (const auto& w : built.warnings) options.note("warning: " + w);
+}
+
+}  // namespace detail
 
 summary::Summary run_heat(const Project& p, Model& built, const project::RunOptions& options, RunExtension* extension) {
-  for (const auto& n : built.scene->notes)
-    if (options.note) options.note(n);
-  for (const auto& w : built.warnings)
-    if (options.note) options.note("warning: " + w);
-  HeatRun run(p, built, options, extension);
-  const thermal::TimeLoopResult loop =
-      thermal::run_time_loop(*built.model, *built.integrator, p.time.end, run.output_times(), run.observers());
-  return run.finish(loop);
+  SteppedHeatRun run(p, built, options, extension);
+  run.advance_to(p.time.end);
+  return run.finish();
 }
+
+SteppedHeatRun::SteppedHeatRun(const Project& p, Model& built, const project::RunOptions& options,
+                               RunExtension* extension)
+    : run_((detail::tell(built, options), std::make_unique<detail::HeatRun>(p, built, options, extension))),
+      loop_(std::make_unique<thermal::TimeLoop>(*built.model, *built.integrator, p.time.end, run_->output_times(),
+                                                run_->observers())) {}
+
+SteppedHeatRun::~SteppedHeatRun() = default;
+
+double SteppedHeatRun::advance_to(double t) { return loop_->advance_to(t); }
+bool SteppedHeatRun::done() const { return loop_->done(); }
+double SteppedHeatRun::time() const { return loop_->time(); }
+summary::Summary SteppedHeatRun::finish() { return run_->finish(loop_->result()); }
 
 summary::Summary run(const Project& p, const project::RunOptions& options) {
   check_run_inputs(p);

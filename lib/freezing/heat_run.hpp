@@ -8,6 +8,7 @@
 #pragma once
 
 #include <filesystem>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -18,6 +19,7 @@
 #include "project/project.hpp"
 #include "project/run_options.hpp"
 #include "summary/summary.hpp"
+#include "thermal/time_loop.hpp"
 
 namespace frostwall::freezing {
 
@@ -50,6 +52,29 @@ class RunExtension {
   virtual const SolidView* solid() const { return nullptr; }
   // Asked after every step: true ends the run there.
   virtual bool finished() const { return false; }
+};
+
+namespace detail {
+class HeatRun;
+}
+
+// A heat run marched in parts: what run_heat does, with the time loop
+// advanced to any stop in between (landing on it), so that runs coupled
+// through what they exchange can march side by side. finish() once done
+// writes the files and returns the summary.
+class SteppedHeatRun {
+ public:
+  SteppedHeatRun(const project::Project& p, Model& built, const project::RunOptions& options,
+                 RunExtension* extension = nullptr);
+  ~SteppedHeatRun();
+  double advance_to(double t);  // the time reached
+  bool done() const;
+  double time() const;
+  summary::Summary finish();
+
+ private:
+  std::unique_ptr<detail::HeatRun> run_;
+  std::unique_ptr<thermal::TimeLoop> loop_;
 };
 
 // Runs the model to the project's end time and writes everything into
