@@ -14,6 +14,16 @@
 
 namespace frostwall::test {
 
+// The shipped project patched, its output in `out`, as the loader reads it.
+inline project::Project shipped_project(const std::string& name, const nlohmann::json& patch,
+                                        const std::filesystem::path& out) {
+  std::ifstream in(std::filesystem::path(FROSTWALL_SOURCE_DIR) / "projects" / name);
+  nlohmann::json j = nlohmann::json::parse(in);
+  j.merge_patch(patch);
+  j["output"]["directory"] = out.string();
+  return project::parse_project(j.dump());
+}
+
 inline void run_shipped(const std::string& name, const nlohmann::json& patch, const std::filesystem::path& out) {
   std::ifstream in(std::filesystem::path(FROSTWALL_SOURCE_DIR) / "projects" / name);
   nlohmann::json j = nlohmann::json::parse(in);

@@ -9,7 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "freezing/heat_run.hpp"
-#include "paths.hpp"
+#include "shipped_run.hpp"
 #include "temp_dir.hpp"
 
 using namespace frostwall;
@@ -17,12 +17,11 @@ using namespace frostwall;
 namespace {
 
 project::Project scaled_ring(const std::filesystem::path& out) {
-  std::ifstream in(std::filesystem::path(FROSTWALL_SOURCE_DIR) / "projects" / "single_ring_sand.json");
-  nlohmann::json j = nlohmann::json::parse(in);
-  j.merge_patch({{"numerics", {{"spacing", 0.05}, {"error_estimate", false}}},
-                 {"time", {{"end", 20}, {"unit", "d"}, {"snapshots", {10, 20}}}},
-                 {"output", {{"directory", out.string()}, {"vtk", false}, {"report", false}}}});
-  return project::parse_project(j.dump());
+  return test::shipped_project("single_ring_sand.json",
+                               {{"numerics", {{"spacing", 0.05}, {"error_estimate", false}}},
+                                {"time", {{"end", 20}, {"unit", "d"}, {"snapshots", {10, 20}}}},
+                                {"output", {{"vtk", false}, {"report", false}}}},
+                               out);
 }
 
 nlohmann::json summary_of(const std::filesystem::path& out) {

@@ -377,6 +377,7 @@ SteppedHeatRun::~SteppedHeatRun() = default;
 double SteppedHeatRun::advance_to(double t) { return loop_->advance_to(t); }
 bool SteppedHeatRun::done() const { return loop_->done(); }
 double SteppedHeatRun::time() const { return loop_->time(); }
+const thermal::TimeLoopResult& SteppedHeatRun::loop() const { return loop_->result(); }
 summary::Summary SteppedHeatRun::finish() { return run_->finish(loop_->result()); }
 
 summary::Summary run(const Project& p, const project::RunOptions& options) {

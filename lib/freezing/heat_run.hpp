@@ -70,6 +70,7 @@ class SteppedHeatRun {
   double advance_to(double t);  // the time reached
   bool done() const;
   double time() const;
+  const thermal::TimeLoopResult& loop() const;  // the steps and boundary heat so far
   summary::Summary finish();
 
  private:

@@ -75,6 +75,11 @@ class ThermalModel {
   const PhaseChangeLaw& law_of(std::size_t i) const { return laws_[material(i)]; }
   const particles::PairWeights& pairs() const { return pairs_; }
   const std::vector<FixedTemperatureBoundary>& boundaries() const { return boundaries_; }
+  // A boundary's schedule replaced during a run (the brine a coupled
+  // circuit delivers); applied from the next apply_boundaries().
+  void set_boundary_temperature(std::size_t b, project::TemperatureSchedule schedule) {
+    boundaries_[b].temperature = std::move(schedule);
+  }
 
   // Fixed particles take their boundary's temperature at time t (on the
   // wall), or its antisymmetric extension of the current field (beyond).

@@ -1,0 +1,122 @@
+#include "freezing/brine_sections.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <stdexcept>
+
+#include "freezing/heat_run.hpp"
+#include "freezing/model.hpp"
+
+namespace frostwall::freezing {
+
+namespace {
+
+// The hat functions of linear interpolation between sorted depths (held
+// beyond the ends), at z.
+std::vector<double> hats(const std::vector<double>& depth, double z) {
+  std::vector<double> phi(depth.size(), 0.0);
+  if (z <= depth.front()) phi.front() = 1.0;
+  else if (z >= depth.back()) phi.back() = 1.0;
+  else
+    for (std::size_t k = 0; k + 1 < depth.size(); ++k)
+      if (z >= depth[k] && z <= depth[k + 1]) {
+        const double s = (z - depth[k]) / (depth[k + 1] - depth[k]);
+        phi[k] = 1.0 - s, phi[k + 1] = s;
+        break;
+      }
+  return phi;
+}
+
+// One section marched in the circuit.
+struct Marching {
+  Model model;
+  std::unique_ptr<SteppedHeatRun> run;
+  std::size_t pipe = 0;      // the pipe boundary
+  double pipes_in = 1.0;     // whole pipes' worth of wall in the section
+  double heat_before = 0.0;  // J per metre of section, through the pipe walls, up to the last stop
+};
+
+}  // namespace
+
+CircuitRun run_brine_circuit(const std::vector<CircuitSection>& sections, const CircuitSettings& s,
+                             const project::RunOptions& options) {
+  if (sections.empty()) throw std::invalid_argument("run_brine_circuit: no section");
+  const auto r = design::coaxial_resistances(s.pipe, s.brine, s.flow);
+  const double W = s.brine.density * s.brine.heat_capacity * s.flow;
+  const double h = 1.0 / (M_PI * s.pipe.outer_diameter * r.ground);
+  std::vector<double> depth;
+  for (const auto& c : sections) depth.push_back(c.depth);
+  if (!std::is_sorted(depth.begin(), depth.end())) throw std::invalid_argument("run_brine_circuit: depths not sorted");
+
+  CircuitRun out;
+  // Each section's weight: its hat function on the cells' midpoints, as the
+  // brine's march samples the draw.
+  out.weights.assign(sections.size(), 0.0);
+  const double cell = s.pipe.length / s.cells;
+  for (int c = 0; c < s.cells; ++c) {
+    const auto phi = hats(depth, (c + 0.5) * cell);
+    for (std::size_t k = 0; k < phi.size(); ++k) out.weights[k] += cell * phi[k];
+  }
+
+  std::vector<project::Project> projects;
+  for (const auto& c : sections) {
+    auto p = c.project;
+    auto& pipe = std::get<project::ShaftSection>(p.geometry).pipe;
+    pipe.boundary = project::PipeBoundary::brine;
+    pipe.heat_transfer_coefficient = h;
+    pipe.annulus.reset();
+    pipe.temperature = project::TemperatureSchedule::fixed(s.supply.at(0.0));
+    projects.push_back(std::move(p));
+  }
+  std::vector<Marching> runs(sections.size());
+  for (std::size_t k = 0; k < sections.size(); ++k) {
+    auto& m = runs[k];
+    m.model = build_model(projects[k]);
+    m.pipe = static_cast<std::size_t>(m.model.shaft->pipe_boundary);
+    const auto& film = *m.model.model->boundaries()[m.pipe].film;
+    m.pipes_in = 0.0;
+    for (double l : film.perimeter) m.pipes_in += l / film.full_perimeter;
+    m.run = std::make_unique<SteppedHeatRun>(projects[k], m.model, options);
+  }
+
+  const double end = projects.front().time.end;
+  double t = 0.0;
+  while (t < end) {
+    const double stop = std::min(end, t + s.interval);
+    std::vector<double> draw(runs.size());
+    for (std::size_t k = 0; k < runs.size(); ++k) {
+      auto& m = runs[k];
+      m.run->advance_to(stop);
+      const double heat = m.run->loop().boundary_heat[m.pipe];        // J per metre entered through the walls
+      draw[k] = -(heat - m.heat_before) / ((stop - t) * m.pipes_in);  // W per metre of one pipe
+      out.ground_heat += -(heat - m.heat_before) / m.pipes_in * out.weights[k] * s.pipes;
+      m.heat_before = heat;
+    }
+    const double supply = s.supply.at(stop);
+    const auto profile = design::brine_with_draw(s.pipe.length, s.cells, r, W, s.channel, supply, [&](double z) {
+      const auto phi = hats(depth, z);
+      double q = 0.0;
+      for (std::size_t k = 0; k < phi.size(); ++k) q += phi[k] * draw[k];
+      return q;
+    });
+    PlantRow row{stop, s.pipes * profile.heat, supply, profile.return_temperature, {}};
+    const auto& annulus = profile.annulus(s.channel);
+    for (std::size_t k = 0; k < runs.size(); ++k) {
+      // The annulus at the section's depth, linear between the faces.
+      const double x = std::clamp(depth[k] / cell, 0.0, double(s.cells));
+      const std::size_t i = std::min<std::size_t>(static_cast<std::size_t>(x), s.cells - 1);
+      const double T = annulus[i] + (x - i) * (annulus[i + 1] - annulus[i]);
+      row.brine.push_back(T);
+      runs[k].model.model->set_boundary_temperature(runs[k].pipe, project::TemperatureSchedule::fixed(T));
+      runs[k].model.model->apply_boundaries(stop);
+    }
+    out.plant_heat += row.load * (stop - t);
+    out.series.push_back(std::move(row));
+    t = stop;
+  }
+  for (auto& m : runs) out.sections.push_back(m.run->finish());
+  return out;
+}
+
+}  // namespace frostwall::freezing

@@ -1,0 +1,62 @@
+// Cross-sections of one shaft at several depths coupled through the brine
+// of their coaxial freeze pipes. Each section is a full heat run (its pipes
+// held by brine behind a film, h = 1 / (pi d R_ground): the annulus' film
+// and the freeze pipe's wall, design/coaxial_pipe.hpp), marched side by side
+// with the others to the exchange stops. At each stop:
+//  - each section's pipes drew, over the interval, the heat that left its
+//    ground through the pipe walls, per metre of one pipe (a pipe on a
+//    mirror line counts by its wall's share in the section);
+//  - along the pipe the draw is interpolated linearly between the sections'
+//    depths (held beyond the first and the last);
+//  - the brine's temperatures follow (design::brine_with_draw) with the
+//    supply of the stop, and each section's brine for the next interval is
+//    the annulus' temperature at its depth.
+// The brine is steady (its own heat capacity left out), so the plant's load
+// is the pipes' draw: n m c (T_return - T_supply) equals the sections'
+// drawn heat integrated along the pipe with the same weights, to round-off.
+#pragma once
+
+#include <vector>
+
+#include "design/brine_circuit.hpp"
+#include "project/project.hpp"
+#include "project/run_options.hpp"
+#include "summary/summary.hpp"
+
+namespace frostwall::freezing {
+
+struct CircuitSection {
+  project::Project project;  // a shaft section (its output directory its own)
+  double depth = 0.0;        // m below the pipe's top
+};
+
+struct CircuitSettings {
+  design::CoaxialPipe pipe;
+  design::Brine brine;
+  double flow = 0.0;  // m3/s per pipe
+  design::SupplyChannel channel = design::SupplyChannel::annulus;
+  project::TemperatureSchedule supply;
+  int pipes = 1;          // pipes on the plant, in parallel
+  double interval = 0.0;  // s between exchanges
+  int cells = 200;        // along the pipe
+};
+
+struct PlantRow {
+  double time = 0.0;  // s
+  double load = 0.0;  // W, all pipes
+  double supply = 0.0, return_temperature = 0.0;
+  std::vector<double> brine;  // the annulus' temperature at each section's depth, for the next interval
+};
+
+struct CircuitRun {
+  std::vector<summary::Summary> sections;
+  std::vector<PlantRow> series;
+  double plant_heat = 0.0;      // J: the loads over their intervals
+  double ground_heat = 0.0;     // J: the sections' pipe walls' heat, all pipes, with the depth weights
+  std::vector<double> weights;  // m of pipe each section stands for
+};
+
+CircuitRun run_brine_circuit(const std::vector<CircuitSection>& sections, const CircuitSettings& settings,
+                             const project::RunOptions& options);
+
+}  // namespace frostwall::freezing
