@@ -108,3 +108,37 @@ TEST_CASE("Sections coupled through fast brine close as with the brine held at t
   CHECK(last.return_temperature - last.supply < 0.1);
   for (const auto& section : c.run.sections) CHECK(closure(section) == Approx(held).epsilon(2e-3));
 }
+
+TEST_CASE("A plant at its capacity: the supply falls to its coldest, the load stays within the capacity",
+          "[freezing][brine][circuit]") {
+  // 26 pipes at 1.5 m3/h drawing up to 150 kW: at start-up the warm ground
+  // would take more at -30 C, so the supply sits higher and falls as the
+  // ground cools, to -30 C, where the load falls below the capacity. The
+  // wall closes later than with an unlimited plant at -30 C.
+  test::TempDir top("capacity_top"), deep("capacity_deep");
+  auto s = circuit(1.5);
+  s.capacity = 150e3;
+  s.min_supply = -30.0;
+  const auto limited = freezing::run_brine_circuit({{ring(top.path), 5.0}, {ring(deep.path), 25.0}}, s, {});
+  Circuit unlimited(1.5);
+  const auto& rows = limited.series;
+  double peak = 0.0;
+  std::size_t first_at_min = rows.size();
+  for (std::size_t k = 0; k < rows.size(); ++k) {
+    peak = std::max(peak, rows[k].load);
+    if (rows[k].supply <= -30.0 && first_at_min == rows.size()) first_at_min = k;
+    if (k > 0) CHECK(rows[k].supply <= rows[k - 1].supply + 0.01);  // falling (the predictor wobbles by mK)
+  }
+  fmt::print("\nPlant at 150 kW: supply {:.2f} C on day {:.2f}, at -30 C from day {:.2f}; peak load {:.1f} kW; "
+             "closure {:.3f} / {:.3f} d against {:.3f} / {:.3f} d unlimited\n",
+             rows.front().supply, rows.front().time / 86400,
+             first_at_min < rows.size() ? rows[first_at_min].time / 86400 : -1.0, peak / 1e3,
+             closure(limited.sections[0]), closure(limited.sections[1]), closure(unlimited.run.sections[0]),
+             closure(unlimited.run.sections[1]));
+  CHECK(rows.front().supply > -25.0);
+  REQUIRE(first_at_min < rows.size());
+  CHECK(rows.back().load < 150e3);
+  CHECK(peak < 150e3 * 1.01);
+  CHECK(limited.plant_heat == Approx(limited.ground_heat).epsilon(1e-12));
+  for (std::size_t k = 0; k < 2; ++k) CHECK(closure(limited.sections[k]) > closure(unlimited.run.sections[k]));
+}

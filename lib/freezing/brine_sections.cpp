@@ -66,7 +66,7 @@ CircuitRun run_brine_circuit(const std::vector<CircuitSection>& sections, const 
     pipe.boundary = project::PipeBoundary::brine;
     pipe.heat_transfer_coefficient = h;
     pipe.annulus.reset();
-    pipe.temperature = project::TemperatureSchedule::fixed(s.supply.at(0.0));
+    pipe.temperature = project::TemperatureSchedule::fixed(s.capacity ? s.min_supply : s.supply.at(0.0));
     projects.push_back(std::move(p));
   }
   std::vector<Marching> runs(sections.size());
@@ -81,36 +81,60 @@ CircuitRun run_brine_circuit(const std::vector<CircuitSection>& sections, const 
   }
 
   const double end = projects.front().time.end;
+  const double film = h * M_PI * s.pipe.outer_diameter;  // W/(m K) per metre of pipe
+  std::vector<double> brine(runs.size()), wall(runs.size());
+  for (std::size_t k = 0; k < runs.size(); ++k)
+    brine[k] = wall[k] = s.capacity ? projects[k].domain.initial_temperature : s.supply.at(0.0);
+  std::vector<double> draw(runs.size(), 0.0), warming(runs.size(), 0.0);  // W/m; K above the supply
   double t = 0.0;
+  auto set_brine = [&](double supply, double at) {
+    for (std::size_t k = 0; k < runs.size(); ++k) {
+      brine[k] = supply + warming[k];
+      runs[k].model.model->set_boundary_temperature(runs[k].pipe, project::TemperatureSchedule::fixed(brine[k]));
+      runs[k].model.model->apply_boundaries(at);
+    }
+  };
+  // The supply for the coming interval: scheduled, or the one drawing P.
+  auto next_supply = [&](double at) {
+    if (!s.capacity) return s.supply.at(at);
+    double weight = 0.0, sum = 0.0;
+    for (std::size_t k = 0; k < runs.size(); ++k)
+      weight += out.weights[k], sum += out.weights[k] * (wall[k] - warming[k]);
+    return std::max(s.min_supply, (sum - *s.capacity / (s.pipes * film)) / weight);
+  };
+  set_brine(next_supply(0.0), 0.0);
   while (t < end) {
     const double stop = std::min(end, t + s.interval);
-    std::vector<double> draw(runs.size());
     for (std::size_t k = 0; k < runs.size(); ++k) {
       auto& m = runs[k];
       m.run->advance_to(stop);
       const double heat = m.run->loop().boundary_heat[m.pipe];        // J per metre entered through the walls
       draw[k] = -(heat - m.heat_before) / ((stop - t) * m.pipes_in);  // W per metre of one pipe
+      wall[k] = brine[k] + draw[k] / film;                            // the wall's mean over the interval
       out.ground_heat += -(heat - m.heat_before) / m.pipes_in * out.weights[k] * s.pipes;
       m.heat_before = heat;
     }
-    const double supply = s.supply.at(stop);
-    const auto profile = design::brine_with_draw(s.pipe.length, s.cells, r, W, s.channel, supply, [&](double z) {
-      const auto phi = hats(depth, z);
-      double q = 0.0;
-      for (std::size_t k = 0; k < phi.size(); ++k) q += phi[k] * draw[k];
-      return q;
-    });
-    PlantRow row{stop, s.pipes * profile.heat, supply, profile.return_temperature, {}};
-    const auto& annulus = profile.annulus(s.channel);
+    auto profile_at = [&](double supply) {
+      return design::brine_with_draw(s.pipe.length, s.cells, r, W, s.channel, supply, [&](double z) {
+        const auto phi = hats(depth, z);
+        double q = 0.0;
+        for (std::size_t k = 0; k < phi.size(); ++k) q += phi[k] * draw[k];
+        return q;
+      });
+    };
+    // The brine's warming to each section's depth at these draws (the same
+    // at any supply: the circuit is linear).
+    const auto base = profile_at(0.0);
+    const auto& annulus = base.annulus(s.channel);
     for (std::size_t k = 0; k < runs.size(); ++k) {
-      // The annulus at the section's depth, linear between the faces.
       const double x = std::clamp(depth[k] / cell, 0.0, double(s.cells));
       const std::size_t i = std::min<std::size_t>(static_cast<std::size_t>(x), s.cells - 1);
-      const double T = annulus[i] + (x - i) * (annulus[i + 1] - annulus[i]);
-      row.brine.push_back(T);
-      runs[k].model.model->set_boundary_temperature(runs[k].pipe, project::TemperatureSchedule::fixed(T));
-      runs[k].model.model->apply_boundaries(stop);
+      warming[k] = annulus[i] + (x - i) * (annulus[i + 1] - annulus[i]);
     }
+    const double supply = next_supply(stop);
+    PlantRow row{stop, s.pipes * base.heat, supply, supply + base.return_temperature, {}};
+    set_brine(supply, stop);
+    row.brine = brine;
     out.plant_heat += row.load * (stop - t);
     out.series.push_back(std::move(row));
     t = stop;

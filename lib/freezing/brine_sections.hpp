@@ -14,8 +14,18 @@
 // The brine is steady (its own heat capacity left out), so the plant's load
 // is the pipes' draw: n m c (T_return - T_supply) equals the sections'
 // drawn heat integrated along the pipe with the same weights, to round-off.
+//
+// The supply follows its schedule, or the plant runs at a capacity P: the
+// supply is then the one whose brine draws P over the coming interval, as
+// far as the last interval tells (each section's film h pi d (T_w - T_b)
+// with its wall's mean temperature over the last interval, T_b the supply
+// plus the brine's warming to that depth at the last draws), never colder
+// than the plant's coldest supply. Warm ground at start-up takes P at a
+// supply well above the coldest; as it cools the supply falls to it and the
+// load below P.
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include "design/brine_circuit.hpp"
@@ -35,10 +45,12 @@ struct CircuitSettings {
   design::Brine brine;
   double flow = 0.0;  // m3/s per pipe
   design::SupplyChannel channel = design::SupplyChannel::annulus;
-  project::TemperatureSchedule supply;
-  int pipes = 1;          // pipes on the plant, in parallel
-  double interval = 0.0;  // s between exchanges
-  int cells = 200;        // along the pipe
+  project::TemperatureSchedule supply;  // without a capacity
+  std::optional<double> capacity;       // W: the plant at its capacity
+  double min_supply = 0.0;              // degC, with a capacity
+  int pipes = 1;                        // pipes on the plant, in parallel
+  double interval = 0.0;                // s between exchanges
+  int cells = 200;                      // along the pipe
 };
 
 struct PlantRow {
