@@ -142,3 +142,45 @@ TEST_CASE("A plant at its capacity: the supply falls to its coldest, the load st
   CHECK(limited.plant_heat == Approx(limited.ground_heat).epsilon(1e-12));
   for (std::size_t k = 0; k < 2; ++k) CHECK(closure(limited.sections[k]) > closure(unlimited.run.sections[k]));
 }
+
+TEST_CASE("Warm sand over clay: the clay sees brine warmed by the sand and closes as that brine says",
+          "[freezing][brine][circuit]") {
+  // The sand at 5 m and the clay at 25 m of the pipe (both single rings,
+  // scaled). The clay closes later than with the brine held at the supply;
+  // held instead at the brine the circuit gave it (step by step in time), it
+  // closes on the same day: the delay is the warmer brine's, nothing else.
+  test::TempDir sand_dir("warm_sand"), clay_dir("warm_clay"), held_dir("clay_held"), cold_dir("clay_cold");
+  auto clay = [](const std::filesystem::path& out) {
+    return test::shipped_project("single_ring_clay.json",
+                                 {{"numerics", {{"spacing", 0.05}, {"error_estimate", false}}},
+                                  {"time", {{"end", 25}, {"unit", "d"}, {"snapshots", {25}}}},
+                                  {"output", {{"vtk", false}, {"report", false}}}},
+                                 out);
+  };
+  auto sand = ring(sand_dir.path);
+  sand.time = clay(sand_dir.path).time;
+  const auto s = circuit(1.5);
+  const auto run = freezing::run_brine_circuit({{sand, 5.0}, {clay(clay_dir.path), 25.0}}, s, {});
+  const auto r = design::coaxial_resistances(s.pipe, s.brine, s.flow);
+  auto held_at = [&](const std::filesystem::path& out, project::TemperatureSchedule brine) {
+    auto p = clay(out);
+    auto& pipe = std::get<project::ShaftSection>(p.geometry).pipe;
+    pipe.boundary = project::PipeBoundary::brine;
+    pipe.heat_transfer_coefficient = 1.0 / (M_PI * s.pipe.outer_diameter * r.ground);
+    pipe.temperature = std::move(brine);
+    auto m = freezing::build_model(p);
+    return closure(freezing::run_heat(p, m, {}));
+  };
+  project::TemperatureSchedule seen{{{0.0, -30.0}}};  // the first interval at the supply
+  for (const auto& row : run.series) {
+    seen.points.push_back({row.time - 1.0, seen.points.back().second});
+    seen.points.push_back({row.time, row.brine[1]});
+  }
+  const double coupled = closure(run.sections[1]), replayed = held_at(held_dir.path, seen),
+               cold = held_at(cold_dir.path, project::TemperatureSchedule::fixed(-30.0));
+  fmt::print("\nWarm sand over clay: the clay's brine {:.2f} C on day 1, {:.2f} C on day 15; closure {:.3f} d coupled, "
+             "{:.3f} d held at that brine, {:.3f} d at the supply\n",
+             run.series[19].brine[1], run.series[299].brine[1], coupled, replayed, cold);
+  CHECK(coupled > cold);
+  CHECK(coupled == Approx(replayed).epsilon(2e-3));
+}
