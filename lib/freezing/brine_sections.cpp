@@ -42,6 +42,8 @@ struct Marching {
 CircuitRun run_brine_circuit(const std::vector<CircuitSection>& sections, const CircuitSettings& s,
                              const project::RunOptions& options) {
   if (sections.empty()) throw std::invalid_argument("run_brine_circuit: no section");
+  if (!(s.interval > 0.0) || s.cells < 1 || !(s.flow > 0.0) || s.pipes < 1)
+    throw std::invalid_argument("run_brine_circuit: interval, cells, flow and pipes must be positive");
   const auto r = design::coaxial_resistances(s.pipe, s.brine, s.flow);
   const double W = s.brine.density * s.brine.heat_capacity * s.flow;
   const double h = 1.0 / (M_PI * s.pipe.outer_diameter * r.ground);
