@@ -11,7 +11,7 @@ wedge, one core) at a few levels, in one script run, one after the other.
   python3 bench/clay_peer.py --step                   # and the step-law clay
   python3 bench/clay_peer.py --levels 1 2 --spacings 0.03,0.02
   python3 bench/clay_peer.py --no-frostwall --levels 2 3 3.5
-  python3 bench/clay_peer.py --exe /tmp/frostwall     # another frostwall binary
+  python3 bench/clay_peer.py --exe other/build/app/frostwall   # another frostwall binary
   python3 bench/clay_peer.py --step --dt-check        # also the finest level at half its step
 
 Frostwall runs a temporary copy of the project (end --days, no VTK, report

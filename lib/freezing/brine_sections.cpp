@@ -46,7 +46,8 @@ CircuitRun run_brine_circuit(const std::vector<CircuitSection>& sections, const 
     throw std::invalid_argument("run_brine_circuit: interval, cells, flow and pipes must be positive");
   const auto r = design::coaxial_resistances(s.pipe, s.brine, s.flow);
   const double W = s.brine.density * s.brine.heat_capacity * s.flow;
-  const double h = 1.0 / (M_PI * s.pipe.outer_diameter * r.ground);
+  const double film = 1.0 / r.ground;                      // W/(m K) per metre of pipe
+  const double h = film / (M_PI * s.pipe.outer_diameter);  // on the pipe's outer wall
   std::vector<double> depth;
   for (const auto& c : sections) depth.push_back(c.depth);
   if (!std::is_sorted(depth.begin(), depth.end())) throw std::invalid_argument("run_brine_circuit: depths not sorted");
@@ -68,7 +69,7 @@ CircuitRun run_brine_circuit(const std::vector<CircuitSection>& sections, const 
     pipe.boundary = project::PipeBoundary::brine;
     pipe.heat_transfer_coefficient = h;
     pipe.annulus.reset();
-    pipe.temperature = project::TemperatureSchedule::fixed(s.capacity ? s.min_supply : s.supply.at(0.0));
+    pipe.temperature = project::TemperatureSchedule::fixed(s.supply.at(0.0));  // set again before the first step
     projects.push_back(std::move(p));
   }
   std::vector<Marching> runs(sections.size());
@@ -83,10 +84,10 @@ CircuitRun run_brine_circuit(const std::vector<CircuitSection>& sections, const 
   }
 
   const double end = projects.front().time.end;
-  const double film = h * M_PI * s.pipe.outer_diameter;  // W/(m K) per metre of pipe
+  // Each section's brine, and its wall's mean temperature over the last
+  // interval (at the start, the ground's).
   std::vector<double> brine(runs.size()), wall(runs.size());
-  for (std::size_t k = 0; k < runs.size(); ++k)
-    brine[k] = wall[k] = s.capacity ? projects[k].domain.initial_temperature : s.supply.at(0.0);
+  for (std::size_t k = 0; k < runs.size(); ++k) wall[k] = projects[k].domain.initial_temperature;
   std::vector<double> draw(runs.size(), 0.0), warming(runs.size(), 0.0);  // W/m; K above the supply
   double t = 0.0;
   auto set_brine = [&](double supply, double at) {
@@ -116,17 +117,14 @@ CircuitRun run_brine_circuit(const std::vector<CircuitSection>& sections, const 
       out.ground_heat += -(heat - m.heat_before) / m.pipes_in * out.weights[k] * s.pipes;
       m.heat_before = heat;
     }
-    auto profile_at = [&](double supply) {
-      return design::brine_with_draw(s.pipe.length, s.cells, r, W, s.channel, supply, [&](double z) {
-        const auto phi = hats(depth, z);
-        double q = 0.0;
-        for (std::size_t k = 0; k < phi.size(); ++k) q += phi[k] * draw[k];
-        return q;
-      });
-    };
     // The brine's warming to each section's depth at these draws (the same
-    // at any supply: the circuit is linear).
-    const auto base = profile_at(0.0);
+    // at any supply: the circuit is linear), from a supply at 0.
+    const auto base = design::brine_with_draw(s.pipe.length, s.cells, r, W, s.channel, 0.0, [&](double z) {
+      const auto phi = hats(depth, z);
+      double q = 0.0;
+      for (std::size_t k = 0; k < phi.size(); ++k) q += phi[k] * draw[k];
+      return q;
+    });
     const auto& annulus = base.annulus(s.channel);
     for (std::size_t k = 0; k < runs.size(); ++k) {
       const double x = std::clamp(depth[k] / cell, 0.0, double(s.cells));

@@ -97,6 +97,10 @@ HeatRun::HeatRun(const Project& p, Model& built, const project::RunOptions& opti
       extension_(extension),
       out_(p.output.directory),
       unit_(p.time.unit_seconds()) {
+  if (options.note) {  // the scene's notes and the model's warnings, before the run
+    for (const auto& n : built.scene->notes) options.note(n);
+    for (const auto& w : built.warnings) options.note("warning: " + w);
+  }
   fs::create_directories(out_);
   if (!options.project_text.empty()) io::write_text_file(out_ / "project.json", options.project_text);
   stems_ = snapshot_stems(p.time, "field");
@@ -351,13 +355,6 @@ nlohmann::ordered_json HeatRun::summary(const thermal::TimeLoopResult& loop) con
   return summary;
 }
 
-// The scene's notes and the model's warnings, before the run.
-void tell(const Model& built, const project::RunOptions& options) {
-  if (!options.note) return;
-  for (const auto& n : built.scene->notes) options.note(n);
-  for (const auto& w : built.warnings) options.note("warning: " + w);
-}
-
 }  // namespace detail
 
 summary::Summary run_heat(const Project& p, Model& built, const project::RunOptions& options, RunExtension* extension) {
@@ -368,7 +365,7 @@ summary::Summary run_heat(const Project& p, Model& built, const project::RunOpti
 
 SteppedHeatRun::SteppedHeatRun(const Project& p, Model& built, const project::RunOptions& options,
                                RunExtension* extension)
-    : run_((detail::tell(built, options), std::make_unique<detail::HeatRun>(p, built, options, extension))),
+    : run_(std::make_unique<detail::HeatRun>(p, built, options, extension)),
       loop_(std::make_unique<thermal::TimeLoop>(*built.model, *built.integrator, p.time.end, run_->output_times(),
                                                 run_->observers())) {}
 
@@ -376,7 +373,6 @@ SteppedHeatRun::~SteppedHeatRun() = default;
 
 double SteppedHeatRun::advance_to(double t) { return loop_->advance_to(t); }
 bool SteppedHeatRun::done() const { return loop_->done(); }
-double SteppedHeatRun::time() const { return loop_->time(); }
 const thermal::TimeLoopResult& SteppedHeatRun::loop() const { return loop_->result(); }
 summary::Summary SteppedHeatRun::finish() { return run_->finish(loop_->result()); }
 

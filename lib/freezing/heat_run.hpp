@@ -69,7 +69,6 @@ class SteppedHeatRun {
   ~SteppedHeatRun();
   double advance_to(double t);  // the time reached
   bool done() const;
-  double time() const;
   const thermal::TimeLoopResult& loop() const;  // the steps and boundary heat so far
   summary::Summary finish();
 

@@ -45,10 +45,9 @@ AxisRows axis_rows(double L, Side lo, Side hi, double s, int layers) {
   return a;
 }
 
-Side side_kind(const project::Rectangle& rect, int s) {
-  const std::array<const project::SideCondition*, 4> sides{&rect.left, &rect.right, &rect.bottom, &rect.top};
-  if (is_fixed(*sides[s])) return Side::fixed;
-  return rect.heads[s] ? Side::open : Side::mirror;
+Side side_kind(const project::SideCondition& condition, const std::optional<double>& head) {
+  if (is_fixed(condition)) return Side::fixed;
+  return head ? Side::open : Side::mirror;
 }
 
 }  // namespace
@@ -56,8 +55,11 @@ Side side_kind(const project::Rectangle& rect, int s) {
 RectangleScene build_rectangle(const project::Rectangle& rect, double spacing, double h) {
   RectangleScene scene;
   const int layers = static_cast<int>(std::ceil(2.0 * h / spacing - 1e-9));
+  // The sides in the order left, right, bottom, top (Rectangle::heads').
+  const std::array<std::pair<const char*, const project::SideCondition*>, 4> sides{
+      {{"left", &rect.left}, {"right", &rect.right}, {"bottom", &rect.bottom}, {"top", &rect.top}}};
   std::array<Side, 4> kind;
-  for (int s = 0; s < 4; ++s) kind[s] = side_kind(rect, s);
+  for (int s = 0; s < 4; ++s) kind[s] = side_kind(*sides[s].second, rect.heads[s]);
   const AxisRows X = axis_rows(rect.width, kind[0], kind[1], spacing, layers);
   const AxisRows Y = axis_rows(rect.height, kind[2], kind[3], spacing, layers);
   scene.spacing = {X.spacing, Y.spacing};
@@ -66,10 +68,8 @@ RectangleScene build_rectangle(const project::Rectangle& rect, double spacing, d
       scene.notes.push_back(fmt::format("numerics.spacing: {:.6g} m along {} to fit the rectangle (asked {:.6g} m)",
                                         scene.spacing[d], d == 0 ? "x" : "y", spacing));
 
-  // Boundary ids in the order left, right, bottom, top (fixed and open
-  // sides); a corner particle beyond two such sides belongs to the first.
-  const std::array<std::pair<const char*, const project::SideCondition*>, 4> sides{
-      {{"left", &rect.left}, {"right", &rect.right}, {"bottom", &rect.bottom}, {"top", &rect.top}}};
+  // Boundary ids in the sides' order (fixed and open sides); a corner
+  // particle beyond two such sides belongs to the first.
   std::array<int, 4> id{-1, -1, -1, -1};
   for (int s = 0; s < 4; ++s) {
     if (kind[s] == Side::mirror) continue;

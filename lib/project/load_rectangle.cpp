@@ -13,14 +13,14 @@ namespace frostwall::project::detail {
 // "head": h} or {"head": h} (adiabatic, water flows through it).
 SideCondition read_side(const Node& n, std::optional<double>& head) {
   if (!n.given()) return Adiabatic{};
-  const std::string expected = R"((expected "adiabatic", {"temperature": T} or {"head": h}))";
+  const std::string forms = R"("adiabatic", {"temperature": T} or {"head": h})";
   if (n.json().is_string()) {
     const auto name = n.json().get<std::string>();
-    if (name != "adiabatic") n.problem("unknown boundary condition '" + name + "' " + expected);
+    if (name != "adiabatic") n.problem("unknown boundary condition '" + name + "' (expected " + forms + ")");
     return Adiabatic{};
   }
   if (!n.json().is_object()) {
-    n.problem("must be \"adiabatic\" or {\"temperature\": T}, got " + n.type());
+    n.problem("must be " + forms + ", got " + n.type());
     return Adiabatic{};
   }
   n.object({"temperature", "head"});

@@ -117,13 +117,14 @@ double ThermalModel::coefficient(std::size_t i, std::size_t j, std::size_t e) co
 
 const std::vector<double>& ThermalModel::pair_coefficients() const {
   const auto& P = pairs_;
-  // Many changed (a smooth freezing curve changes every frozen particle's
-  // conductivity at every stage): all pairs again, on every thread, rather
-  // than the changed ones one by one.
-  if (!all_changed_ && !coefficient_.empty()) {
-    std::size_t changed = 0;
-    for (const int c : k_changed_) changed += c != 0;
-    if (8 * changed > k_changed_.size()) all_changed_ = true;
+  // The particles whose conductivity changed; many of them (a smooth
+  // freezing curve changes every frozen particle's at every stage): all
+  // pairs again, on every thread, rather than the changed ones one by one.
+  if (!all_changed_) {
+    changed_.clear();
+    for (std::size_t p = 0; p < k_changed_.size(); ++p)
+      if (k_changed_[p]) changed_.push_back(p);
+    if (8 * changed_.size() > k_changed_.size()) all_changed_ = true;
   }
   if (all_changed_) {
     coefficient_.resize(P.pairs());
@@ -135,8 +136,7 @@ const std::vector<double>& ThermalModel::pair_coefficients() const {
     std::fill(k_changed_.begin(), k_changed_.end(), 0);
     return coefficient_;
   }
-  for (std::size_t p = 0; p < k_changed_.size(); ++p) {
-    if (!k_changed_[p]) continue;
+  for (const std::size_t p : changed_) {
     k_changed_[p] = 0;
     if (p < P.n_free)
       for (std::size_t e = P.row_start[p]; e < P.row_start[p + 1]; ++e)

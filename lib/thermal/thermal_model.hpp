@@ -160,6 +160,7 @@ class ThermalModel {
   // then reloaded every pointer after each flag it set.)
   mutable std::vector<int> k_changed_;
   mutable bool all_changed_ = true;
+  mutable std::vector<std::size_t> changed_;  // pair_coefficients()' list, kept to reuse its memory
   std::vector<std::size_t> incoming_start_;
   std::vector<std::uint32_t> incoming_row_;
   std::vector<std::size_t> incoming_pair_;

@@ -36,7 +36,6 @@ class TimeLoop {
   // Steps until the time reaches `stop` (or t_end, or finished() says so);
   // returns the time reached.
   double advance_to(double stop);
-  double time() const { return t_; }
   bool done() const { return done_; }
   const TimeLoopResult& result() const { return result_; }
 
