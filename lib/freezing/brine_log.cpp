@@ -22,7 +22,9 @@ BrineLog::BrineLog(const project::Pipe& pipe, const thermal::ThermalModel& model
 
 BrineLog::Row BrineLog::row(const thermal::ThermalModel& model, double t, double& section_rate) const {
   const auto& wall = model.wall_temperatures(boundary_);
-  const double brine = pipe_.temperature.at(t), h = h_;
+  // The boundary's own schedule and film: a plant's circuit sets both as it runs.
+  const auto& boundary = model.boundaries()[boundary_];
+  const double brine = boundary.temperature.at(t), h = boundary.film->heat_transfer_coefficient;
   // Per pipe in the section: its wall is one temperature all round, so a
   // metre of it passes h pi d (T_wall - T_brine), whatever share of it the
   // section holds.
@@ -44,6 +46,7 @@ BrineLog::Row BrineLog::row(const thermal::ThermalModel& model, double t, double
 void BrineLog::after_step(const thermal::ThermalModel& model, double t) {
   double rate = 0.0;
   const Row r = row(model, t, rate);
+  h_ = model.boundaries()[boundary_].film->heat_transfer_coefficient;
   extracted_ += 0.5 * (rate + rate_last_) * (t - t_last_);
   t_last_ = t;
   rate_last_ = rate;

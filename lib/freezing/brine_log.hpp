@@ -39,7 +39,7 @@ class BrineLog {
   project::Pipe pipe_;
   std::size_t boundary_;
   bool drawn_heat_;
-  double h_;                       // the film coefficient, W/(m2 K)
+  double h_;                       // the film coefficient, W/(m2 K), as last applied
   std::vector<double> perimeter_;  // per pipe, in the section
   std::vector<double> sample_times_;
   std::size_t next_ = 0;

@@ -44,10 +44,18 @@ CircuitRun run_brine_circuit(const std::vector<CircuitSection>& sections, const 
   if (sections.empty()) throw std::invalid_argument("run_brine_circuit: no section");
   if (!(s.interval > 0.0) || s.cells < 1 || !(s.flow > 0.0) || s.pipes < 1)
     throw std::invalid_argument("run_brine_circuit: interval, cells, flow and pipes must be positive");
-  const auto r = design::coaxial_resistances(s.pipe, s.brine, s.flow);
-  const double W = s.brine.density * s.brine.heat_capacity * s.flow;
-  const double film = 1.0 / r.ground;                      // W/(m K) per metre of pipe
-  const double h = film / (M_PI * s.pipe.outer_diameter);  // on the pipe's outer wall
+  // The brine's films and capacity rate at its properties now.
+  design::Brine fluid = s.brine_at ? s.brine_at(s.supply.at(0.0)) : s.brine;
+  design::CoaxialResistances r;
+  double W = 0.0, film = 0.0, h = 0.0;  // W/K; W/(m K) per metre of pipe; W/(m2 K) on the outer wall
+  auto take_brine = [&](const design::Brine& b) {
+    fluid = b;
+    r = design::coaxial_resistances(s.pipe, fluid, s.flow);
+    W = fluid.density * fluid.heat_capacity * s.flow;
+    film = 1.0 / r.ground;
+    h = film / (M_PI * s.pipe.outer_diameter);
+  };
+  take_brine(fluid);
   std::vector<double> depth;
   for (const auto& c : sections) depth.push_back(c.depth);
   if (!std::is_sorted(depth.begin(), depth.end())) throw std::invalid_argument("run_brine_circuit: depths not sorted");
@@ -94,6 +102,7 @@ CircuitRun run_brine_circuit(const std::vector<CircuitSection>& sections, const 
     for (std::size_t k = 0; k < runs.size(); ++k) {
       brine[k] = supply + warming[k];
       runs[k].model.model->set_boundary_temperature(runs[k].pipe, project::TemperatureSchedule::fixed(brine[k]));
+      runs[k].model.model->set_film_coefficient(runs[k].pipe, h);
       runs[k].model.model->apply_boundaries(at);
     }
   };
@@ -105,7 +114,9 @@ CircuitRun run_brine_circuit(const std::vector<CircuitSection>& sections, const 
       weight += out.weights[k], sum += out.weights[k] * (wall[k] - warming[k]);
     return std::max(s.min_supply, (sum - *s.capacity / (s.pipes * film)) / weight);
   };
-  set_brine(next_supply(0.0), 0.0);
+  double supply = next_supply(0.0), return_temperature = supply;
+  set_brine(supply, 0.0);
+  std::size_t next_profile = 0;
   while (t < end) {
     const double stop = std::min(end, t + s.interval);
     for (std::size_t k = 0; k < runs.size(); ++k) {
@@ -117,6 +128,8 @@ CircuitRun run_brine_circuit(const std::vector<CircuitSection>& sections, const 
       out.ground_heat += -(heat - m.heat_before) / m.pipes_in * out.weights[k] * s.pipes;
       m.heat_before = heat;
     }
+    const double h_ran = h;
+    if (s.brine_at) take_brine(s.brine_at(0.5 * (supply + return_temperature)));
     // The brine's warming to each section's depth at these draws (the same
     // at any supply: the circuit is linear), from a supply at 0.
     const auto base = design::brine_with_draw(s.pipe.length, s.cells, r, W, s.channel, 0.0, [&](double z) {
@@ -131,15 +144,26 @@ CircuitRun run_brine_circuit(const std::vector<CircuitSection>& sections, const 
       const std::size_t i = std::min<std::size_t>(static_cast<std::size_t>(x), s.cells - 1);
       warming[k] = annulus[i] + (x - i) * (annulus[i + 1] - annulus[i]);
     }
-    const double supply = next_supply(stop);
-    PlantRow row{stop, s.pipes * base.heat, supply, supply + base.return_temperature, {}};
+    // The row tells the interval just run: its supply, return and brine.
+    return_temperature = supply + base.return_temperature;
+    PlantRow row{stop, s.pipes * base.heat, supply, return_temperature, brine, draw, h_ran};
+    const double ran = supply;
+    supply = next_supply(stop);
     set_brine(supply, stop);
-    row.brine = brine;
+    for (; next_profile < s.profile_times.size() && s.profile_times[next_profile] <= stop; ++next_profile) {
+      PlantProfile at{stop, base};
+      for (auto* channel : {&at.brine.down, &at.brine.up})
+        for (double& T : *channel) T += ran;
+      at.brine.supply = ran, at.brine.return_temperature = return_temperature;
+      if (out.profiles.empty() || out.profiles.back().time != stop) out.profiles.push_back(std::move(at));
+    }
     out.plant_heat += row.load * (stop - t);
     out.series.push_back(std::move(row));
     t = stop;
   }
   for (auto& m : runs) out.sections.push_back(m.run->finish());
+  out.resistances = r;
+  out.brine = fluid;
   return out;
 }
 

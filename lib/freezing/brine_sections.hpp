@@ -25,6 +25,7 @@
 // load below P.
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -51,13 +52,29 @@ struct CircuitSettings {
   int pipes = 1;                        // pipes on the plant, in parallel
   double interval = 0.0;                // s between exchanges
   int cells = 200;                      // along the pipe
+  // The brine's properties at a temperature (degC); set, they are taken at
+  // each exchange at the circuit's mean temperature over the last interval
+  // (the supply's and the return's mean; at the start, the supply), and the
+  // films and the sections' walls follow. Unset: `brine` throughout.
+  std::function<design::Brine(double)> brine_at;
+  std::vector<double> profile_times;  // s: the brine along the pipe kept at the first stop from each
 };
 
 struct PlantRow {
-  double time = 0.0;  // s
-  double load = 0.0;  // W, all pipes
-  double supply = 0.0, return_temperature = 0.0;
-  std::vector<double> brine;  // the annulus' temperature at each section's depth, for the next interval
+  double time = 0.0;  // s: the end of the interval
+  double load = 0.0;  // W, all pipes: the heat drawn over the interval, per second
+  double supply = 0.0, return_temperature = 0.0;  // the return as the interval's draws warm the supply
+  // Each over the interval that ends at `time`:
+  std::vector<double> brine;  // the annulus' temperature at each section's depth
+  std::vector<double> draw;   // W per metre of one pipe each section drew
+  double film = 0.0;          // h on the freeze pipe's outer wall, W/(m2 K)
+};
+
+// The brine along the pipe at a stop: the channels' temperatures at the
+// cells' faces and the heat drawn per metre in each cell.
+struct PlantProfile {
+  double time = 0.0;
+  design::BrineProfile brine;
 };
 
 struct CircuitRun {
@@ -66,6 +83,9 @@ struct CircuitRun {
   double plant_heat = 0.0;      // J: the loads over their intervals
   double ground_heat = 0.0;     // J: the sections' pipe walls' heat, all pipes, with the depth weights
   std::vector<double> weights;  // m of pipe each section stands for
+  std::vector<PlantProfile> profiles;
+  design::CoaxialResistances resistances;  // as last taken
+  design::Brine brine;                     // as last taken
 };
 
 CircuitRun run_brine_circuit(const std::vector<CircuitSection>& sections, const CircuitSettings& settings,

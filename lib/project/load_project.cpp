@@ -20,6 +20,7 @@
 #include "project/load_basics.hpp"
 #include "project/load_zones.hpp"
 #include "project/load_rectangle.hpp"
+#include "project/load_plant.hpp"
 #include "project/load_shaft.hpp"
 #include "project/load_calibrate.hpp"
 #include "project/load_survey.hpp"
@@ -289,7 +290,8 @@ Project read_project(const Node& root, const std::string& base_directory) {
   root.object({"name",       "description", "physics",      "layout",         "shaft",       "geometry",
                "pipe",       "soil",        "domain",       "time",           "numerics",    "design",
                "monitoring", "output",      "mechanics",    "pore_fluid",     "groundwater", "layers",
-               "survey",     "sections",    "failed_pipes", "compare_intact", "calibrate"});
+               "survey",     "sections",    "failed_pipes", "compare_intact", "calibrate",   "plant",
+               "brine"});
   project.name = root["name"].required().string().value_or("");
   project.description = root["description"].string(true).value_or("");
 
@@ -309,7 +311,7 @@ Project read_project(const Node& root, const std::string& base_directory) {
   if (shaft) {
     if (const Node n = root["shaft"]; n.object({"excavation_radius"}))
       section.shaft.excavation_radius = n["excavation_radius"].positive();
-    section.pipe = read_pipe(root["pipe"].required());
+    section.pipe = read_pipe(root["pipe"].required(), root["plant"].present());
     read_as_built(root, section, project, base_directory);
   } else {
     for (const char* key : {"survey", "sections", "failed_pipes", "compare_intact"})
@@ -364,12 +366,14 @@ Project read_project(const Node& root, const std::string& base_directory) {
   read_groundwater_block(root, shaft, project);
   detail::read_pore_settings(root, project);
   read_design_and_layers(root, project);
+  project.plant = detail::read_plant(root, project);
   project.monitoring = read_monitoring(root["monitoring"]);
   check_sensors_inside(project, root["monitoring"]);
   project.output = read_output(root["output"].required());
   if (const Node c = root["calibrate"]; c.present()) {
     if (!shaft || !project.layers.empty() || project.survey)
       c.problem(R"(only used with one shaft section ("layout" without "layers" or "survey"))");
+    else if (project.plant) c.problem(R"(not used with "plant" (calibration holds the pipe at its given temperature))");
     else project.calibration = detail::read_calibration(c, project, base_directory);
   }
   if (!project.output.front_along.empty() && !std::holds_alternative<Rectangle>(project.geometry))

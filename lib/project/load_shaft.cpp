@@ -110,10 +110,11 @@ double outermost_pipe_radius(const Layout& layout) {
   return r;
 }
 
-Pipe read_pipe(const Node& n) {
+Pipe read_pipe(const Node& n, bool plant) {
   Pipe pipe;
   if (!n.object({"diameter", "temperature", "model", "boundary", "brine_temperature", "heat_transfer_coefficient",
-                 "annulus", "heat_extraction"}))
+                 "annulus", "heat_extraction", "inner_diameter", "wall_thickness", "wall_conductivity",
+                 "inner_wall_thickness", "inner_wall_conductivity", "length"}))
     return pipe;
   pipe.diameter = n["diameter"].required().positive().value_or(0.0);
   pipe.model = n["model"]
@@ -126,6 +127,18 @@ Pipe read_pipe(const Node& n) {
       n["boundary"]
           .choice<PipeBoundary>("pipe boundary", {{"fixed", PipeBoundary::fixed}, {"brine", PipeBoundary::brine}})
           .value_or(PipeBoundary::fixed);
+  if (plant) {
+    // The plant's brine behind the coaxial pipe's film; the circuit sets both.
+    for (const char* key :
+         {"temperature", "brine_temperature", "heat_transfer_coefficient", "annulus", "heat_extraction"})
+      if (n[key].present()) n[key].problem(R"(not used with "plant" (the brine comes from the plant's circuit))");
+    if (n["boundary"].present() && pipe.boundary != PipeBoundary::brine)
+      n["boundary"].problem(R"(with "plant" the pipe holds brine behind its film ("brine"))");
+    pipe.boundary = PipeBoundary::brine;
+    pipe.temperature = TemperatureSchedule::fixed(0.0);
+    pipe.heat_transfer_coefficient = 1.0;
+    return pipe;
+  }
   if (n["heat_extraction"].present()) {
     // The plant's view: the heat each pipe draws, its wall's temperature computed.
     for (const char* key : {"temperature", "brine_temperature", "heat_transfer_coefficient", "annulus"})

@@ -21,8 +21,9 @@ double outermost_pipe_radius(const Layout& layout);
 // temperature, or {"boundary": "brine", "brine_temperature",
 // "heat_transfer_coefficient"} with brine behind a film. A pipe (or brine)
 // warmer than the soil's freezing point is computable but freezes nothing:
-// a warning, not an error.
-Pipe read_pipe(const Node& n);
+// a warning, not an error. With a plant (`plant`), brine behind a film that
+// the plant's circuit sets (the coaxial keys are read by read_plant).
+Pipe read_pipe(const Node& n, bool plant);
 void warn_warm_pipe(const Node& pipe, const Pipe& read, double freezing_point, std::vector<std::string>& warnings);
 
 // "layers": [{"name", "depth", "soil", "pressure", "strength"}, ...]; soil,

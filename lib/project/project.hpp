@@ -18,6 +18,8 @@
 #include "project/input_error.hpp"
 #include "project/mechanics.hpp"
 #include "project/numerics.hpp"
+#include "project/plant.hpp"
+#include "project/schedule.hpp"
 #include "project/units.hpp"
 
 namespace frostwall::project {
@@ -72,17 +74,6 @@ struct Soil {
   // Conductivity between frozen and unfrozen: geometric in the liquid
   // fraction (a soil from its constituents mixed geometrically), else linear.
   bool geometric_conductivity = false;
-};
-
-// ---- temperatures that may change in time ----------------------------------
-
-// A wall temperature: constant, or [time, degC] points linear in between and
-// held constant outside the first and last point.
-struct TemperatureSchedule {
-  std::vector<std::pair<double, double>> points;  // (seconds, degC), sorted
-  double at(double t_seconds) const;
-  bool constant() const { return points.size() == 1; }
-  static TemperatureSchedule fixed(double degC) { return {{{0.0, degC}}}; }
 };
 
 // ---- boundaries of a plain geometry ------------------------------------------
@@ -299,6 +290,9 @@ struct Project {
   // Thermometer readings and the parameters `frostwall calibrate` fits to
   // them (`frostwall run` ignores it).
   std::optional<Calibration> calibration;
+  // The freezing plant and its brine circuit (none: the pipe's own
+  // temperature or brine schedule holds every depth alike).
+  std::optional<Plant> plant;
   // "physics": "cfd-dem": grains and pore water; then only name,
   // description, time and output above are read.
   std::optional<CfdDem> cfd_dem;

@@ -80,6 +80,9 @@ class ThermalModel {
   void set_boundary_temperature(std::size_t b, project::TemperatureSchedule schedule) {
     boundaries_[b].temperature = std::move(schedule);
   }
+  // A film wall's coefficient h replaced (the brine's film as its
+  // properties change with its temperature); from the next apply_boundaries().
+  void set_film_coefficient(std::size_t b, double h) { boundaries_[b].film->heat_transfer_coefficient = h; }
 
   // Fixed particles take their boundary's temperature at time t (on the
   // wall), or its antisymmetric extension of the current field (beyond).
