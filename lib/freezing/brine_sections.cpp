@@ -30,6 +30,7 @@ std::vector<double> hats(const std::vector<double>& depth, double z) {
 
 // One section marched in the circuit.
 struct Marching {
+  project::RunOptions options;
   Model model;
   std::unique_ptr<SteppedHeatRun> run;
   std::size_t pipe = 0;      // the pipe boundary
@@ -88,7 +89,9 @@ CircuitRun run_brine_circuit(const std::vector<CircuitSection>& sections, const 
     const auto& film = *m.model.model->boundaries()[m.pipe].film;
     m.pipes_in = 0.0;
     for (double l : film.perimeter) m.pipes_in += l / film.full_perimeter;
-    m.run = std::make_unique<SteppedHeatRun>(projects[k], m.model, options);
+    m.options = options;
+    if (!sections[k].project_text.empty()) m.options.project_text = sections[k].project_text;
+    m.run = std::make_unique<SteppedHeatRun>(projects[k], m.model, m.options);
   }
 
   const double end = projects.front().time.end;

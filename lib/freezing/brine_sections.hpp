@@ -39,6 +39,7 @@ namespace frostwall::freezing {
 struct CircuitSection {
   project::Project project;  // a shaft section (its output directory its own)
   double depth = 0.0;        // m below the pipe's top
+  std::string project_text;  // written as the section's project.json (empty: the options')
 };
 
 struct CircuitSettings {
@@ -61,8 +62,8 @@ struct CircuitSettings {
 };
 
 struct PlantRow {
-  double time = 0.0;  // s: the end of the interval
-  double load = 0.0;  // W, all pipes: the heat drawn over the interval, per second
+  double time = 0.0;                              // s: the end of the interval
+  double load = 0.0;                              // W, all pipes: the heat drawn over the interval, per second
   double supply = 0.0, return_temperature = 0.0;  // the return as the interval's draws warm the supply
   // Each over the interval that ends at `time`:
   std::vector<double> brine;  // the annulus' temperature at each section's depth

@@ -1,4 +1,5 @@
 #include "freezing/heat_run.hpp"
+#include "freezing/plant_run.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -377,6 +378,7 @@ const thermal::TimeLoopResult& SteppedHeatRun::loop() const { return loop_->resu
 summary::Summary SteppedHeatRun::finish() { return run_->finish(loop_->result()); }
 
 summary::Summary run(const Project& p, const project::RunOptions& options) {
+  if (p.plant) return run_single_plant(p, options);  // the section's brine from its plant's circuit
   check_run_inputs(p);
   Model built = build_model(p);
   return run_heat(p, built, options);

@@ -27,9 +27,8 @@ namespace keys = summary::keys;
 namespace {
 using nlohmann::json;
 
-json or_null(const std::optional<double>& v) { return v ? json(*v) : json(nullptr); }
 json stretch_json(const post::FrozenStretch& s) {
-  return {{keys::inner, or_null(s.inner)}, {keys::outer, or_null(s.outer)}, {keys::thickness, s.thickness}};
+  return {{keys::inner, summary::number_or_null(s.inner)}, {keys::outer, summary::number_or_null(s.outer)}, {keys::thickness, s.thickness}};
 }
 std::string csv_number(const std::optional<double>& v) { return v ? fmt::format("{:.6g}", *v) : ""; }
 }  // namespace
@@ -197,16 +196,16 @@ json ShaftResults::wall_entries(std::optional<DesignMet>& met) const {
                     {keys::OB, stretch_json(r.OB)},
                     {keys::min_thickness, r.min_thickness},
                     {keys::thinnest_angle_deg, r.weakest_angle_deg},
-                    {keys::mean_temperature_OB, or_null(r.mean_temperature_OB)}});
+                    {keys::mean_temperature_OB, summary::number_or_null(r.mean_temperature_OB)}});
   if (project_.design.isotherm)
     for (std::size_t k = 0; k < snapshots_.size(); ++k) {
-      wall[k][keys::isotherm_thickness] = or_null(snapshots_[k].isotherm_thickness);
-      wall[k][keys::isotherm_mean_temperature] = or_null(snapshots_[k].isotherm_mean_temperature);
+      wall[k][keys::isotherm_thickness] = summary::number_or_null(snapshots_[k].isotherm_thickness);
+      wall[k][keys::isotherm_mean_temperature] = summary::number_or_null(snapshots_[k].isotherm_mean_temperature);
     }
   if (project_.groundwater && project_.groundwater->speed() > 0.0)
     for (std::size_t k = 0; k < snapshots_.size(); ++k) {
-      wall[k][keys::min_thickness_upstream] = or_null(snapshots_[k].upstream_thickness);
-      wall[k][keys::min_thickness_downstream] = or_null(snapshots_[k].downstream_thickness);
+      wall[k][keys::min_thickness_upstream] = summary::number_or_null(snapshots_[k].upstream_thickness);
+      wall[k][keys::min_thickness_downstream] = summary::number_or_null(snapshots_[k].downstream_thickness);
     }
   // The wall check from the ground pressure and the frozen soil's strength.
   const auto& design = project_.design;
@@ -220,11 +219,11 @@ json ShaftResults::wall_entries(std::optional<DesignMet>& met) const {
     for (std::size_t k = 0; k < snapshots_.size(); ++k) {
       const auto& r = snapshots_[k];
       const WallCheck c = check(r);
-      wall[k]["mean_temperature_thinnest"] = or_null(r.mean_temperature_thinnest);
-      wall[k]["allowable_strength"] = or_null(c.allowable);
-      wall[k][keys::required_thickness] = or_null(c.required);
+      wall[k]["mean_temperature_thinnest"] = summary::number_or_null(r.mean_temperature_thinnest);
+      wall[k]["allowable_strength"] = summary::number_or_null(c.allowable);
+      wall[k][keys::required_thickness] = summary::number_or_null(c.required);
       wall[k]["required_by"] = c.required_by;
-      wall[k][keys::utilisation] = or_null(c.utilisation);
+      wall[k][keys::utilisation] = summary::number_or_null(c.utilisation);
     }
     // The day it is met: on the time series (every output interval), not
     // only at the snapshots.
@@ -264,21 +263,21 @@ json ShaftResults::design_entry(const std::optional<DesignMet>& met) const {
                                 (b.day - a.day);
       }
     }
-    result = {{keys::required_thickness, or_null(design.required_thickness)},
-              {keys::max_mean_temperature, or_null(design.max_mean_temperature)},
-              {keys::reached_day, or_null(reached)},
+    result = {{keys::required_thickness, summary::number_or_null(design.required_thickness)},
+              {keys::max_mean_temperature, summary::number_or_null(design.max_mean_temperature)},
+              {keys::reached_day, summary::number_or_null(reached)},
               {keys::pass, reached.has_value()}};
     if (met) {
       if (!design.required_thickness && !design.max_mean_temperature)  // the strength check is the only target
-        result[keys::reached_day] = or_null(met->day), result[keys::pass] = met->day.has_value();
-      result[keys::met_day] = or_null(met->day);
+        result[keys::reached_day] = summary::number_or_null(met->day), result[keys::pass] = met->day.has_value();
+      result[keys::met_day] = summary::number_or_null(met->day);
       result["stays_met"] = met->stays;
       result["formula"] = std::string(design::name(design.formula));
       result["pressure_MPa"] = *design.pressure;
       result["allowable_factor"] = design.allowable_factor;
-      result["depth"] = or_null(design.depth);
-      result["isotherm"] = or_null(design.isotherm);
-      result["friction_angle"] = or_null(design.friction_angle);
+      result["depth"] = summary::number_or_null(design.depth);
+      result["isotherm"] = summary::number_or_null(design.isotherm);
+      result["friction_angle"] = summary::number_or_null(design.friction_angle);
       result["measured_on"] = design.isotherm ? fmt::format("the {:g} degC isotherm", *design.isotherm)
                                               : std::string("the frozen front (liquid fraction 0.5)");
     }

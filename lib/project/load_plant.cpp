@@ -20,16 +20,15 @@ CoaxialGeometry read_coaxial(const Node& pipe, double diameter) {
   g.length = pipe["length"].required().positive().value_or(0.0);
   const double bore = diameter - 2.0 * g.wall_thickness;  // the annulus' outer wall
   if (diameter > 0.0 && g.wall_thickness > 0.0 && bore <= 0.0)
-    pipe["wall_thickness"].problem(fmt::format("must be below half the pipe's diameter {}, got {}", diameter,
-                                               g.wall_thickness));
+    pipe["wall_thickness"].problem(
+        fmt::format("must be below half the pipe's diameter {}, got {}", diameter, g.wall_thickness));
   else if (bore > 0.0 && g.inner_diameter >= bore)
-    pipe["inner_diameter"].problem(fmt::format(
-        "must be below the freeze pipe's bore {:g} (diameter less twice wall_thickness), got {}", bore,
-        g.inner_diameter));
+    pipe["inner_diameter"].problem(
+        fmt::format("must be below the freeze pipe's bore {:g} (diameter less twice wall_thickness), got {}", bore,
+                    g.inner_diameter));
   if (g.inner_diameter > 0.0 && g.inner_wall_thickness >= g.inner_diameter / 2.0)
-    pipe["inner_wall_thickness"].problem(
-        fmt::format("must be below half the inner pipe's diameter {}, got {}", g.inner_diameter,
-                    g.inner_wall_thickness));
+    pipe["inner_wall_thickness"].problem(fmt::format("must be below half the inner pipe's diameter {}, got {}",
+                                                     g.inner_diameter, g.inner_wall_thickness));
   return g;
 }
 
@@ -37,10 +36,10 @@ void read_brine(const Node& n, Plant& plant) {
   if (!n.object({"flow_per_pipe", "supply", "concentration", "density", "viscosity", "conductivity", "heat_capacity"}))
     return;
   plant.flow_per_pipe = n["flow_per_pipe"].required().positive().value_or(0.0) / 3600.0;
-  plant.channel =
-      n["supply"]
-          .choice<SupplyChannel>("supply channel", {{"annulus", SupplyChannel::annulus}, {"inner", SupplyChannel::inner}})
-          .value_or(SupplyChannel::annulus);
+  plant.channel = n["supply"]
+                      .choice<SupplyChannel>("supply channel",
+                                             {{"annulus", SupplyChannel::annulus}, {"inner", SupplyChannel::inner}})
+                      .value_or(SupplyChannel::annulus);
   auto& b = plant.brine;
   if (const Node x = n["concentration"]; x.present()) {
     const auto fraction = x.positive();
@@ -102,8 +101,8 @@ std::optional<Plant> read_plant(const Node& root, const Project& project) {
   Plant plant;
   read_supply(n, plant);
   if (n["cop"].present()) plant.cop = n["cop"].positive();
-  plant.exchange_interval =
-      (n["exchange_hours"].present() ? n["exchange_hours"].positive().value_or(1.0) : 1.0) * 3600.0;
+  plant.exchange_interval = (n["exchange_hours"].present() ? n["exchange_hours"].positive().value_or(1.0) : 1.0) *
+                            3600.0;
   read_brine(brine.required(), plant);
   if (pipe.present()) plant.pipe = read_coaxial(pipe, section->pipe.diameter);
   check_brine_liquid(n, plant);
@@ -113,9 +112,8 @@ std::optional<Plant> read_plant(const Node& root, const Project& project) {
   const double length = plant.pipe.length;
   for (std::size_t k = 0; k < project.layers.size(); ++k)
     if (length > 0.0 && project.layers[k].depth > length)
-      root["layers"][k]["depth"].problem(
-          fmt::format("must be within the freeze pipe's length {} (pipe.length), got {}", length,
-                      project.layers[k].depth));
+      root["layers"][k]["depth"].problem(fmt::format("must be within the freeze pipe's length {} (pipe.length), got {}",
+                                                     length, project.layers[k].depth));
   return plant;
 }
 

@@ -18,12 +18,12 @@ enum class SupplyChannel { annulus, inner };
 
 // The coaxial freeze pipe beyond its outer diameter (pipe.diameter).
 struct CoaxialGeometry {
-  double inner_diameter = 0.0;             // m: the inner pipe's outer diameter
-  double wall_thickness = 0.0;             // m: the freeze pipe's wall
-  double wall_conductivity = 0.0;          // W/(m K)
-  double inner_wall_thickness = 0.0;       // m
-  double inner_wall_conductivity = 0.0;    // W/(m K)
-  double length = 0.0;                     // m: from the top of the pipe to its foot
+  double inner_diameter = 0.0;           // m: the inner pipe's outer diameter
+  double wall_thickness = 0.0;           // m: the freeze pipe's wall
+  double wall_conductivity = 0.0;        // W/(m K)
+  double inner_wall_thickness = 0.0;     // m
+  double inner_wall_conductivity = 0.0;  // W/(m K)
+  double length = 0.0;                   // m: from the top of the pipe to its foot
 };
 
 // The brine's properties: each one given is held; one not given follows the
@@ -46,7 +46,7 @@ struct Plant {
   TemperatureSchedule supply;
   std::optional<double> capacity;  // W
   double min_supply_temperature = 0.0;
-  std::optional<double> cop;    // heat drawn per unit of electricity
+  std::optional<double> cop;       // heat drawn per unit of electricity
   double exchange_interval = 0.0;  // s between the brine's updates
 };
 

@@ -185,6 +185,7 @@ void add_run_facts(const RunRecord& run, json& view) {
       {"profiles_OB.csv", "temperature along OB at the snapshots"},
       {"monitoring.csv", "sensor temperatures over time"},
       {"brine.csv", "brine pipes: pipe wall temperature and heat extracted per metre over time"},
+      {"plant.csv", "the plant: load, supply and return, each section's brine and heat drawn at every exchange"},
       {"damage.csv", "broken bonds, largest damage and damaged area at every mechanical equilibrium"},
       {"field.pvd",
        run.shaft() ? "ParaView: the wedge's particles at every snapshot" : "ParaView: the particles at every snapshot"},
@@ -260,6 +261,7 @@ json report_view(const fs::path& dir) {
   detail::add_project(run, view);
   detail::add_maps(run, view);
   detail::add_groundwater(run, view);
+  detail::add_plant(run, view);
   detail::add_as_built(run, view);
   detail::add_calibration(run, view);
   detail::add_charts(run, view);

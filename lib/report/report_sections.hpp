@@ -88,6 +88,8 @@ void add_mechanics(const RunRecord& run, nlohmann::json& view);  // PD: displace
 void add_frost(const RunRecord& run, nlohmann::json& view);      // porous plate: maps, pore freezing, damage
 void add_run_facts(const RunRecord& run, nlohmann::json& view);  // run table and file links
 void add_groundwater(const RunRecord& run, nlohmann::json& view);
+void add_plant(const RunRecord& run,
+               nlohmann::json& view);  // plant: sizing, load, supply and return, brine along the pipe
 void add_as_built(
     const RunRecord& run,
     nlohmann::json& view);  // sections at depth: charts, plan, table  // seepage: verdict, gaps, sides, gap flow

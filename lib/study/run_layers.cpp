@@ -5,6 +5,7 @@
 
 #include "io/output_directory.hpp"
 #include "run/check_project.hpp"
+#include "study/run_coupled.hpp"
 #include "summary/summary.hpp"
 
 namespace frostwall::study {
@@ -72,7 +73,12 @@ StudyRun run_layers(const project::Project& p, const std::string& project_text, 
   fs::create_directories(out);
   for (std::size_t k = 0; k < docs.size(); ++k)
     study.variants.push_back({layer_folder(p.layers[k].name), p.layers[k].name, docs[k]});
-  StudyRun run = run_study(study, options);
+  // With a plant the layers are sections of one brine circuit, run together.
+  std::vector<double> depths;
+  for (const auto& layer : p.layers) depths.push_back(layer.depth);
+  CoupledRun coupled;
+  if (p.plant) coupled = run_coupled(p, study, depths, options);
+  StudyRun run = p.plant ? std::move(coupled.run) : run_study(study, options);
   if (!run.writer) return run;
   std::vector<json> summaries;
   for (std::size_t k = 0; k < run.variants.size(); ++k) {
@@ -96,8 +102,10 @@ StudyRun run_layers(const project::Project& p, const std::string& project_text, 
                       {"pressure_MPa", p.layers[k].pressure},
                       {"directory", layer_folder(p.layers[k].name)},
                       {"governing", k == g}};
+    if (p.plant) entry["layer"]["brine_temperature"] = coupled.plant["sections"][k]["brine_temperature"];
     summary[keys::layers].push_back(std::move(entry));
   }
+  if (p.plant) summary[keys::plant] = coupled.plant;
   write_joined_run(p, project_text, summary);
   return run;
 }

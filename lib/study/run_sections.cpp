@@ -12,6 +12,7 @@
 #include "io/shaft_vtm.hpp"
 #include "run/check_project.hpp"
 #include "study/ranks.hpp"
+#include "study/run_coupled.hpp"
 #include "summary/summary.hpp"
 
 namespace frostwall::study {
@@ -233,7 +234,12 @@ StudyRun run_sections(const project::Project& p, const std::string& project_text
   study.estimate_errors = false;  // as the project says
   fs::create_directories(out);
   for (const auto& s : runs) study.variants.push_back({s.folder, s.folder, s.project});
-  StudyRun run = run_study(study, options);
+  // With a plant the depths are sections of one brine circuit, run together.
+  std::vector<double> depths;
+  for (const auto& s : runs) depths.push_back(s.depth);
+  CoupledRun coupled;
+  if (p.plant) coupled = run_coupled(p, study, depths, options);
+  StudyRun run = p.plant ? std::move(coupled.run) : run_study(study, options);
   for (std::size_t k = 0; k < run.variants.size(); ++k)
     if (!run.variants[k].ok)
       throw std::runtime_error(fmt::format("section {}: {}", runs[k].folder,
@@ -248,6 +254,7 @@ StudyRun run_sections(const project::Project& p, const std::string& project_text
     const int layer = p.layers.empty() ? -1 : layer_at(p, a, runs[k].depth);
     json entry = section_entry(runs[k], run.variants[k].summary, pipes, diameter,
                                layer >= 0 ? p.layers[layer].name : std::string());
+    if (p.plant) entry["brine_temperature"] = coupled.plant["sections"][k]["brine_temperature"];
     if (runs[k].intact) {
       entry.erase("pipes");
       entries.back()["intact"] = entry;
@@ -262,6 +269,7 @@ StudyRun run_sections(const project::Project& p, const std::string& project_text
   for (std::size_t k = 0; k < entries.size(); ++k) entries[k]["critical"] = k == c;
   summary[keys::sections] = entries;
   summary[keys::critical_depth] = entries[c]["depth"];
+  if (p.plant) summary[keys::plant] = coupled.plant;
   json design = json::array();
   for (const auto& q : a.design) design.push_back({q.number, q.x, q.y, q.failed});
   summary[keys::as_built] = {{"survey", p.survey->file},
@@ -291,8 +299,9 @@ StudyRun run_sections(const project::Project& p, const std::string& project_text
   scene.series.push_back({"shaft.vtm", io::ParaviewSeries::Kind::temperature, true});
   scene.freezing_point = p.soil.freezing_point;
   const auto& pipe = std::get<project::ShaftSection>(p.geometry).pipe;
-  scene.coldest = std::min(pipe.temperature.points.empty() ? 0.0 : pipe.temperature.at(0.0), p.soil.freezing_point);
-  for (const auto& [t, T] : pipe.temperature.points) scene.coldest = std::min(scene.coldest, T);
+  const auto& cold = p.plant ? p.plant->supply : pipe.temperature;  // the brine the plant supplies, or the pipe's
+  scene.coldest = std::min(cold.points.empty() ? 0.0 : cold.at(0.0), p.soil.freezing_point);
+  for (const auto& [t, T] : cold.points) scene.coldest = std::min(scene.coldest, T);
   scene.warmest = std::max(p.domain.initial_temperature, p.domain.far_field_temperature.value_or(-1e300));
   scene.isotherm = p.design.isotherm;
   io::write_paraview_script(out / "open_in_paraview.py", scene);

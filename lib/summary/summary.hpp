@@ -44,7 +44,7 @@ namespace frostwall::summary {
   X(groundwater) X(gaps) X(closure_day) X(verdict) X(error_estimate) X(status) X(coarse_closure_days)                  \
   X(sections) X(critical_depth) X(as_built) X(thinnest_wall) X(design_margin) X(intact) X(scenario_directory)          \
   X(layers) X(governing_layer) X(calibration) X(forecast) X(parameters) X(physics) X(soil) X(pores) X(damage)      \
-  X(balance) X(thaw_time)
+  X(balance) X(thaw_time) X(plant)
 // clang-format on
 
 namespace keys {
@@ -121,6 +121,10 @@ struct Summary {
 };
 
 nlohmann::ordered_json to_json(const Summary& s);
+// A number that may be missing, as the summary writes it: the value or null.
+inline nlohmann::json number_or_null(const std::optional<double>& v) {
+  return v ? nlohmann::json(*v) : nlohmann::json();
+}
 Summary from_json(const nlohmann::ordered_json& j);
 
 // The wall entry at `day` (to a relative 1e-9); null if none.

@@ -1,0 +1,62 @@
+#include "study/run_coupled.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <fmt/core.h>
+#include <numeric>
+#include <omp.h>
+
+#include "freezing/plant_run.hpp"
+#include "report/report.hpp"
+#include "study/ranks.hpp"
+
+namespace frostwall::study {
+
+CoupledRun run_coupled(const project::Project& p, const Study& study, const std::vector<double>& depths,
+                       const StudyOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  CoupledRun out;
+  out.run.writer = world_ranks().first();
+  out.run.variants.resize(study.variants.size());
+  if (!out.run.writer) return out;  // one circuit, one process
+  if (options.threads > 0) omp_set_num_threads(options.threads);
+  out.run.threads = omp_get_max_threads();
+  // The circuit takes its sections from the top down.
+  std::vector<std::size_t> order(depths.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](auto a, auto b) { return depths[a] < depths[b]; });
+  std::vector<freezing::PlantSection> sections;
+  for (const auto k : order) {
+    const auto& v = study.variants[k];
+    const std::string text = v.project.dump(2) + "\n";
+    sections.push_back({v.changes, {project::parse_project(text, v.name), depths[k], text}});
+  }
+  project::RunOptions run_options;
+  run_options.note = [](const std::string&) {};
+  if (options.note)
+    options.note(
+        fmt::format("plant: {} sections coupled through the brine, {} threads", sections.size(), out.run.threads));
+  auto outcome = freezing::run_plant(p, sections, run_options, p.output.directory);
+  for (std::size_t i = 0; i < order.size(); ++i) {
+    const auto& v = study.variants[order[i]];
+    auto& o = out.run.variants[order[i]];
+    o.name = v.name, o.changes = v.changes, o.ok = true;
+    o.directory = v.project["output"]["directory"].get<std::string>();
+    o.summary = summary::to_json(outcome.sections[i]);
+    if (v.project["output"].value("report", true)) report::write_report(o.directory);
+  }
+  out.plant = outcome.plant;
+  nlohmann::json by_variant = nlohmann::json::array();
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    const auto i = static_cast<std::size_t>(std::find(order.begin(), order.end(), k) - order.begin());
+    by_variant.push_back(out.plant["sections"][i]);
+  }
+  out.plant["sections"] = by_variant;
+  out.run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double each = out.run.seconds / static_cast<double>(order.size());
+  for (auto& v : out.run.variants) v.seconds = each;
+  if (options.note) options.note(fmt::format("plant: done in {:.1f} s", out.run.seconds));
+  return out;
+}
+
+}  // namespace frostwall::study
