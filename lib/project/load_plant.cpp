@@ -45,7 +45,7 @@ void read_brine(const Node& n, Plant& plant) {
     const auto fraction = x.positive();
     if (fraction && *fraction > 0.30)
       x.problem(fmt::format("must be at most 0.30 (a mass fraction; the built-in brine's range), got {}", *fraction));
-    b.mass_fraction = fraction.value_or(b.mass_fraction);
+    else if (fraction) b.mass_fraction = *fraction;
   }
   if (n["density"].present()) b.density = n["density"].positive();
   if (n["viscosity"].present()) b.viscosity = n["viscosity"].positive();
