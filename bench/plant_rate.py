@@ -1,10 +1,10 @@
 #!/usr/bin/env python3
 """The plant's cost: the shipped shaft with its freezing plant
-(projects/shaft_plant.json: two layers coupled through the brine, run
-together with every thread on each section in turn) against the same shaft
-without one (the layers side by side as a study runs them, one thread
-each, their brine held at the plant's coldest supply behind the film the
-plant's brine had there). Interleaved A B A B ..., wall seconds of the
+(projects/shaft_plant.json: two layers coupled through the brine, marched
+side by side between exchanges), and the same with its plant holding a
+supply of -30 C, against the same shaft without one (the layers side by
+side as a study runs them, their brine held at the plant's coldest supply
+behind the film the plant's brine had there). Interleaved A B A B ..., wall seconds of the
 whole `frostwall run` (reports written, VTK off); the ratio is the median
 of the pairs' ratios. Also each run's closure days.
 
@@ -52,22 +52,32 @@ def main():
     paths["without"] = os.path.join(work, "without.json")
     with open(paths["without"], "w") as f:
         json.dump(without, f)
-    times = {"plant": [], "without": []}
+    held = json.loads(json.dumps(plant))
+    held["plant"] = {"supply_temperature": -30.0}
+    held["output"]["directory"] = os.path.join(work, "held")
+    paths["held"] = os.path.join(work, "held.json")
+    with open(paths["held"], "w") as f:
+        json.dump(held, f)
+    names = ("plant", "held", "without")
+    times = {name: [] for name in names}
     for _ in range(args.repeats):
-        for name in ("plant", "without"):
+        for name in names:
             times[name].append(run(paths[name]))
     ratios = [a / b for a, b in zip(times["plant"], times["without"])]
+    held_ratios = [a / b for a, b in zip(times["held"], times["without"])]
     closure = {}
-    for name in ("plant", "without"):
+    for name in names:
         with open(os.path.join(work, name, "summary.json")) as f:
             closure[name] = [l["closure_time_days"] for l in json.load(f)["layers"]]
     print(f"film held without the plant: h = {h:.1f} W/(m2 K)")
     print("| run | wall s (median of %d) | closure per layer (d) |" % args.repeats)
     print("|---|---|---|")
-    for name, label in (("plant", "with its plant (120 kW, coupled)"), ("without", "without (brine at -30 C, side by side)")):
+    for name, label in (("plant", "with its plant (120 kW, coupled)"), ("held", "with a plant at -30 C (coupled)"),
+                        ("without", "without (brine at -30 C, side by side)")):
         print(f"| {label} | {statistics.median(times[name]):.2f} | {', '.join(f'{c:.2f}' for c in closure[name])} |")
-    print(f"\nratio with / without, median of the pairs: {statistics.median(ratios):.2f} "
-          f"(pairs {', '.join(f'{r:.2f}' for r in ratios)})")
+    for label, r in (("120 kW plant", ratios), ("plant at -30 C", held_ratios)):
+        print(f"ratio {label} / without, median of the pairs: {statistics.median(r):.2f} "
+              f"(pairs {', '.join(f'{x:.2f}' for x in r)})")
 
 
 if __name__ == "__main__":

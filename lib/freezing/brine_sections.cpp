@@ -7,6 +7,7 @@
 
 #include "freezing/heat_run.hpp"
 #include "freezing/model.hpp"
+#include "particles/side_by_side.hpp"
 
 namespace frostwall::freezing {
 
@@ -95,6 +96,8 @@ CircuitRun run_brine_circuit(const std::vector<CircuitSection>& sections, const 
   }
 
   const double end = projects.front().time.end;
+  const int cores = particles::usable_cores();
+  const int jobs = std::min<int>(cores, static_cast<int>(runs.size())), threads = std::max(1, cores / jobs);
   // Each section's brine, and its wall's mean temperature over the last
   // interval (at the start, the ground's).
   std::vector<double> brine(runs.size()), wall(runs.size());
@@ -120,11 +123,13 @@ CircuitRun run_brine_circuit(const std::vector<CircuitSection>& sections, const 
   double supply = next_supply(0.0), return_temperature = supply;
   set_brine(supply, 0.0);
   std::size_t next_profile = 0;
+  double interval = s.interval;
   while (t < end) {
-    const double stop = std::min(end, t + s.interval);
+    const double stop = std::min(end, t + interval);
+    // The sections to the stop side by side, the machine's cores shared among them.
+    particles::side_by_side(runs.size(), jobs, threads, [&](std::size_t k) { runs[k].run->advance_to(stop); });
     for (std::size_t k = 0; k < runs.size(); ++k) {
       auto& m = runs[k];
-      m.run->advance_to(stop);
       const double heat = m.run->loop().boundary_heat[m.pipe];        // J per metre entered through the walls
       draw[k] = -(heat - m.heat_before) / ((stop - t) * m.pipes_in);  // W per metre of one pipe
       wall[k] = brine[k] + draw[k] / film;                            // the wall's mean over the interval
@@ -153,6 +158,14 @@ CircuitRun run_brine_circuit(const std::vector<CircuitSection>& sections, const 
     const double ran = supply;
     supply = next_supply(stop);
     set_brine(supply, stop);
+    // Longer exchanges while the plant is not held at its capacity and the
+    // brine settles: the interval doubles (to the longest) while no
+    // section's brine moves by more than `settled` over an exchange.
+    double moved = 0.0;
+    for (std::size_t k = 0; k < runs.size(); ++k) moved = std::max(moved, std::abs(brine[k] - row.brine[k]));
+    const bool held_at_capacity = s.capacity && supply > s.min_supply;
+    interval = held_at_capacity || moved > s.settled ? s.interval
+                                                      : std::min(2.0 * interval, std::max(s.interval, s.longest_interval));
     for (; next_profile < s.profile_times.size() && s.profile_times[next_profile] <= stop; ++next_profile) {
       PlantProfile at{stop, base};
       for (auto* channel : {&at.brine.down, &at.brine.up})

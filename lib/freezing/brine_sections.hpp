@@ -51,7 +51,13 @@ struct CircuitSettings {
   std::optional<double> capacity;       // W: the plant at its capacity
   double min_supply = 0.0;              // degC, with a capacity
   int pipes = 1;                        // pipes on the plant, in parallel
-  double interval = 0.0;                // s between exchanges
+  double interval = 0.0;                // s between exchanges (the shortest)
+  // The longest, s: exchanges lengthen, doubling, while the plant is not
+  // held at its capacity and no section's brine moves by more than
+  // `settled` K over one (the brine then hardly changes; a held brine's
+  // run does not depend on how often it is refreshed). 0: never longer.
+  double longest_interval = 0.0;
+  double settled = 0.02;
   int cells = 200;                      // along the pipe
   // The brine's properties at a temperature (degC); set, they are taken at
   // each exchange at the circuit's mean temperature over the last interval

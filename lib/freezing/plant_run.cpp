@@ -35,6 +35,7 @@ CircuitSettings circuit_settings(const project::Project& p) {
   s.min_supply = plant.min_supply_temperature;
   s.pipes = project::pipe_count(section.layout) - static_cast<int>(section.layout.failed_pipes.size());
   s.interval = plant.exchange_interval;
+  s.longest_interval = plant.longest_exchange_interval;
   s.profile_times = p.time.snapshots;
   return s;
 }

@@ -1,5 +1,6 @@
 #include "project/load_plant.hpp"
 
+#include <algorithm>
 #include <fmt/format.h>
 
 #include "project/load_basics.hpp"
@@ -96,13 +97,21 @@ std::optional<Plant> read_plant(const Node& root, const Project& project) {
     n.problem(R"(only used with "layout" (shaft sections))");
     return std::nullopt;
   }
-  if (!n.object({"supply_temperature", "capacity_kw", "min_supply_temperature", "cop", "exchange_hours"}))
+  if (!n.object({"supply_temperature", "capacity_kw", "min_supply_temperature", "cop", "exchange_hours",
+                 "longest_exchange_hours"}))
     return std::nullopt;
   Plant plant;
   read_supply(n, plant);
   if (n["cop"].present()) plant.cop = n["cop"].positive();
-  plant.exchange_interval = (n["exchange_hours"].present() ? n["exchange_hours"].positive().value_or(1.0) : 1.0) *
-                            3600.0;
+  const auto hours = [&](const char* key, double otherwise) {
+    return n[key].present() ? n[key].positive().value_or(otherwise) * 3600.0 : otherwise * 3600.0;
+  };
+  plant.exchange_interval = hours("exchange_hours", 1.0);
+  plant.longest_exchange_interval = hours("longest_exchange_hours", std::max(12.0, plant.exchange_interval / 3600.0));
+  if (plant.longest_exchange_interval < plant.exchange_interval)
+    n["longest_exchange_hours"].problem(fmt::format("must be at least exchange_hours ({} h), got {}",
+                                                    plant.exchange_interval / 3600.0,
+                                                    plant.longest_exchange_interval / 3600.0));
   read_brine(brine.required(), plant);
   if (pipe.present()) plant.pipe = read_coaxial(pipe, section->pipe.diameter);
   check_brine_liquid(n, plant);

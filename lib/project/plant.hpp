@@ -47,7 +47,8 @@ struct Plant {
   std::optional<double> capacity;  // W
   double min_supply_temperature = 0.0;
   std::optional<double> cop;       // heat drawn per unit of electricity
-  double exchange_interval = 0.0;  // s between the brine's updates
+  double exchange_interval = 0.0;          // s between the brine's updates (the shortest)
+  double longest_exchange_interval = 0.0;  // s: the longest, once the brine settles
 };
 
 }  // namespace frostwall::project
