@@ -158,6 +158,7 @@ TEST_CASE(
   CHECK(html.find("<h3>Sizing</h3>") != std::string::npos);
   const json view = frostwall::report::report_view(dir.path / "out");
   frostwall::test::check_section_filled(view, "has_plant");
+  frostwall::test::check_section_filled(view, "plant_card");
 }
 
 TEST_CASE("One section with a plant at a flow too fast to warm the brine closes as with the brine held at the supply",

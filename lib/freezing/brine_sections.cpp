@@ -164,8 +164,9 @@ CircuitRun run_brine_circuit(const std::vector<CircuitSection>& sections, const 
     double moved = 0.0;
     for (std::size_t k = 0; k < runs.size(); ++k) moved = std::max(moved, std::abs(brine[k] - row.brine[k]));
     const bool held_at_capacity = s.capacity && supply > s.min_supply;
-    interval = held_at_capacity || moved > s.settled ? s.interval
-                                                      : std::min(2.0 * interval, std::max(s.interval, s.longest_interval));
+    interval = held_at_capacity || moved > s.settled
+                   ? s.interval
+                   : std::min(2.0 * interval, std::max(s.interval, s.longest_interval));
     for (; next_profile < s.profile_times.size() && s.profile_times[next_profile] <= stop; ++next_profile) {
       PlantProfile at{stop, base};
       for (auto* channel : {&at.brine.down, &at.brine.up})

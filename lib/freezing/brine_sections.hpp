@@ -58,7 +58,7 @@ struct CircuitSettings {
   // run does not depend on how often it is refreshed). 0: never longer.
   double longest_interval = 0.0;
   double settled = 0.02;
-  int cells = 200;                      // along the pipe
+  int cells = 200;  // along the pipe
   // The brine's properties at a temperature (degC); set, they are taken at
   // each exchange at the circuit's mean temperature over the last interval
   // (the supply's and the return's mean; at the start, the supply), and the

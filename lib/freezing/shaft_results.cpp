@@ -28,7 +28,9 @@ namespace {
 using nlohmann::json;
 
 json stretch_json(const post::FrozenStretch& s) {
-  return {{keys::inner, summary::number_or_null(s.inner)}, {keys::outer, summary::number_or_null(s.outer)}, {keys::thickness, s.thickness}};
+  return {{keys::inner, summary::number_or_null(s.inner)},
+          {keys::outer, summary::number_or_null(s.outer)},
+          {keys::thickness, s.thickness}};
 }
 std::string csv_number(const std::optional<double>& v) { return v ? fmt::format("{:.6g}", *v) : ""; }
 }  // namespace

@@ -46,7 +46,7 @@ struct Plant {
   TemperatureSchedule supply;
   std::optional<double> capacity;  // W
   double min_supply_temperature = 0.0;
-  std::optional<double> cop;       // heat drawn per unit of electricity
+  std::optional<double> cop;               // heat drawn per unit of electricity
   double exchange_interval = 0.0;          // s between the brine's updates (the shortest)
   double longest_exchange_interval = 0.0;  // s: the longest, once the brine settles
 };

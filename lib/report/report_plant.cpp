@@ -72,10 +72,10 @@ void add_plant(const RunRecord& run, json& view) {
       number(1e3 * b.value("viscosity", 0.0), 2), number(f["annulus"]["reynolds"], 0), number(f["annulus"]["h"], 0),
       number(f["R_channels"], 3), number(f["R_ground"], 4));
   view["plant_sizing"] = sizing_rows(p);
-  view["plant_card"] = {
-      {"value", number(p["peak_load_kw"], 1) + " kW"},
-      {"note", fmt::format("{} kW at the end; supply {} °C, return {} °C", number(p["end_load_kw"], 1),
-                           number(p["end_supply_temperature"], 1), number(p["end_return_temperature"], 1))}};
+  view["plant_card"] = true;
+  view["plant_peak"] = number(p["peak_load_kw"], 1) + " kW";
+  view["plant_peak_note"] = fmt::format("{} kW at the end; supply {} °C, return {} °C", number(p["end_load_kw"], 1),
+                                        number(p["end_supply_temperature"], 1), number(p["end_return_temperature"], 1));
   json sections = json::array();
   for (const auto& s : p.value("sections", json::array()))
     sections.push_back({{"name", s.value("name", "")},
