@@ -29,6 +29,32 @@ std::vector<double> hats(const std::vector<double>& depth, double z) {
   return phi;
 }
 
+// The brine along the pipe at a stop for each profile time reached: the
+// profile from a supply at 0 shifted by the supply that ran.
+void keep_profiles(const std::vector<double>& times, std::size_t& next, double stop, const design::BrineProfile& base,
+                   double supply, double return_temperature, std::vector<PlantProfile>& out) {
+  for (; next < times.size() && times[next] <= stop; ++next) {
+    if (!out.empty() && out.back().time == stop) continue;
+    PlantProfile at{stop, base};
+    for (auto* channel : {&at.brine.down, &at.brine.up})
+      for (double& T : *channel) T += supply;
+    at.brine.supply = supply, at.brine.return_temperature = return_temperature;
+    out.push_back(std::move(at));
+  }
+}
+
+// The next exchange's interval: the shortest while the plant is held at its
+// capacity or a section's brine moved by more than `settled` over the last
+// one; else twice the last, up to the longest.
+double next_interval(const CircuitSettings& s, double last, double supply, const std::vector<double>& before,
+                     const std::vector<double>& after) {
+  double moved = 0.0;
+  for (std::size_t k = 0; k < before.size(); ++k) moved = std::max(moved, std::abs(after[k] - before[k]));
+  const bool held_at_capacity = s.capacity && supply > s.min_supply;
+  if (held_at_capacity || moved > s.settled) return s.interval;
+  return std::min(2.0 * last, std::max(s.interval, s.longest_interval));
+}
+
 // One section marched in the circuit.
 struct Marching {
   project::RunOptions options;
@@ -158,22 +184,8 @@ CircuitRun run_brine_circuit(const std::vector<CircuitSection>& sections, const 
     const double ran = supply;
     supply = next_supply(stop);
     set_brine(supply, stop);
-    // Longer exchanges while the plant is not held at its capacity and the
-    // brine settles: the interval doubles (to the longest) while no
-    // section's brine moves by more than `settled` over an exchange.
-    double moved = 0.0;
-    for (std::size_t k = 0; k < runs.size(); ++k) moved = std::max(moved, std::abs(brine[k] - row.brine[k]));
-    const bool held_at_capacity = s.capacity && supply > s.min_supply;
-    interval = held_at_capacity || moved > s.settled
-                   ? s.interval
-                   : std::min(2.0 * interval, std::max(s.interval, s.longest_interval));
-    for (; next_profile < s.profile_times.size() && s.profile_times[next_profile] <= stop; ++next_profile) {
-      PlantProfile at{stop, base};
-      for (auto* channel : {&at.brine.down, &at.brine.up})
-        for (double& T : *channel) T += ran;
-      at.brine.supply = ran, at.brine.return_temperature = return_temperature;
-      if (out.profiles.empty() || out.profiles.back().time != stop) out.profiles.push_back(std::move(at));
-    }
+    interval = next_interval(s, interval, supply, row.brine, brine);
+    keep_profiles(s.profile_times, next_profile, stop, base, ran, return_temperature, out.profiles);
     out.plant_heat += row.load * (stop - t);
     out.series.push_back(std::move(row));
     t = stop;

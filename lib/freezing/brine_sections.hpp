@@ -11,6 +11,9 @@
 //  - the brine's temperatures follow (design::brine_with_draw) with the
 //    supply of the stop, and each section's brine for the next interval is
 //    the annulus' temperature at its depth.
+// Between stops the sections march side by side (the cores shared among
+// them). Stops come every `interval` while the plant is held at its
+// capacity, and lengthen while the brine settles (CircuitSettings).
 // The brine is steady (its own heat capacity left out), so the plant's load
 // is the pipes' draw: n m c (T_return - T_supply) equals the sections'
 // drawn heat integrated along the pipe with the same weights, to round-off.
