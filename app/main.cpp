@@ -146,6 +146,12 @@ int check_command(const std::string& file) {
                                            : study::check_layers(*p, text_of(file));
     std::cout << file << ": can run (output into " << p->output.directory << ")\n";
     for (const auto& line : lines) std::cout << "  " << line << "\n";
+    if (p->plant) {
+      const std::size_t sections = p->survey           ? study::section_runs(*p, text_of(file)).size()
+                                   : p->layers.empty() ? 1
+                                                       : p->layers.size();
+      std::cout << "  " << run::describe_plant(*p, sections) << "\n";
+    }
     if (p->calibration) {
       calibrate::check_calibration(*p);
       std::cout << "  " << calibrate::describe_calibration(*p) << "\n";

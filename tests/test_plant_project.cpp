@@ -192,3 +192,16 @@ TEST_CASE("One section with a plant at a flow too fast to warm the brine closes 
   CHECK(plant["end_difference_K"].get<double>() < 0.05);
   CHECK(coupled == Approx(fixed).epsilon(2e-3));
 }
+
+TEST_CASE("frostwall check tells the plant: pipes with flow, films, capacity, sections coupled",
+          "[plant][cli][check]") {
+  frostwall::test::TempDir dir("plant_check");
+  const auto run = frostwall::test::frostwall_cli(
+      dir.path, "check '" + (fs::path(FROSTWALL_SOURCE_DIR) / "projects" / "shaft_plant.json").string() + "'");
+  REQUIRE(run.exit_status == 0);
+  std::ifstream in(dir.path / "cli_stdout.txt");
+  const std::string out((std::istreambuf_iterator<char>(in)), {});
+  INFO(out);
+  CHECK(out.find("plant: 26 pipes with flow, 1.5 m3/h each down the annulus") != std::string::npos);
+  CHECK(out.find("120 kW, supply no colder than -30 C; 2 sections coupled through the brine") != std::string::npos);
+}

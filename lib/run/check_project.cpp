@@ -8,9 +8,11 @@
 
 #include "cfd_dem/run.hpp"
 #include "dem/packing.hpp"
+#include "design/coaxial_pipe.hpp"
 #include "freezing/capacity.hpp"
 #include "freezing/heat_run.hpp"
 #include "freezing/model.hpp"
+#include "freezing/plant_run.hpp"
 #include "geometry/layout.hpp"
 #include "io/output_directory.hpp"
 #include "run/run_project.hpp"
@@ -197,6 +199,23 @@ std::vector<std::string> check_project(const project::Project& p) {
     lines.push_back(
         "error estimate: three coarser runs after it (1.35, 1.5 and 1.65 times the spacing), about as long again");
   return lines;
+}
+
+std::string describe_plant(const project::Project& p, std::size_t sections) {
+  const auto& plant = *p.plant;
+  const auto s = freezing::circuit_settings(p);
+  const auto r = design::coaxial_resistances(s.pipe, s.brine, s.flow);
+  const double coldest = plant.capacity ? plant.min_supply_temperature : s.supply.points.front().second;
+  const std::string supply =
+      plant.capacity
+          ? fmt::format("{:g} kW, supply no colder than {:g} C", *plant.capacity / 1e3, plant.min_supply_temperature)
+          : fmt::format("supply {:g} C{}", coldest, s.supply.constant() ? "" : " (schedule)");
+  return fmt::format(
+      "plant: {} pipes with flow, {:g} m3/h each down the {}; annulus Re {:.0f}, h {:.0f} W/(m2 K) at {:g} C; {}; "
+      "{} section{} coupled through the brine, exchanges every {:g} h (up to {:g} h once the brine settles)",
+      s.pipes, s.flow * 3600.0, plant.channel == project::SupplyChannel::annulus ? "annulus" : "inner pipe",
+      r.annulus.reynolds, r.annulus.h, s.supply.at(0.0), supply, sections, sections == 1 ? "" : "s",
+      plant.exchange_interval / 3600.0, plant.longest_exchange_interval / 3600.0);
 }
 
 }  // namespace frostwall::run

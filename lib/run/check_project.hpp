@@ -17,4 +17,8 @@ namespace frostwall::run {
 // places the grains) to count them: seconds at most; settles nothing.
 std::vector<std::string> check_project(const project::Project& p);
 
+// With a plant, one line: the pipes with flow, the films at the coldest
+// supply, the plant's supply or capacity, the sections and exchanges.
+std::string describe_plant(const project::Project& p, std::size_t sections);
+
 }  // namespace frostwall::run
