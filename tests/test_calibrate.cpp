@@ -28,6 +28,7 @@
 #include "report/templates.hpp"
 #include "report_view_check.hpp"
 #include "temp_dir.hpp"
+#include "twin_inputs.hpp"
 #include "paths.hpp"
 
 using namespace frostwall;
@@ -160,16 +161,7 @@ const std::vector<double> truth{0.88, 1.10, 1.08};
 json run_twin(const json& project, const std::vector<double>& values, const fs::path& out) {
   json twin = project;
   twin.erase("calibrate");
-  const auto sand = *project::builtin_soil("sand");
-  twin["soil"] = {
-      {"name", "twin"},
-      {"density", sand.density},
-      {"unfrozen",
-       {{"conductivity", sand.unfrozen.conductivity[0] * values[1]}, {"heat_capacity", sand.unfrozen.heat_capacity}}},
-      {"frozen",
-       {{"conductivity", sand.frozen.conductivity[0] * values[0]}, {"heat_capacity", sand.frozen.heat_capacity}}},
-      {"latent_heat", sand.latent_heat * values[2]},
-      {"freezing_point", sand.freezing_point}};
+  twin["soil"] = test::scaled_sand(values[0], values[1], values[2]);
   auto p = project::parse_project(twin.dump(), "twin", out.string());
   p.output.directory = (out / "out").string();
   return json::parse(summary::to_json(run::run_project(p, {})).dump());

@@ -28,6 +28,7 @@
 #include "project/cacl2_brine.hpp"
 #include "shipped_run.hpp"
 #include "temp_dir.hpp"
+#include "twin_inputs.hpp"
 
 namespace fs = std::filesystem;
 using nlohmann::json;
@@ -168,11 +169,8 @@ TEST_CASE("One section with a plant at a flow too fast to warm the brine closes 
                       {"time", {{"end", 25}, {"unit", "d"}, {"snapshots", {25}}}},
                       {"output", {{"vtk", false}, {"report", false}}}};
   json with_plant = patch;
-  with_plant["pipe"] = {{"temperature", nullptr},
-                        {"wall_thickness", 0.006},
-                        {"inner_diameter", 0.063},
-                        {"inner_wall_thickness", 0.0058},
-                        {"length", 40}};
+  with_plant["pipe"] = frostwall::test::coaxial_pipe(40);
+  with_plant["pipe"]["temperature"] = nullptr;
   with_plant["brine"] = {{"flow_per_pipe", 400}};
   with_plant["plant"] = {{"supply_temperature", -30}};
   frostwall::test::run_shipped("single_ring_sand.json", with_plant, plant_dir.path);

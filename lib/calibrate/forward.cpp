@@ -5,6 +5,7 @@
 #include <numeric>
 
 #include "freezing/heat_run.hpp"
+#include "freezing/plant_run.hpp"
 #include "particles/side_by_side.hpp"
 
 namespace frostwall::calibrate {
@@ -14,14 +15,20 @@ using project::Reading;
 
 namespace {
 
+constexpr double nan_value = std::numeric_limits<double>::quiet_NaN();
+
 // Reads the run's sensors (freezing::Thermometers, linear in time between
 // the two steps around each reading) at the readings' times, and ends the
 // run after the last.
 class SensorRecorder : public freezing::RunExtension {
  public:
+  // With a plant's return among the readings the run goes on to its end:
+  // the return is read from the plant's rows afterwards.
   explicit SensorRecorder(const std::vector<Reading>& readings)
-      : readings_(readings), order_(readings.size()), values_(readings.size(), nan) {
-    std::iota(order_.begin(), order_.end(), std::size_t{0});
+      : readings_(readings), order_(), values_(readings.size(), nan) {
+    for (std::size_t k = 0; k < readings.size(); ++k)
+      if (readings[k].plant_return) finish_early_ = false;
+      else order_.push_back(k);
     std::stable_sort(order_.begin(), order_.end(),
                      [&](std::size_t a, std::size_t b) { return readings[a].time < readings[b].time; });
   }
@@ -32,17 +39,46 @@ class SensorRecorder : public freezing::RunExtension {
       values_[order_[next_]] = thermometers.at(r.sensor, r.time);
     }
   }
-  bool finished() const override { return !order_.empty() && next_ == order_.size(); }
+  bool finished() const override { return finish_early_ && !order_.empty() && next_ == order_.size(); }
 
   const std::vector<double>& values() const { return values_; }
 
  private:
   static constexpr double nan = std::numeric_limits<double>::quiet_NaN();
   const std::vector<Reading>& readings_;
-  std::vector<std::size_t> order_;  // readings by time
+  std::vector<std::size_t> order_;  // the thermometers' readings by time
   std::size_t next_ = 0;
+  bool finish_early_ = true;
   std::vector<double> values_;
 };
+
+// The plant's return temperature at t from its rows (each the return over
+// the exchange that ends at its time), linear between rows.
+double return_at(const std::vector<freezing::PlantRow>& rows, double t) {
+  if (rows.empty()) return nan_value;
+  if (t <= rows.front().time) return rows.front().return_temperature;
+  for (std::size_t k = 1; k < rows.size(); ++k)
+    if (t <= rows[k].time) {
+      const double s = (t - rows[k - 1].time) / (rows[k].time - rows[k - 1].time);
+      return (1.0 - s) * rows[k - 1].return_temperature + s * rows[k].return_temperature;
+    }
+  return rows.back().return_temperature;
+}
+
+// A section with its plant: the circuit marched with the section at
+// mid-pipe (freezing/plant_run.hpp), the thermometers read as any run's.
+ForwardResult run_plant_forward(const project::Project& p, const std::vector<Reading>& readings) {
+  SensorRecorder recorder(readings);
+  const auto settings = freezing::circuit_settings(p);
+  const auto run =
+      freezing::run_brine_circuit({{p, 0.5 * p.plant->pipe.length, "", &recorder}}, settings, project::RunOptions{});
+  ForwardResult result;
+  result.summary = run.sections.front();
+  result.temperatures = recorder.values();
+  for (std::size_t k = 0; k < readings.size(); ++k)
+    if (readings[k].plant_return) result.temperatures[k] = return_at(run.series, readings[k].time);
+  return result;
+}
 
 }  // namespace
 
@@ -52,6 +88,11 @@ ForwardResult run_forward(project::Project p, const std::vector<Reading>& readin
   p.output.vtk = false;
   p.output.report = false;
   p.numerics.error_estimate = false;
+  if (p.plant) {
+    auto result = run_plant_forward(p, readings);
+    fs::remove_all(scratch);
+    return result;
+  }
   freezing::Model built = cloud ? freezing::build_model(p, freezing::copy_cloud(*cloud, p)) : freezing::build_model(p);
   SensorRecorder recorder(readings);
   ForwardResult result;

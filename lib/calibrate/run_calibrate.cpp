@@ -54,8 +54,8 @@ std::string fit_csv(const Project& p, const std::vector<double>& start, const st
   std::string csv = "sensor,time,measured_C,start_C,fitted_C\n";
   for (std::size_t k = 0; k < c.readings.size(); ++k) {
     const auto& r = c.readings[k];
-    csv += fmt::format("{},{:.6g},{:.6g},{:.6g},{:.6g}\n", p.monitoring[r.sensor].name, r.time / unit, r.temperature,
-                       r.temperature + start[k], r.temperature + fitted[k]);
+    csv += fmt::format("{},{:.6g},{:.6g},{:.6g},{:.6g}\n", r.plant_return ? "return" : p.monitoring[r.sensor].name,
+                       r.time / unit, r.temperature, r.temperature + start[k], r.temperature + fitted[k]);
   }
   return csv;
 }
@@ -124,9 +124,11 @@ std::string describe_calibration(const Project& p) {
   std::string names;
   for (const auto& q : c.parameters)
     names += (names.empty() ? "" : ", ") + std::string(project::parameter_name(q.which));
-  return fmt::format("calibrate: {} readings of {} sensors to {:g} {} ({}); fits {} (`frostwall calibrate`)",
-                     c.readings.size(), p.monitoring.size(), last / p.time.unit_seconds(), p.time.unit_name(), c.file,
-                     names);
+  const bool plant_return =
+      std::any_of(c.readings.begin(), c.readings.end(), [](const auto& r) { return r.plant_return; });
+  return fmt::format("calibrate: {} readings of {} sensors{} to {:g} {} ({}); fits {} (`frostwall calibrate`)",
+                     c.readings.size(), p.monitoring.size(), plant_return ? " and the plant's return" : "",
+                     last / p.time.unit_seconds(), p.time.unit_name(), c.file, names);
 }
 
 namespace {
@@ -263,6 +265,8 @@ nlohmann::ordered_json calibration_json(const Context& ctx, const FitResult& fit
   std::vector<std::string> names, sensors;
   for (const auto& q : c.parameters) names.push_back(project::parameter_name(q.which));
   for (const auto& s : ctx.p.monitoring) sensors.push_back(s.name);
+  if (std::any_of(c.readings.begin(), c.readings.end(), [](const auto& r) { return r.plant_return; }))
+    sensors.push_back("return");
   std::vector<std::vector<double>> correlation(names.size());
   for (Eigen::Index i = 0; i < iv.correlation.rows(); ++i)
     for (Eigen::Index j = 0; j < iv.correlation.cols(); ++j) correlation[i].push_back(iv.correlation(i, j));

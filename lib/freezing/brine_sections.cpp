@@ -118,7 +118,7 @@ CircuitRun run_brine_circuit(const std::vector<CircuitSection>& sections, const 
     for (double l : film.perimeter) m.pipes_in += l / film.full_perimeter;
     m.options = options;
     if (!sections[k].project_text.empty()) m.options.project_text = sections[k].project_text;
-    m.run = std::make_unique<SteppedHeatRun>(projects[k], m.model, m.options);
+    m.run = std::make_unique<SteppedHeatRun>(projects[k], m.model, m.options, sections[k].extension);
   }
 
   const double end = projects.front().time.end;

@@ -33,6 +33,7 @@
 #include <vector>
 
 #include "design/brine_circuit.hpp"
+#include "freezing/heat_run.hpp"
 #include "project/project.hpp"
 #include "project/run_options.hpp"
 #include "summary/summary.hpp"
@@ -40,9 +41,10 @@
 namespace frostwall::freezing {
 
 struct CircuitSection {
-  project::Project project;  // a shaft section (its output directory its own)
-  double depth = 0.0;        // m below the pipe's top
-  std::string project_text;  // written as the section's project.json (empty: the options')
+  project::Project project;           // a shaft section (its output directory its own)
+  double depth = 0.0;                 // m below the pipe's top
+  std::string project_text;           // written as the section's project.json (empty: the options')
+  RunExtension* extension = nullptr;  // what the section's run also does (heat_run.hpp)
 };
 
 struct CircuitSettings {

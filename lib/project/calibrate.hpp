@@ -33,6 +33,9 @@ struct Reading {
   std::size_t sensor = 0;    // index into Project::monitoring
   double time = 0.0;         // s
   double temperature = 0.0;  // degC
+  // The plant's return temperature (sensor "return" of a project with a
+  // plant), not a thermometer: `sensor` is then unused.
+  bool plant_return = false;
 };
 
 struct Calibration {

@@ -109,9 +109,11 @@ void read_rows(std::istream& in, const Project& project, std::vector<Reading>& r
           fmt::format("line {}: expected 3 cells (sensor,time,temperature), got {}", number, cells.size()));
       continue;
     }
+    const bool plant_return = project.plant && cells[0] == "return";
     const auto sensor = sensors.find(cells[0]);
-    if (sensor == sensors.end()) {
-      problems.push_back(fmt::format("line {}: sensor '{}' is not in \"monitoring\"", number, cells[0]));
+    if (sensor == sensors.end() && !plant_return) {
+      problems.push_back(fmt::format("line {}: sensor '{}' is not in \"monitoring\"{}", number, cells[0],
+                                     project.plant ? R"( (or "return", the plant's return temperature))" : ""));
       continue;
     }
     const auto time = parse_number(cells[1]), temperature = parse_number(cells[2]);
@@ -127,7 +129,7 @@ void read_rows(std::istream& in, const Project& project, std::vector<Reading>& r
                                      project.time.end / unit, project.time.unit_name()));
       continue;
     }
-    readings.push_back({number, sensor->second, *time * unit, *temperature});
+    readings.push_back({number, plant_return ? 0 : sensor->second, *time * unit, *temperature, plant_return});
   }
 }
 
@@ -148,7 +150,7 @@ std::optional<Calibration> read_calibration(const Node& n, const Project& projec
   }
   const auto file = n["readings"].required().string();
   if (!file) return std::nullopt;
-  if (project.monitoring.empty()) {
+  if (project.monitoring.empty() && !project.plant) {
     n.problem(R"(needs "monitoring" (the sensors whose readings are fitted))");
     return std::nullopt;
   }

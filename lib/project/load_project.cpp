@@ -372,7 +372,6 @@ Project read_project(const Node& root, const std::string& base_directory) {
   if (const Node c = root["calibrate"]; c.present()) {
     if (!shaft || !project.layers.empty() || project.survey)
       c.problem(R"(only used with one shaft section ("layout" without "layers" or "survey"))");
-    else if (project.plant) c.problem(R"(not used with "plant" (calibration holds the pipe at its given temperature))");
     else project.calibration = detail::read_calibration(c, project, base_directory);
   }
   if (!project.output.front_along.empty() && !std::holds_alternative<Rectangle>(project.geometry))
