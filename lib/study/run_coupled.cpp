@@ -4,7 +4,6 @@
 #include <chrono>
 #include <fmt/core.h>
 #include <numeric>
-#include <omp.h>
 
 #include "freezing/plant_run.hpp"
 #include "report/report.hpp"
@@ -19,8 +18,6 @@ CoupledRun run_coupled(const project::Project& p, const Study& study, const std:
   out.run.writer = world_ranks().first();
   out.run.variants.resize(study.variants.size());
   if (!out.run.writer) return out;  // one circuit, one process
-  if (options.threads > 0) omp_set_num_threads(options.threads);
-  out.run.threads = omp_get_max_threads();
   // The circuit takes its sections from the top down.
   std::vector<std::size_t> order(depths.size());
   std::iota(order.begin(), order.end(), 0);
@@ -35,7 +32,7 @@ CoupledRun run_coupled(const project::Project& p, const Study& study, const std:
   run_options.note = [](const std::string&) {};
   if (options.note)
     options.note(
-        fmt::format("plant: {} sections coupled through the brine, {} threads", sections.size(), out.run.threads));
+        fmt::format("plant: {} sections coupled through the brine, side by side between exchanges", sections.size()));
   auto outcome = freezing::run_plant(p, sections, run_options, p.output.directory);
   for (std::size_t i = 0; i < order.size(); ++i) {
     const auto& v = study.variants[order[i]];

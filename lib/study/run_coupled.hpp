@@ -1,8 +1,8 @@
 // A shaft's sections (its layers or as-built depths) with a freezing plant:
 // not independent variants but cross-sections of one circuit, whose brine
 // warms down the pipes with what each section draws. They run together
-// (freezing/plant_run.hpp), every thread on each section in turn between
-// the brine's exchanges, on the first rank alone under mpirun. The outcome
+// (freezing/plant_run.hpp), side by side between the brine's exchanges on
+// the machine's cores, on the first rank alone under mpirun. The outcome
 // has the form a study's run has (each section's folder, summary and
 // report), with the plant's summary block beside it and plant.csv in the
 // project's output directory.
