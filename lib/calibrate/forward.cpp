@@ -15,8 +15,6 @@ using project::Reading;
 
 namespace {
 
-constexpr double nan_value = std::numeric_limits<double>::quiet_NaN();
-
 // Reads the run's sensors (freezing::Thermometers, linear in time between
 // the two steps around each reading) at the readings' times, and ends the
 // run after the last.
@@ -52,31 +50,20 @@ class SensorRecorder : public freezing::RunExtension {
   std::vector<double> values_;
 };
 
-// The plant's return temperature at t from its rows (each the return over
-// the exchange that ends at its time), linear between rows.
-double return_at(const std::vector<freezing::PlantRow>& rows, double t) {
-  if (rows.empty()) return nan_value;
-  if (t <= rows.front().time) return rows.front().return_temperature;
-  for (std::size_t k = 1; k < rows.size(); ++k)
-    if (t <= rows[k].time) {
-      const double s = (t - rows[k - 1].time) / (rows[k].time - rows[k - 1].time);
-      return (1.0 - s) * rows[k - 1].return_temperature + s * rows[k].return_temperature;
-    }
-  return rows.back().return_temperature;
-}
-
 // A section with its plant: the circuit marched with the section at
 // mid-pipe (freezing/plant_run.hpp), the thermometers read as any run's.
 ForwardResult run_plant_forward(const project::Project& p, const std::vector<Reading>& readings) {
   SensorRecorder recorder(readings);
-  const auto settings = freezing::circuit_settings(p);
-  const auto run =
-      freezing::run_brine_circuit({{p, 0.5 * p.plant->pipe.length, "", &recorder}}, settings, project::RunOptions{});
+  const auto run = freezing::run_brine_circuit({freezing::mid_pipe_section(p, "", &recorder)},
+                                               freezing::circuit_settings(p), project::RunOptions{});
+  // The return over each exchange at the exchange's end, linear between.
+  project::TemperatureSchedule returned;
+  for (const auto& row : run.series) returned.points.push_back({row.time, row.return_temperature});
   ForwardResult result;
   result.summary = run.sections.front();
   result.temperatures = recorder.values();
   for (std::size_t k = 0; k < readings.size(); ++k)
-    if (readings[k].plant_return) result.temperatures[k] = return_at(run.series, readings[k].time);
+    if (readings[k].plant_return) result.temperatures[k] = returned.at(readings[k].time);
   return result;
 }
 

@@ -181,11 +181,10 @@ CircuitRun run_brine_circuit(const std::vector<CircuitSection>& sections, const 
     // The row tells the interval just run: its supply, return and brine.
     return_temperature = supply + base.return_temperature;
     PlantRow row{stop, s.pipes * base.heat, supply, return_temperature, brine, draw, h_ran};
-    const double ran = supply;
     supply = next_supply(stop);
     set_brine(supply, stop);
     interval = next_interval(s, interval, supply, row.brine, brine);
-    keep_profiles(s.profile_times, next_profile, stop, base, ran, return_temperature, out.profiles);
+    keep_profiles(s.profile_times, next_profile, stop, base, row.supply, return_temperature, out.profiles);
     out.plant_heat += row.load * (stop - t);
     out.series.push_back(std::move(row));
     t = stop;

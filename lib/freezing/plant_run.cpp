@@ -58,10 +58,13 @@ PlantOutcome run_plant(const project::Project& p, const std::vector<PlantSection
   return outcome;
 }
 
+CircuitSection mid_pipe_section(const project::Project& p, const std::string& project_text, RunExtension* extension) {
+  return {p, 0.5 * p.plant->pipe.length, project_text, extension};
+}
+
 summary::Summary run_single_plant(const project::Project& p, const project::RunOptions& options) {
-  const double depth = 0.5 * p.plant->pipe.length;
-  const auto outcome =
-      run_plant(p, {{fmt::format("{:g} m", depth), {p, depth, options.project_text}}}, options, p.output.directory);
+  const auto section = mid_pipe_section(p, options.project_text);
+  const auto outcome = run_plant(p, {{fmt::format("{:g} m", section.depth), section}}, options, p.output.directory);
   auto j = summary::to_json(outcome.sections.front());
   j[summary::keys::plant] = outcome.plant;
   auto s = summary::from_json(j);

@@ -34,6 +34,10 @@ CircuitSettings circuit_settings(const project::Project& p);
 PlantOutcome run_plant(const project::Project& p, const std::vector<PlantSection>& sections,
                        const project::RunOptions& options, const std::filesystem::path& out);
 
+// A shaft project's one section in its plant's circuit: at mid-pipe.
+CircuitSection mid_pipe_section(const project::Project& p, const std::string& project_text,
+                                RunExtension* extension = nullptr);
+
 // The shaft project's single section with its plant, into its own output
 // directory (summary.json then carries `plant`).
 summary::Summary run_single_plant(const project::Project& p, const project::RunOptions& options);

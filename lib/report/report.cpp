@@ -37,6 +37,13 @@ std::string with_error(const json& value, const json& error, int decimals) {
 
 json row(const std::string& label, const std::string& value) { return {{"label", label}, {"value", value}}; }
 
+Series line(std::string label, std::vector<double> x, std::vector<double> y, std::string colour, bool dashed) {
+  Series s;
+  s.label = std::move(label), s.x = std::move(x), s.y = std::move(y), s.colour = std::move(colour);
+  s.dashed = dashed;
+  return s;
+}
+
 namespace {
 
 std::string extent(const json& stretch) {

@@ -16,14 +16,6 @@ using nlohmann::json;
 
 namespace {
 
-Series line(const std::string& label, const std::vector<double>& x, const std::vector<double>& y) {
-  Series s;
-  s.label = label;
-  s.x = x;
-  s.y = y;
-  return s;
-}
-
 json chart(const std::string& id, const Chart& c, const std::string& caption) {
   return {{"id", id}, {"title", c.title}, {"svg", render_svg(c)}, {"caption", caption}};
 }

@@ -19,14 +19,6 @@ std::vector<double> column(const json& rows, const char* key) {
   return v;
 }
 
-Series curve(std::string label, std::vector<double> x, std::vector<double> y, std::string colour = "",
-             bool dashed = false) {
-  Series s;
-  s.label = std::move(label), s.x = std::move(x), s.y = std::move(y), s.colour = std::move(colour);
-  s.dashed = dashed;
-  return s;
-}
-
 json sizing_rows(const json& plant) {
   json rows = json::array();
   const auto kw = [](const json& v) { return v.is_number() ? number(v, 1) + " kW" : std::string("–"); };
@@ -87,13 +79,13 @@ void add_plant(const RunRecord& run, json& view) {
 
   const json& rows = p["series"];
   const auto day = column(rows, "day");
-  Chart load = line_chart("The plant's load", "time (d)", "load (kW)", {curve("load", day, column(rows, "load_kw"))});
+  Chart load = line_chart("The plant's load", "time (d)", "load (kW)", {line("load", day, column(rows, "load_kw"))});
   if (p["capacity_kw"].is_number()) load.guides.push_back({false, p["capacity_kw"].get<double>(), "capacity"});
   load.y_include = {0.0};
-  std::vector<Series> temperatures{curve("supply", day, column(rows, "supply_temperature")),
-                                   curve("return", day, column(rows, "return_temperature"))};
+  std::vector<Series> temperatures{line("supply", day, column(rows, "supply_temperature")),
+                                   line("return", day, column(rows, "return_temperature"))};
   for (std::size_t k = 0; k < sections.size(); ++k) {
-    Series s = curve("brine at " + sections[k]["name"].get<std::string>(), day, {}, "", true);
+    Series s = line("brine at " + sections[k]["name"].get<std::string>(), day, {}, "", true);
     for (const auto& r : rows) s.y.push_back(r["brine_temperature"][k].get<double>());
     temperatures.push_back(std::move(s));
   }
@@ -105,9 +97,9 @@ void add_plant(const RunRecord& run, json& view) {
     const auto& at = profiles[k];
     const auto depth = at["depth"].get<std::vector<double>>();
     const std::string label = "day " + number(at["day"], 1);
-    along.push_back(curve(label, depth, at["annulus"].get<std::vector<double>>(), colours[k]));
-    along.push_back(curve("", depth, at["inner"].get<std::vector<double>>(), colours[k], true));
-    draw.push_back(curve(label, depth, at["draw_W_per_m"].get<std::vector<double>>(), colours[k]));
+    along.push_back(line(label, depth, at["annulus"].get<std::vector<double>>(), colours[k]));
+    along.push_back(line("", depth, at["inner"].get<std::vector<double>>(), colours[k], true));
+    draw.push_back(line(label, depth, at["draw_W_per_m"].get<std::vector<double>>(), colours[k]));
   }
   Chart depth_T = line_chart("The brine along the pipe", "depth (m)", "temperature (°C)", along);
   Chart depth_q = line_chart("The heat drawn along the pipe", "depth (m)", "heat drawn (W per m of pipe)", draw);

@@ -79,6 +79,9 @@ std::optional<std::pair<double, double>> last_front(const nlohmann::json& summar
 nlohmann::json card(const std::string& label, const std::string& value, const std::string& note);
 // A row of a two-column table: {"label": ..., "value": ...}.
 nlohmann::json row(const std::string& label, const std::string& value);
+// A chart's line (colour empty: the next categorical colour).
+Series line(std::string label, std::vector<double> x, std::vector<double> y, std::string colour = "",
+            bool dashed = false);
 
 void add_project(const RunRecord& run, nlohmann::json& view);    // layout, soil, schedule, numerics, design
 void add_headline(const RunRecord& run, nlohmann::json& view);   // closure, thickness, design check, table

@@ -34,7 +34,10 @@ CoupledRun run_coupled(const project::Project& p, const Study& study, const std:
     options.note(
         fmt::format("plant: {} sections coupled through the brine, side by side between exchanges", sections.size()));
   auto outcome = freezing::run_plant(p, sections, run_options, p.output.directory);
+  out.plant = outcome.plant;
+  out.plant["sections"] = nlohmann::json::array();  // in the variants' order
   for (std::size_t i = 0; i < order.size(); ++i) {
+    out.plant["sections"][order[i]] = outcome.plant["sections"][i];
     const auto& v = study.variants[order[i]];
     auto& o = out.run.variants[order[i]];
     o.name = v.name, o.changes = v.changes, o.ok = true;
@@ -42,13 +45,6 @@ CoupledRun run_coupled(const project::Project& p, const Study& study, const std:
     o.summary = summary::to_json(outcome.sections[i]);
     if (v.project["output"].value("report", true)) report::write_report(o.directory);
   }
-  out.plant = outcome.plant;
-  nlohmann::json by_variant = nlohmann::json::array();
-  for (std::size_t k = 0; k < order.size(); ++k) {
-    const auto i = static_cast<std::size_t>(std::find(order.begin(), order.end(), k) - order.begin());
-    by_variant.push_back(out.plant["sections"][i]);
-  }
-  out.plant["sections"] = by_variant;
   out.run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const double each = out.run.seconds / static_cast<double>(order.size());
   for (auto& v : out.run.variants) v.seconds = each;
