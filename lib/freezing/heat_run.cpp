@@ -6,6 +6,7 @@
 #include <cmath>
 #include <memory>
 #include <omp.h>
+#include <limits>
 #include <optional>
 #include <stdexcept>
 
@@ -13,6 +14,7 @@
 
 #include "freezing/brine_log.hpp"
 #include "freezing/closure_tracker.hpp"
+#include "freezing/excavation_run.hpp"
 #include "freezing/balance_log.hpp"
 #include "freezing/groundwater_flow.hpp"
 #include "freezing/output_frames.hpp"
@@ -46,6 +48,11 @@ class HeatRun {
   HeatRun(const Project& p, Model& built, const project::RunOptions& options, RunExtension* extension);
   thermal::TimeLoopObservers observers();
   const std::vector<double>& output_times() const { return times_; }
+  // The time (s) of the excavation's next change (infinity: none), and the change.
+  double next_event() const {
+    return excavation_ ? excavation_->next_event() : std::numeric_limits<double>::infinity();
+  }
+  void at_event(double t);
   summary::Summary finish(const thermal::TimeLoopResult& loop);
 
  private:
@@ -88,6 +95,7 @@ class HeatRun {
   double t_before_ = 0.0;
   std::vector<double> f_before_, T_before_, f_at_, T_at_;
   std::optional<Thermometers> thermometers_;  // a shaft section's sensors
+  std::unique_ptr<ExcavationRun> excavation_;
   std::vector<double> sensors_at_;
 };
 
@@ -147,6 +155,7 @@ HeatRun::HeatRun(const Project& p, Model& built, const project::RunOptions& opti
   if (extension_ && extension_->solid()) plain_->attach(extension_->solid());
   if (built.shaft && !p.monitoring.empty()) thermometers_.emplace(p, built);
   heat_before_ = built.model->stored_heat();
+  if (built.shaft && p.excavation) excavation_ = std::make_unique<ExcavationRun>(p, built);
   if (built.shaft && built.model->boundaries()[built.shaft->pipe_boundary].film)
     brine_ = std::make_unique<BrineLog>(std::get<project::ShaftSection>(p.geometry).pipe, *built.model,
                                         built.shaft->pipe_boundary, series_);
@@ -157,12 +166,23 @@ thermal::TimeLoopObservers HeatRun::observers() {
   o.progress = options_.progress;
   o.after_step = [this](const thermal::ThermalModel& m, double t) { after_step(m, t); };
   if (extension_) o.finished = [this] { return extension_->finished(); };
-  if (thermometers_) o.step_limit = [this] { return thermometers_->step_limit(); };
+  if (thermometers_ || excavation_)
+    o.step_limit = [this] {
+      double limit = thermometers_ ? thermometers_->step_limit() : std::numeric_limits<double>::infinity();
+      if (excavation_) limit = std::min(limit, excavation_->step_limit(t_before_));
+      return limit;
+    };
   o.snapshot = [this](const thermal::ThermalModel& m, double t, std::size_t) { at_output(m, t); };
   return o;
 }
 
+void HeatRun::at_event(double t) {
+  excavation_->apply(t);
+  if (results_) results_->set_face(excavation_->face_radius());
+}
+
 void HeatRun::after_step(const thermal::ThermalModel& m, double t) {
+  if (excavation_) excavation_->after_step(t);
   if (gaps_) {
     m.latent_left(latent_left_);
     gaps_->observe(t, latent_left_);
@@ -298,6 +318,11 @@ nlohmann::ordered_json HeatRun::summary(const thermal::TimeLoopResult& loop) con
       if (parts.contains(key)) summary[key] = parts[key];
     summary[keys::thinnest_angle_deg] = parts.value(keys::thinnest_angle_deg, nlohmann::json());
     if (brine_) summary[brine_->summary_key()] = brine_->finish(out_);
+    if (excavation_) {
+      auto entry = excavation_->facts();
+      entry.update(results_->excavation_entry(excavation_->day()));
+      summary["excavation"] = entry;
+    }
     const auto& w = built_.shaft->wedge;
     summary[keys::wedge] = {{"mirror_lines", w.mirror_count},
                             {"start_deg", w.start_angle * 180 / M_PI},
@@ -316,6 +341,10 @@ nlohmann::ordered_json HeatRun::summary(const thermal::TimeLoopResult& loop) con
   const auto& P = built_.particles();
   std::vector<std::string> warnings = p_.warnings;
   warnings.insert(warnings.end(), built_.warnings.begin(), built_.warnings.end());
+  if (excavation_)  // what the excavation moved in or out, beside the boundaries
+    boundary_heat.update({{"excavated", -excavation_->excavated_heat()},
+                          {"lining_placed", excavation_->lining_heat()},
+                          {"hydration", excavation_->hydration_heat()}});
   summary.update(nlohmann::ordered_json{
       {keys::heat_balance,
        {{"stored_change", model.stored_heat() - heat_before_}, {"from_boundaries", boundary_heat}, {"unit", "J/m"}}},
@@ -372,7 +401,14 @@ SteppedHeatRun::SteppedHeatRun(const Project& p, Model& built, const project::Ru
 
 SteppedHeatRun::~SteppedHeatRun() = default;
 
-double SteppedHeatRun::advance_to(double t) { return loop_->advance_to(t); }
+double SteppedHeatRun::advance_to(double t) {
+  // Every change of the excavation is landed on, then made.
+  for (double e = run_->next_event(); e <= t && !loop_->done(); e = run_->next_event()) {
+    loop_->advance_to(e);
+    run_->at_event(e);
+  }
+  return loop_->advance_to(t);
+}
 bool SteppedHeatRun::done() const { return loop_->done(); }
 const thermal::TimeLoopResult& SteppedHeatRun::loop() const { return loop_->result(); }
 summary::Summary SteppedHeatRun::finish() { return run_->finish(loop_->result()); }

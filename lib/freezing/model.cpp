@@ -1,6 +1,7 @@
 #include "freezing/model.hpp"
 
 #include "freezing/capacity.hpp"
+#include "freezing/excavation_face.hpp"
 
 #include <stdexcept>
 #include <cmath>
@@ -214,6 +215,23 @@ void start_in_zones(Model& m, const project::Project& p) {
   }
 }
 
+// The excavation's face: its particle added after the SPH pairs are built
+// (so no pair or moment correction sees it) and the pairs it may join,
+// from the lining's inner face to two of the ground's spacings beyond the
+// excavation radius.
+void join_face(const project::Project& p, Model& m, particles::PairWeights& pairs) {
+  add_face_node(static_cast<geometry::ShaftScene&>(*m.scene), p);
+  if (m.particles().graded())
+    m.smoothing = sph::SmoothingLengths::of_particles(m.particles(), p.numerics.smoothing_ratio);
+  const auto& P = m.particles();
+  const double a = *std::get<project::ShaftSection>(p.geometry).shaft.excavation_radius;
+  const double inner = a - (p.excavation->lining ? p.excavation->lining->thickness : 0.0);
+  double s = P.spacing;
+  for (std::size_t i = 0; i < P.n_free; ++i)
+    if (std::abs(P.position[i].norm() - a) < 0.5) s = std::max(s, P.spacing_of(i));
+  add_face_pairs(pairs, P, face_particle(*m.scene), inner, a + 2.0 * s);
+}
+
 // Which boundaries conduct no heat (their particles copy their reflections).
 std::vector<bool> insulated_boundaries(const geometry::Scene& scene) {
   std::vector<bool> insulated;
@@ -239,6 +257,7 @@ Model build_model(const project::Project& p, Model cloud) {
                                            // the water's heat and the line sinks' fit need the pairs' vectors
                                            p.groundwater.has_value() || pair_vectors});
   if (exchange && exchange->couples()) exchange->couple(pairs, m.particles(), line_sink_nodes(*m.shaft));
+  if (p.excavation) join_face(p, m, pairs);
   m.model = std::make_unique<thermal::ThermalModel>(
       m.particles().volume, m.particles().boundary, std::move(pairs), law, m.scene->boundaries,
       thermal::ConductionOptions{p.numerics.conductivity_mean, p.numerics.laplacian}, p.domain.initial_temperature,
@@ -251,6 +270,7 @@ Model build_model(const project::Project& p, Model cloud) {
     m.model->set_materials({law, thermal::pore_water_law(p.pore_fluid)}, std::move(material),
                            p.domain.initial_temperature);
   }
+  if (p.excavation) m.model->set_one_sided(face_boundary(*m.scene));
   if (!p.domain.initial_zones.empty()) start_in_zones(m, p);
   const double explicit_step = p.numerics.beta * m.h * m.h / m.model->max_diffusivity();
   if (p.numerics.integrator == project::IntegratorKind::implicit) {

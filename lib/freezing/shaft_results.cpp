@@ -212,12 +212,6 @@ json ShaftResults::wall_entries(std::optional<DesignMet>& met) const {
   // The wall check from the ground pressure and the frozen soil's strength.
   const auto& design = project_.design;
   if (design.checks_strength()) {
-    const double a = std::get<project::ShaftSection>(project_.geometry).shaft.excavation_radius.value_or(0.0);
-    // Measured on the design isotherm when there is one, else on the frozen front.
-    auto check = [&](const Reading& r) {
-      return design.isotherm ? check_wall(design, a, r.isotherm_thickness.value_or(0.0), r.isotherm_mean_temperature)
-                             : check_wall(design, a, r.min_thickness, r.mean_temperature_thinnest);
-    };
     for (std::size_t k = 0; k < snapshots_.size(); ++k) {
       const auto& r = snapshots_[k];
       const WallCheck c = check(r);
@@ -236,6 +230,14 @@ json ShaftResults::wall_entries(std::optional<DesignMet>& met) const {
   }
 
   return wall;
+}
+
+WallCheck ShaftResults::check(const Reading& r) const {
+  const auto& design = project_.design;
+  const double a = std::get<project::ShaftSection>(project_.geometry).shaft.excavation_radius.value_or(0.0);
+  // Measured on the design isotherm when there is one, else on the frozen front.
+  return design.isotherm ? check_wall(design, a, r.isotherm_thickness.value_or(0.0), r.isotherm_mean_temperature)
+                         : check_wall(design, a, r.min_thickness, r.mean_temperature_thinnest);
 }
 
 // The first time both targets hold (thickness interpolated) and the

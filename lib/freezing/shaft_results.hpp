@@ -38,6 +38,14 @@ class ShaftResults {
               const std::vector<double>& sensors);
   void snapshot(double t, const thermal::ThermalModel& model, const std::filesystem::path& out,
                 const std::string& stem);  // at each snapshot day
+  // From now on the ground begins at radius r (the excavation's face): the
+  // wall is measured from there outward.
+  void set_face(double r);
+  // The section's wall after its excavation day (readings of the regular
+  // series from that day on): thickness, mean temperature, required
+  // thickness and margin = thickness - required, with the thinnest wall and
+  // the smallest margin and their days (excavation.sections[k] of the summary).
+  nlohmann::json excavation_entry(double day) const;
   // Summary entries (wall, design, monitoring, interface) and the CSV files.
   nlohmann::json finish(const std::filesystem::path& out) const;
   // The whole ring's triangles (once a snapshot has built them; else
@@ -64,6 +72,8 @@ class ShaftResults {
     std::optional<double> upstream_thickness, downstream_thickness;
     double weakest_angle_deg = 0.0;  // the thinnest ray, or the middle of the open gap (post::weakest_angle)
   };
+  // The wall check of a reading: on the design isotherm when there is one.
+  WallCheck check(const Reading& r) const;
   Reading read(double t, const std::vector<double>& liquid_fraction, const std::vector<double>& temperature) const;
 
   const project::Project& project_;

@@ -202,9 +202,9 @@ std::vector<double> WallGauge::read_outward(const std::vector<double>& field, do
       return ray[i] > level;
     };
     for (double ring : ring_radii_) {
-      const std::size_t m = std::lower_bound(radii_.begin(), radii_.end(), ring) - radii_.begin();
+      const std::size_t m = std::max(first_, std::size_t(std::lower_bound(radii_.begin(), radii_.end(), ring) - radii_.begin()));
       std::size_t first = std::min(m, n - 1), last = first;
-      for (std::size_t i = m; i-- > 0;)
+      for (std::size_t i = m; i-- > first_;)
         if (first = i; above_at(i)) break;
       for (std::size_t i = m; i < n; ++i)
         if (last = i; above_at(i)) break;
@@ -214,6 +214,23 @@ std::vector<double> WallGauge::read_outward(const std::vector<double>& field, do
   return values;
 }
 
+void WallGauge::set_inner_limit(double r) {
+  inner_limit_ = r;
+  first_ = std::lower_bound(radii_.begin(), radii_.end(), r) - radii_.begin();
+}
+
+void WallGauge::clip(WallExtents& w) const {
+  if (!inner_limit_ || first_ >= radii_.size()) return;
+  for (std::size_t k = 0; k < w.rays.size(); ++k) {
+    auto& s = w.rays[k];
+    if (s.frozen() && *s.inner <= radii_[first_] + 1e-12) {
+      s.inner = *inner_limit_;
+      s.thickness = *s.outer - *inner_limit_;
+    }
+    if (k == 0 || s.thickness < w.min_thickness) w.min_thickness = s.thickness, w.thinnest_ray = int(k);
+  }
+}
+
 WallReading WallGauge::measure(const std::vector<double>& liquid_fraction,
                                const std::vector<double>& temperature) const {
   const std::size_t n = radii_.size();
@@ -221,6 +238,7 @@ WallReading WallGauge::measure(const std::vector<double>& liquid_fraction,
   const std::vector<double> f = read_outward(liquid_fraction, frozen_level, read);
   WallReading reading;
   reading.extents = wall_extents(fan_, f, ring_radii_);
+  clip(reading.extents);
   // The mean temperature over ray k's frozen stretch, from T where f was read.
   auto mean_temperature_on = [&](int k) {
     std::vector<double> T(n, std::numeric_limits<double>::quiet_NaN());
@@ -233,6 +251,7 @@ WallReading WallGauge::measure(const std::vector<double>& liquid_fraction,
   if (isotherm_) {  // the wall colder than the isotherm: the same reading on temperature
     const std::vector<double> T_fan = read_outward(temperature, *isotherm_, read);
     reading.isotherm = wall_extents(fan_, T_fan, ring_radii_, *isotherm_);
+    clip(reading.isotherm);
     const std::vector<double> ray = fan_.on_ray(T_fan, reading.isotherm.thinnest_ray);
     reading.isotherm_mean_temperature =
         mean_over_frozen(radii_, ray, ray, reading.isotherm.rays[std::size_t(reading.isotherm.thinnest_ray)]);

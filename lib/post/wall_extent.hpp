@@ -117,6 +117,10 @@ class WallGauge {
   WallGauge(const FieldSampler& sampler, RayFan fan, std::vector<double> ring_radii,
             std::optional<double> isotherm = std::nullopt);
   const RayFan& fan() const { return fan_; }
+  // The ground begins at radius r (an excavation's face): samples nearer
+  // the axis are not read, and a stretch that reaches the first sample
+  // beyond r begins at r.
+  void set_inner_limit(double r);
   // Fields over all particles (free then fixed).
   WallReading measure(const std::vector<double>& liquid_fraction, const std::vector<double>& temperature) const;
 
@@ -126,6 +130,9 @@ class WallGauge {
   std::vector<double> radii_;
   PointProbe fan_probe_;  // OB is its last ray
   std::optional<double> isotherm_;
+  std::optional<double> inner_limit_;
+  std::size_t first_ = 0;  // the first sample read on each ray
+  void clip(WallExtents& w) const;
   // The field at the fan's samples each ray needs for its stretches at or
   // below `level` (NaN elsewhere); read[k]: ray k's [first, last] sample read.
   std::vector<double> read_outward(const std::vector<double>& field, double level,

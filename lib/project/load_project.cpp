@@ -20,6 +20,7 @@
 #include "project/load_basics.hpp"
 #include "project/load_zones.hpp"
 #include "project/load_rectangle.hpp"
+#include "project/load_excavation.hpp"
 #include "project/load_plant.hpp"
 #include "project/load_shaft.hpp"
 #include "project/load_calibrate.hpp"
@@ -290,7 +291,7 @@ Project read_project(const Node& root, const std::string& base_directory) {
   root.object({"name",           "description", "physics",     "layout",   "shaft",  "geometry",   "pipe",
                "soil",           "domain",      "time",        "numerics", "design", "monitoring", "output",
                "mechanics",      "pore_fluid",  "groundwater", "layers",   "survey", "sections",   "failed_pipes",
-               "compare_intact", "calibrate",   "plant",       "brine"});
+               "compare_intact", "calibrate",   "plant",       "brine",      "excavation"});
   project.name = root["name"].required().string().value_or("");
   project.description = root["description"].string(true).value_or("");
 
@@ -366,6 +367,7 @@ Project read_project(const Node& root, const std::string& base_directory) {
   detail::read_pore_settings(root, project);
   read_design_and_layers(root, project);
   project.plant = detail::read_plant(root, project);
+  project.excavation = detail::read_excavation(root, project);
   project.monitoring = read_monitoring(root["monitoring"]);
   check_sensors_inside(project, root["monitoring"]);
   project.output = read_output(root["output"].required());

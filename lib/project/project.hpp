@@ -18,6 +18,7 @@
 #include "project/input_error.hpp"
 #include "project/mechanics.hpp"
 #include "project/numerics.hpp"
+#include "project/excavation.hpp"
 #include "project/plant.hpp"
 #include "project/schedule.hpp"
 #include "project/units.hpp"
@@ -293,6 +294,8 @@ struct Project {
   // The freezing plant and its brine circuit (none: the pipe's own
   // temperature or brine schedule holds every depth alike).
   std::optional<Plant> plant;
+  // Sinking the shaft inside the frozen wall (none: the ground stays).
+  std::optional<Excavation> excavation;
   // "physics": "cfd-dem": grains and pore water; then only name,
   // description, time and output above are read.
   std::optional<CfdDem> cfd_dem;

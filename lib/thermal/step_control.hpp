@@ -30,8 +30,18 @@ class ActivityStepControl {
   void adapt(const ThermalModel& model, double dt) {
     const double scale = enthalpy_scale(model);
     const auto& H = model.enthalpy();
-    const double change = particles::max_over_particles(
-        model.free_count(), [&](std::size_t i) { return std::abs(H[i] - before_[i]) / scale; });
+    double change = 0.0;
+    if (model.laws().size() == model.shared_scale_laws()) {
+      change = particles::max_over_particles(model.free_count(),
+                                             [&](std::size_t i) { return std::abs(H[i] - before_[i]) / scale; });
+    } else {  // materials added during the run (a lining) on their own scale
+      std::vector<double> scales(model.laws().size(), scale);
+      for (std::size_t m = model.shared_scale_laws(); m < scales.size(); ++m)
+        scales[m] = enthalpy_scale(model.laws()[m]);
+      change = particles::max_over_particles(model.free_count(), [&](std::size_t i) {
+        return std::abs(H[i] - before_[i]) / scales[model.material(i)];
+      });
+    }
     const double proposed = change > 0.0 ? 0.9 * dt * step_change_ / change : growth_ * step_;
     step_ = std::min(max_step_, std::clamp(proposed, 0.25 * step_, growth_ * step_));
   }
@@ -46,10 +56,12 @@ class ActivityStepControl {
     const double Tf = law.freezing_point();
     return std::max(law.latent_enthalpy(), law.enthalpy(Tf + 1.0) - law.enthalpy(Tf - 1.0));
   }
-  // Several materials: the smallest of their scales.
+  // Several materials: the smallest of their scales (of the materials the
+  // model was built with; one added later keeps its own, adapt()).
   static double enthalpy_scale(const ThermalModel& model) {
     double scale = enthalpy_scale(model.laws()[0]);
-    for (const auto& law : model.laws()) scale = std::min(scale, enthalpy_scale(law));
+    for (std::size_t m = 1; m < model.shared_scale_laws(); ++m)
+      scale = std::min(scale, enthalpy_scale(model.laws()[m]));
     return scale;
   }
 

@@ -31,6 +31,9 @@ class SuperTimeStepping final : public Integrator {
   SuperTimeStepping(double step_change, double first_step);
   // No step longer than max_step from now on.
   void limit_step(double max_step) { control_.limit(max_step); }
+  // The model's pairs changed (ground taken out, a lining placed): the
+  // stability limit is found again at the next step.
+  void forget_stability_limit() { dt_spectral_ = 0.0; }
   // The activity's step, at most max_stages stages long at the last
   // forward-Euler limit seen.
   double preferred_step(const ThermalModel&) const override;

@@ -112,6 +112,8 @@ double ThermalModel::pair_conductivity(double ki, double kj) const {
 }
 
 double ThermalModel::coefficient(std::size_t i, std::size_t j, std::size_t e) const {
+  if (j >= pairs_.n_free && !one_sided_.empty() && one_sided_[boundary_id_[j]])
+    return pairs_.weight[e] * 2.0 * k_[2 * i];
   return pairs_.weight[e] * (anisotropic_ ? anisotropic_factor(i, j, e) : pair_conductivity(k_[2 * i], k_[2 * j]));
 }
 
@@ -196,7 +198,43 @@ std::vector<double> ThermalModel::boundary_heat_rate() const {
 }
 
 double ThermalModel::stored_heat() const {
+  if (!removed_.empty())
+    return particles::sum_over_particles(pairs_.n_free,
+                                         [&](std::size_t i) { return removed_[i] ? 0.0 : volume_[i] * H_[i]; });
   return particles::sum_over_particles(pairs_.n_free, [&](std::size_t i) { return volume_[i] * H_[i]; });
+}
+
+void ThermalModel::remove_particles(const std::vector<std::uint32_t>& taken) {
+  if (built_weight_.empty()) built_weight_ = pairs_.weight;
+  removed_.resize(size(), 0);
+  for (const std::uint32_t i : taken) {
+    removed_[i] = 1;
+    for (std::size_t e = pairs_.row_start[i]; e < pairs_.row_start[i + 1]; ++e) pairs_.weight[e] = 0.0;
+    for (std::size_t s = incoming_start_[i]; s < incoming_start_[i + 1]; ++s) pairs_.weight[incoming_pair_[s]] = 0.0;
+  }
+  all_changed_ = true;
+}
+
+void ThermalModel::restore_particles(const std::vector<std::uint32_t>& back, std::uint8_t m, double temperature) {
+  if (material_.empty()) material_.assign(size(), 0);
+  for (const std::uint32_t i : back) removed_[i] = 0, material_[i] = m;
+  for (const std::uint32_t i : back) {
+    for (std::size_t e = pairs_.row_start[i]; e < pairs_.row_start[i + 1]; ++e)
+      if (const std::uint32_t j = pairs_.column[e]; j < pairs_.n_free && !removed_[j]) pairs_.weight[e] = built_weight_[e];
+    for (std::size_t s = incoming_start_[i]; s < incoming_start_[i + 1]; ++s)
+      if (!removed_[incoming_row_[s]]) pairs_.weight[incoming_pair_[s]] = built_weight_[incoming_pair_[s]];
+    set_state(i, laws_[m].enthalpy(temperature));
+    k_changed_[i] = 1;
+  }
+  all_changed_ = true;
+}
+
+std::uint8_t ThermalModel::add_material(const PhaseChangeLaw& law) {
+  if (material_.empty()) material_.assign(size(), 0);
+  if (!shared_scale_laws_) shared_scale_laws_ = laws_.size();
+  laws_.push_back(law);
+  anisotropic_ = anisotropic_ || law.anisotropic();
+  return static_cast<std::uint8_t>(laws_.size() - 1);
 }
 
 std::size_t ThermalModel::cut_pairs(const std::vector<std::pair<std::uint32_t, std::uint32_t>>& ends) {

@@ -106,6 +106,37 @@ class ThermalModel {
   // ways, so the flux stays antisymmetric and energy exact) carry nothing
   // from now on. Returns how many pair entries were cut.
   std::size_t cut_pairs(const std::vector<std::pair<std::uint32_t, std::uint32_t>>& ends);
+  // Ground taken out (an excavation): every pair with one of these free
+  // particles carries nothing from now on (both halves, so energy stays
+  // exact), and their heat leaves stored_heat(). Their state is kept, and
+  // may be set for display; nothing reads it.
+  void remove_particles(const std::vector<std::uint32_t>& taken);
+  // Particles taken out come back as material m at `temperature` (a lining
+  // placed where the ground was): their pairs with each other and with the
+  // ground still in place carry again, as first built.
+  void restore_particles(const std::vector<std::uint32_t>& back, std::uint8_t m, double temperature);
+  bool removed(std::size_t i) const { return !removed_.empty() && removed_[i]; }
+  // A further material; returns its index. The step control holds each
+  // such material's particles to their own law's enthalpy scale.
+  std::uint8_t add_material(const PhaseChangeLaw& law);
+  // The materials the model was built with (the first ones): they share
+  // the smallest of their enthalpy scales in the step control.
+  std::size_t shared_scale_laws() const { return shared_scale_laws_ ? shared_scale_laws_ : laws_.size(); }
+  // Pair e's weight G set (a face joined to its wall when it forms).
+  void set_pair_weight(std::size_t e, double w) {
+    pairs_.weight[e] = w;
+    all_changed_ = true;
+  }
+  // A film wall's group perimeter, m (the face moving in as a lining is placed).
+  void set_film_perimeter(std::size_t b, std::size_t g, double P) { boundaries_[b].film->perimeter[g] = P; }
+  // Pairs with boundary b's particles conduct with the free particle's own
+  // conductivity (2 k_i) rather than the pair mean: the wall's particle
+  // stands for a wall, not for a material behind it.
+  void set_one_sided(std::size_t b) {
+    one_sided_.resize(boundaries_.size(), 0);
+    one_sided_[b] = 1;
+    all_changed_ = true;
+  }
   // Sets the enthalpy of free particle i and the fields derived from it.
   void set_enthalpy(std::size_t i, double H) { set_state(i, H); }
   // Sets every free particle's enthalpy to new_enthalpy(i), in one pass
@@ -170,6 +201,10 @@ class ThermalModel {
   // Pairs whose neighbour is a fixed particle: (row, pair index).
   std::vector<std::pair<std::uint32_t, std::size_t>> boundary_pairs_;
   std::vector<std::vector<double>> film_wall_T_;  // per boundary, per group
+  std::vector<char> removed_;                     // per particle; empty: none removed
+  std::vector<double> built_weight_;              // the pairs' weights before any removal
+  std::vector<char> one_sided_;                   // per boundary; empty: none
+  std::size_t shared_scale_laws_ = 0;             // 0: every law (none added)
 };
 
 inline void ThermalModel::set_state(std::size_t i, double H) { state_view().set(law_of(i), i, H); }

@@ -1,0 +1,153 @@
+#include "freezing/excavation_run.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "freezing/excavation_face.hpp"
+#include "project/units.hpp"
+#include "thermal/super_time_stepping.hpp"
+
+namespace frostwall::freezing {
+
+namespace {
+// The lining's material: no latent heat, one conductivity and heat
+// capacity; its "freezing point" is the ground's, so that its liquid
+// fraction tells a cold lining from a warm one as the ground's does.
+thermal::PhaseChangeLaw lining_law(const project::Lining& l, double freezing_point) {
+  project::Soil s;
+  s.name = "lining";
+  s.density = l.density;
+  s.unfrozen.conductivity = {l.conductivity, l.conductivity};
+  s.frozen.conductivity = {l.conductivity, l.conductivity};
+  s.unfrozen.heat_capacity = l.heat_capacity;
+  s.frozen.heat_capacity = l.heat_capacity;
+  s.latent_heat = 0.0;
+  s.freezing_point = freezing_point;
+  return thermal::PhaseChangeLaw(s);
+}
+}  // namespace
+
+ExcavationRun::ExcavationRun(const project::Project& p, Model& m)
+    : p_(p),
+      e_(*p.excavation),
+      m_(m),
+      radius_(*std::get<project::ShaftSection>(p.geometry).shaft.excavation_radius),
+      share_(m.shaft->wedge.angle / (2.0 * std::numbers::pi)),
+      face_(face_boundary(*m.scene)),
+      node_(face_particle(*m.scene)),
+      not_ground_(m.model->free_count(), 0) {}
+
+double ExcavationRun::day() const { return e_.day(); }
+double ExcavationRun::face_radius() const { return radius_; }
+
+double ExcavationRun::next_event() const {
+  if (!dug_) return day() * project::seconds_per_day;
+  if (e_.lining && !lined_) return day() * project::seconds_per_day + e_.lining->placed_after;
+  return std::numeric_limits<double>::infinity();
+}
+
+void ExcavationRun::apply(double t) {
+  if (!dug_) dig(t);
+  if (dug_ && e_.lining && !lined_ && t >= next_event() * (1.0 - 1e-12)) line(t);
+}
+
+void ExcavationRun::dig(double t) {
+  auto& model = *m_.model;
+  const auto& P = m_.particles();
+  for (std::uint32_t i = 0; i < model.free_count(); ++i)
+    if (P.position[i].norm() < radius_) {
+      taken_.push_back(i);
+      not_ground_[i] = 1;
+      excavated_heat_ += model.volume()[i] * model.enthalpy()[i];
+    }
+  model.remove_particles(taken_);
+  std::vector<char> ground(model.free_count(), 0);
+  for (std::size_t i = 0; i < ground.size(); ++i) ground[i] = !not_ground_[i];
+  join_face(radius_, ground);
+  model.set_boundary_temperature(face_, e_.air_temperature);
+  dug_ = true;
+  after_step(t);
+}
+
+void ExcavationRun::line(double t) {
+  auto& model = *m_.model;
+  const auto& l = *e_.lining;
+  const double inner = radius_ - l.thickness;
+  const auto& P = m_.particles();
+  for (const std::uint32_t i : taken_)
+    if (P.position[i].norm() >= inner) lining_.push_back(i);
+  const std::uint8_t material = model.add_material(lining_law(l, p_.soil.freezing_point));
+  const double placed = l.placement_temperature.value_or(e_.air_temperature.at(t));
+  model.restore_particles(lining_, material, placed);
+  std::vector<char> side(model.free_count(), 0);
+  for (const std::uint32_t i : lining_) {
+    side[i] = 1;
+    lining_heat_ += model.volume()[i] * model.enthalpy()[i];
+  }
+  join_face(inner, side);
+  lined_ = true;
+  lined_at_ = t;
+}
+
+void ExcavationRun::join_face(double a, const std::vector<char>& side) {
+  auto& model = *m_.model;
+  const auto& pairs = model.pairs();
+  for (std::size_t i = 0; i < model.free_count(); ++i)
+    for (std::size_t e = pairs.row_start[i]; e < pairs.row_start[i + 1]; ++e)
+      if (pairs.column[e] == node_ && pairs.weight[e] != 0.0) model.set_pair_weight(e, 0.0);
+  const auto weights = face_weights(pairs, m_.particles(), node_, a, share_, side);
+  for (const auto& w : weights) model.set_pair_weight(w.pair, w.weight);
+  face_particles_ = weights.size();
+  model.set_film_perimeter(static_cast<std::size_t>(face_), 0, 2.0 * std::numbers::pi * a * share_);
+  stability_changed();
+}
+
+void ExcavationRun::stability_changed() {
+  if (auto* rkl2 = thermal::find_integrator<thermal::SuperTimeStepping>(m_.integrator.get()))
+    rkl2->forget_stability_limit();
+}
+
+void ExcavationRun::after_step(double t) {
+  if (!dug_) return;
+  auto& model = *m_.model;
+  if (lined_) {
+    const double released = e_.lining->hydration.at(t - lined_at_);
+    if (const double dq = released - released_; dq > 0.0) {
+      const double per_volume = e_.lining->density * dq;
+      for (const std::uint32_t i : lining_) {
+        model.set_enthalpy(i, model.enthalpy()[i] + per_volume);
+        hydration_heat_ += model.volume()[i] * per_volume;
+      }
+      released_ = released;
+    }
+  }
+  // The ground taken out (not the lining) at the face's temperature.
+  const double shown = model.law().enthalpy(model.temperature()[node_]);
+  for (const std::uint32_t i : taken_)
+    if (model.removed(i)) model.set_enthalpy(i, shown);
+}
+
+double ExcavationRun::step_limit(double t) const {
+  if (!lined_ || !e_.lining) return std::numeric_limits<double>::infinity();
+  const auto& q = e_.lining->hydration;
+  if (t - lined_at_ >= q.end_time()) return std::numeric_limits<double>::infinity();
+  const double release = q.released.empty() ? q.release_time : q.end_time() / std::max<std::size_t>(q.released.size(), 4);
+  return std::max(0.2 * release, 60.0);
+}
+
+nlohmann::json ExcavationRun::facts() const {
+  nlohmann::json f = {{"depth", e_.depth},
+                      {"day", day()},
+                      {"face_radius", radius_},
+                      {"particles_taken_out", taken_.size() - lining_.size()},
+                      {"face_particles", face_particles_}};
+  if (e_.lining) {
+    f["lining_day"] = day() + e_.lining->placed_after / project::seconds_per_day;
+    f["lining_inner_radius"] = radius_ - e_.lining->thickness;
+    f["lining_particles"] = lining_.size();
+  }
+  return f;
+}
+
+}  // namespace frostwall::freezing
