@@ -321,6 +321,11 @@ nlohmann::ordered_json HeatRun::summary(const thermal::TimeLoopResult& loop) con
     if (excavation_) {
       auto entry = excavation_->facts();
       entry.update(results_->excavation_entry(excavation_->day()));
+      // One section: the shaft's sections are this one, and it is critical.
+      nlohmann::json section = entry;
+      section.erase("series");
+      entry["sections"] = nlohmann::json::array({section});
+      entry["critical_depth"] = entry["depth"];
       summary["excavation"] = entry;
     }
     const auto& w = built_.shaft->wedge;

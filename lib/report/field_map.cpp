@@ -237,6 +237,12 @@ std::string map_html(const RgbaImage& image, const MapWindow& window, const std:
         R"(<circle cx="{}" cy="{}" r="{}" fill="none" stroke="#333" stroke-width="1" stroke-dasharray="5 3"/>)",
         num(cx), num(cy), num(overlay.excavation_radius * scale));
   }
+  if (overlay.lining_radius > 0.0) {
+    const auto [cx, cy] = px(Vec2::Zero());
+    o += fmt::format(
+        R"(<circle cx="{}" cy="{}" r="{}" fill="none" stroke="#333" stroke-width="1" stroke-dasharray="1.5 2.5"/>)",
+        num(cx), num(cy), num(overlay.lining_radius * scale));
+  }
   // Frozen front: a white halo under a black line reads on blue and on red.
   std::string d;
   for (const auto& c : fronts) {

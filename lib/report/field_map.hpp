@@ -42,6 +42,7 @@ struct MapOverlay {
   std::vector<Circle> pipes;
   std::vector<Arrow> arrows;       // the groundwater's flow (white, thin)
   double excavation_radius = 0.0;  // 0 = none
+  double lining_radius = 0.0;      // the lining's inner face; 0 = none
   double domain_radius = 0.0;      // pixels beyond are left blank; 0 = no limit
 };
 

@@ -269,6 +269,7 @@ json report_view(const fs::path& dir) {
   detail::add_maps(run, view);
   detail::add_groundwater(run, view);
   detail::add_plant(run, view);
+  detail::add_excavation(run, view);
   detail::add_as_built(run, view);
   detail::add_calibration(run, view);
   detail::add_charts(run, view);

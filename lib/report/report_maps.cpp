@@ -169,6 +169,14 @@ void add_maps(const RunRecord& run, json& view) {
   std::vector<MapOverlay> overlays(snapshots.size(), overlay);
   for (std::size_t k = 0; k < snapshots.size(); ++k)
     overlays[k].arrows = flow_arrows(fields[k], symmetry, window, overlay.domain_radius);
+  // Sinking: the lining's inner face once it is placed.
+  json e = run.summary.value("excavation", json::object());
+  for (const auto& section : e.value("sections", json::array()))  // a layered shaft: the governing layer's
+    if (section.value("name", std::string()) == run.summary.value(keys::governing_layer, std::string())) e = section;
+  if (e.contains("lining_day"))
+    for (std::size_t k = 0; k < snapshots.size(); ++k)
+      if (snapshots[k].time >= e["lining_day"].get<double>() - 1e-9)
+        overlays[k].lining_radius = e["lining_inner_radius"].get<double>();
   std::vector<std::string> html(snapshots.size());
   particles::for_each_item(snapshots.size(), [&](std::size_t k) {
     html[k] = map.html(fields[k].temperature, colours, fronts.curves[k], fronts.whole[k] != 0, overlays[k],

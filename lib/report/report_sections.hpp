@@ -93,6 +93,8 @@ void add_run_facts(const RunRecord& run, nlohmann::json& view);  // run table an
 void add_groundwater(const RunRecord& run, nlohmann::json& view);
 void add_plant(const RunRecord& run,
                nlohmann::json& view);  // plant: sizing, load, supply and return, brine along the pipe
+// Sinking the shaft: the critical section in the first lines, the sections' table and charts.
+void add_excavation(const RunRecord& run, nlohmann::json& view);
 void add_as_built(
     const RunRecord& run,
     nlohmann::json& view);  // sections at depth: charts, plan, table  // seepage: verdict, gaps, sides, gap flow

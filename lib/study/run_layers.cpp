@@ -1,4 +1,5 @@
 #include "study/run_layers.hpp"
+#include "study/excavation_overview.hpp"
 
 #include <fmt/core.h>
 #include <limits>
@@ -43,6 +44,8 @@ std::vector<json> layer_documents(const project::Project& p, const std::string& 
   for (const auto& layer : p.layers) {
     json doc = base;
     doc.merge_patch(json::parse(layer.patch));
+    const std::size_t k = docs.size();
+    sink_at(doc, layer.depth, p.excavation && !p.excavation->days.empty() ? std::optional(p.excavation->days[k]) : std::nullopt);
     doc["output"]["directory"] = (out / layer_folder(layer.name)).string();
     project::parse_project(doc.dump(), "layers: " + layer.name);  // every layer loads before any runs
     docs.push_back(std::move(doc));
@@ -106,6 +109,11 @@ StudyRun run_layers(const project::Project& p, const std::string& project_text, 
     summary[keys::layers].push_back(std::move(entry));
   }
   if (p.plant) summary[keys::plant] = coupled.plant;
+  if (p.excavation) {
+    std::vector<std::string> names;
+    for (const auto& layer : p.layers) names.push_back(layer.name);
+    summary["excavation"] = excavation_overview(summaries, names);
+  }
   write_joined_run(p, project_text, summary);
   return run;
 }

@@ -1,4 +1,5 @@
 #include "study/run_sections.hpp"
+#include "study/excavation_overview.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -63,6 +64,11 @@ json section_document(const project::Project& p, const json& base, const AsBuilt
   for (const char* key : {"survey", "sections", "layers", "compare_intact", "failed_pipes"}) doc.erase(key);
   if (const int layer = layer_at(p, a, depth); layer >= 0) doc.merge_patch(json::parse(p.layers[layer].patch));
   if (doc.contains("design") && doc["design"].contains("pressure")) doc["design"]["depth"] = depth;
+  std::optional<double> day;  // the day given for this listed depth
+  if (p.excavation && !p.excavation->days.empty())
+    for (std::size_t k = 0; k < p.sections.depths.size(); ++k)
+      if (p.sections.depths[k] == depth) day = p.excavation->days[k];
+  sink_at(doc, depth, day);
   json pipes = json::array(), failed = json::array();
   const auto here = geometry::pipes_at(a.traces, a.design, depth);
   for (std::size_t k = 0; k < here.size(); ++k) {
@@ -270,6 +276,13 @@ StudyRun run_sections(const project::Project& p, const std::string& project_text
   summary[keys::sections] = entries;
   summary[keys::critical_depth] = entries[c]["depth"];
   if (p.plant) summary[keys::plant] = coupled.plant;
+  if (p.excavation) {
+    std::vector<json> summaries;
+    std::vector<std::string> names;
+    for (std::size_t k = 0; k < entries.size(); ++k)
+      summaries.push_back(run.variants[of_entry[k]].summary), names.push_back(section_name(entries[k]["depth"]));
+    summary["excavation"] = excavation_overview(summaries, names);
+  }
   json design = json::array();
   for (const auto& q : a.design) design.push_back({q.number, q.x, q.y, q.failed});
   summary[keys::as_built] = {{"survey", p.survey->file},
