@@ -47,8 +47,8 @@ project::Project ring(const std::filesystem::path& out, const json& excavation) 
                 {"design", {{"strength", {{"a", 2.0}, {"b", 1.5}}}, {"pressure", {{"value_MPa", 1.0}}}}},
                 {"output", {{"vtk", false}, {"report", false}}}};
   if (!excavation.is_null()) {
-    patch["excavation"] = {{"start_day", 30}, {"rate_m_per_day", 1.0}, {"air_temperature", 10.0},
-                           {"heat_transfer", 10.0}};
+    patch["excavation"] = {
+        {"start_day", 30}, {"rate_m_per_day", 1.0}, {"air_temperature", 10.0}, {"heat_transfer", 10.0}};
     patch["excavation"].merge_patch(excavation);
   }
   return test::shipped_project("single_ring_sand.json", patch, out);
@@ -58,16 +58,17 @@ project::Project ring(const std::filesystem::path& out, const json& excavation) 
 // the face at 0.75 m dug on day 0 behind a film h from air at 20 C.
 project::Project dense_ring(const std::filesystem::path& out, double h, double spacing, double end_day,
                             const json& lining = nullptr) {
-  json j = {{"name", "dense ring"},
-            {"layout", {{"pattern", "single"}, {"outer_ring", {{"radius", 1.5}, {"count", 30}}}}},
-            {"shaft", {{"excavation_radius", 0.75}}},
-            {"pipe", {{"diameter", 0.1}, {"temperature", -20.0}}},
-            {"soil", "sand"},
-            {"domain", {{"outer_radius", 3.0}, {"initial_temperature", 20.0}, {"far_field", {{"temperature", 20.0}}}}},
-            {"time", {{"end", end_day}, {"unit", "d"}, {"snapshots", {end_day / 2, end_day}}}},
-            {"numerics", {{"spacing", spacing}, {"error_estimate", false}}},
-            {"excavation", {{"start_day", 0}, {"rate_m_per_day", 1.0}, {"air_temperature", 20.0}, {"heat_transfer", h}}},
-            {"output", {{"directory", out.string()}, {"vtk", false}, {"report", false}}}};
+  json j = {
+      {"name", "dense ring"},
+      {"layout", {{"pattern", "single"}, {"outer_ring", {{"radius", 1.5}, {"count", 30}}}}},
+      {"shaft", {{"excavation_radius", 0.75}}},
+      {"pipe", {{"diameter", 0.1}, {"temperature", -20.0}}},
+      {"soil", "sand"},
+      {"domain", {{"outer_radius", 3.0}, {"initial_temperature", 20.0}, {"far_field", {{"temperature", 20.0}}}}},
+      {"time", {{"end", end_day}, {"unit", "d"}, {"snapshots", {end_day / 2, end_day}}}},
+      {"numerics", {{"spacing", spacing}, {"error_estimate", false}}},
+      {"excavation", {{"start_day", 0}, {"rate_m_per_day", 1.0}, {"air_temperature", 20.0}, {"heat_transfer", h}}},
+      {"output", {{"directory", out.string()}, {"vtk", false}, {"report", false}}}};
   if (!lining.is_null()) j["excavation"]["lining"] = lining;
   return project::parse_project(j.dump());
 }
@@ -82,13 +83,18 @@ json run_json(const project::Project& p) {
 TEST_CASE("Excavation: the heat taken out, through the face and of the lining closes the model's balance",
           "[excavation]") {
   test::TempDir dir("excavation_energy"), before("excavation_before");
-  const json lining = {{"thickness", 0.4},      {"conductivity", 1.8},      {"heat_capacity", 900},
-                       {"density", 2400},       {"placed_after_days", 3},   {"placement_temperature", 12.0},
+  const json lining = {{"thickness", 0.4},
+                       {"conductivity", 1.8},
+                       {"heat_capacity", 900},
+                       {"density", 2400},
+                       {"placed_after_days", 3},
+                       {"placement_temperature", 12.0},
                        {"hydration_heat", {{"total", 60000}, {"release_days", 1.0}}}};
   const json s = run_json(ring(dir.path, {{"lining", lining}}));
   const json& heat = s["heat_balance"]["from_boundaries"];
   double total = 0.0, largest = 0.0;
-  for (const auto& [name, q] : heat.items()) total += q.get<double>(), largest = std::max(largest, std::abs(q.get<double>()));
+  for (const auto& [name, q] : heat.items())
+    total += q.get<double>(), largest = std::max(largest, std::abs(q.get<double>()));
   const double stored = s["heat_balance"]["stored_change"];
   INFO("stored " << stored << " from every source " << total);
   CHECK(std::abs(total - stored) <= 1e-6 * std::abs(stored));
@@ -133,8 +139,7 @@ TEST_CASE("Excavation: a very large film holds the face at the air", "[excavatio
   CHECK(worst < 0.1);
 }
 
-TEST_CASE("Excavation: the steady inner frozen boundary inside a dense ring is the radial solution's",
-          "[excavation]") {
+TEST_CASE("Excavation: the steady inner frozen boundary inside a dense ring is the radial solution's", "[excavation]") {
   test::TempDir dir("excavation_steady");
   const json s = run_json(dense_ring(dir.path, 1e9, 0.02, 100));
   const auto sand = *project::builtin_soil("sand");
@@ -178,7 +183,7 @@ TEST_CASE("Excavation: an insulated lining warms by its heat of hydration over i
   CHECK(rise == Approx(adiabatic).epsilon(0.01));
 }
 
-TEST_CASE("Excavation: warm air thins the wall from the inside; dug after the run's end nothing changes",
+TEST_CASE("Excavation: warm air thins the wall from the inside, and dug after the run's end nothing changes",
           "[excavation]") {
   test::TempDir dug("excavation_dug"), kept("excavation_kept"), late("excavation_late");
   const json warm = {{"air_temperature", 20.0}, {"heat_transfer", 20.0}};

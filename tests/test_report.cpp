@@ -168,8 +168,9 @@ TEST_CASE("The report of a shaft run fills every placeholder, loads nothing and 
   // calibration's: tests/test_calibrate.cpp; the plant's: tests/test_plant_project.cpp.)
   std::string thermal(report::templates::report_html);
   // (A plain geometry's cards: the PD plate's and porous plate's tests.)
-  for (const char* section : {"has_frost", "has_cfd_dem", "has_groundwater", "has_wall_check", "has_brine", "has_cards",
-                              "has_as_built", "has_intact_pair", "has_calibration", "has_plant", "plant_card", "has_excavation", "excavation_card"})
+  for (const char* section :
+       {"has_frost", "has_cfd_dem", "has_groundwater", "has_wall_check", "has_brine", "has_cards", "has_as_built",
+        "has_intact_pair", "has_calibration", "has_plant", "plant_card", "has_excavation", "excavation_card"})
     thermal = split_section(thermal, section).second;
   for (const auto& name : report::template_names(thermal)) {
     INFO(name);

@@ -98,7 +98,8 @@ std::vector<FaceWeight> face_weights(const particles::PairWeights& pairs, const 
     weights.push_back({to_node, w});
     drawn += P.volume[i] * w * std::log(r / a);
   }
-  if (!(drawn > 0.0)) throw std::runtime_error("the excavation's face found no particle to join: is the cloud too coarse there?");
+  if (!(drawn > 0.0))
+    throw std::runtime_error("the excavation's face found no particle to join: is the cloud too coarse there?");
   const double scale = std::numbers::pi * share / drawn;
   for (auto& w : weights) w.weight *= scale;
   return weights;

@@ -132,7 +132,8 @@ double ExcavationRun::step_limit(double t) const {
   if (!lined_ || !e_.lining) return std::numeric_limits<double>::infinity();
   const auto& q = e_.lining->hydration;
   if (t - lined_at_ >= q.end_time()) return std::numeric_limits<double>::infinity();
-  const double release = q.released.empty() ? q.release_time : q.end_time() / std::max<std::size_t>(q.released.size(), 4);
+  const double release = q.released.empty() ? q.release_time
+                                            : q.end_time() / std::max<std::size_t>(q.released.size(), 4);
   return std::max(0.2 * release, 60.0);
 }
 

@@ -35,8 +35,8 @@ class ExcavationRun {
   double step_limit(double t) const;
 
   bool dug() const { return dug_; }
-  double day() const;                // the section's excavation day
-  double face_radius() const;        // m: the ground's face (the excavation radius)
+  double day() const;          // the section's excavation day
+  double face_radius() const;  // m: the ground's face (the excavation radius)
   // Per particle: no longer ground (taken out, or the lining since).
   const std::vector<char>& not_ground() const { return not_ground_; }
   // Heat the excavation moved, J per metre: the ground taken out (leaving),

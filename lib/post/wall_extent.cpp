@@ -202,7 +202,8 @@ std::vector<double> WallGauge::read_outward(const std::vector<double>& field, do
       return ray[i] > level;
     };
     for (double ring : ring_radii_) {
-      const std::size_t m = std::max(first_, std::size_t(std::lower_bound(radii_.begin(), radii_.end(), ring) - radii_.begin()));
+      const std::size_t m =
+          std::max(first_, std::size_t(std::lower_bound(radii_.begin(), radii_.end(), ring) - radii_.begin()));
       std::size_t first = std::min(m, n - 1), last = first;
       for (std::size_t i = m; i-- > first_;)
         if (first = i; above_at(i)) break;

@@ -31,8 +31,8 @@ struct Lining {
   double heat_capacity = 0.0;  // J/(kg K)
   double density = 0.0;        // kg/m3
   HydrationHeat hydration;
-  double placed_after = 0.0;                        // s after the section is excavated
-  std::optional<double> placement_temperature;      // degC; none: the air's on the day
+  double placed_after = 0.0;                    // s after the section is excavated
+  std::optional<double> placement_temperature;  // degC; none: the air's on the day
 };
 
 struct Excavation {

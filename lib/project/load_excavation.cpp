@@ -45,15 +45,14 @@ Lining read_lining(const Node& n, double radius) {
     return l;
   l.thickness = n["thickness"].required().positive().value_or(0.0);
   if (radius > 0.0 && l.thickness >= radius)
-    n["thickness"].problem(fmt::format("must be below the excavation radius {} (shaft.excavation_radius), got {}",
-                                       radius, l.thickness));
+    n["thickness"].problem(
+        fmt::format("must be below the excavation radius {} (shaft.excavation_radius), got {}", radius, l.thickness));
   l.conductivity = n["conductivity"].required().positive().value_or(1.0);
   l.heat_capacity = n["heat_capacity"].required().positive().value_or(1.0);
   l.density = n["density"].required().positive().value_or(1.0);
   l.hydration = read_hydration(n["hydration_heat"]);
-  l.placed_after = n["placed_after_days"].present()
-                       ? n["placed_after_days"].non_negative().value_or(0.0) * seconds_per_day
-                       : 0.0;
+  l.placed_after =
+      n["placed_after_days"].present() ? n["placed_after_days"].non_negative().value_or(0.0) * seconds_per_day : 0.0;
   if (n["placement_temperature"].present()) l.placement_temperature = n["placement_temperature"].number();
   return l;
 }
@@ -81,8 +80,7 @@ void read_sinking(const Node& n, const Project& p, Excavation& e) {
   const auto size = days.array();
   if (!size) return;
   const auto sections = section_count(p);
-  if (!sections)
-    days.problem(R"(needs the survey's sections listed ("sections": {"depths": [...]}), one day each)");
+  if (!sections) days.problem(R"(needs the survey's sections listed ("sections": {"depths": [...]}), one day each)");
   else if (*size != *sections)
     days.problem(fmt::format("must give one day per section ({}), got {}", *sections, *size));
   for (std::size_t k = 0; k < *size; ++k) e.days.push_back(days[k].non_negative().value_or(0.0));
@@ -103,8 +101,7 @@ std::optional<Excavation> read_excavation(const Node& root, const Project& proje
   Excavation e;
   read_sinking(n, project, e);
   const double radius = section->shaft.excavation_radius.value_or(0.0);
-  if (!section->shaft.excavation_radius)
-    n.problem(R"(needs "shaft": {"excavation_radius"} (the ground taken out))");
+  if (!section->shaft.excavation_radius) n.problem(R"(needs "shaft": {"excavation_radius"} (the ground taken out))");
   if (const Node depth = n["depth"]; depth.present()) {
     if (!project.layers.empty() || project.survey)
       depth.problem(R"(each layer or section sinks at its own depth: not used with "layers" or "survey")");

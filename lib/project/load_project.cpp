@@ -288,10 +288,10 @@ Project read_project(const Node& root, const std::string& base_directory) {
     detail::read_cfd_dem(root, project);
     return project;
   }
-  root.object({"name",           "description", "physics",     "layout",   "shaft",  "geometry",   "pipe",
-               "soil",           "domain",      "time",        "numerics", "design", "monitoring", "output",
-               "mechanics",      "pore_fluid",  "groundwater", "layers",   "survey", "sections",   "failed_pipes",
-               "compare_intact", "calibrate",   "plant",       "brine",      "excavation"});
+  root.object({"name",           "description", "physics",     "layout",   "shaft",     "geometry",   "pipe",
+               "soil",           "domain",      "time",        "numerics", "design",    "monitoring", "output",
+               "mechanics",      "pore_fluid",  "groundwater", "layers",   "survey",    "sections",   "failed_pipes",
+               "compare_intact", "calibrate",   "plant",       "brine",    "excavation"});
   project.name = root["name"].required().string().value_or("");
   project.description = root["description"].string(true).value_or("");
 

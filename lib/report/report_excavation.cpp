@@ -41,6 +41,7 @@ std::string metres_or_dash(const json& v) { return v.is_number() ? number(v, 2) 
 void add_excavation(const RunRecord& run, json& view) {
   view["has_excavation"] = false;
   view["excavation_card"] = false;
+  view["excavation_line"] = false;
   if (!run.summary.contains("excavation")) return;
   const json& e = run.summary["excavation"];
   const json sections = sections_of(run.summary);
@@ -49,21 +50,20 @@ void add_excavation(const RunRecord& run, json& view) {
   const bool one = sections.size() == 1;
   const json& critical = one ? sections[0] : e;
   const json depth = one ? sections[0]["depth"] : e["critical_depth"];
-  const json day = one ? (sections[0]["margin_min"].is_number() ? sections[0]["margin_min_day"]
-                                                                : sections[0]["thinnest_after_day"])
-                       : e["critical_day"];
+  const json day =
+      one ? (sections[0]["margin_min"].is_number() ? sections[0]["margin_min_day"] : sections[0]["thinnest_after_day"])
+          : e["critical_day"];
   if (depth.is_number() && day.is_number()) {
     const std::string margin = critical["margin_min"].is_number()
                                    ? fmt::format("smallest margin {} m", number(critical["margin_min"], 2))
                                    : std::string("no requirement to measure a margin against");
-    view["excavation_line"] =
-        fmt::format("Sinking: the wall is weakest at {} m depth{} on day {}: {}.", number(depth, 1),
-                    one ? std::string() : " (" + e.value("critical_section", std::string()) + ")", number(day, 1),
-                    margin);
+    view["excavation_line"] = fmt::format(
+        "Sinking: the wall is weakest at {} m depth{} on day {}: {}.", number(depth, 1),
+        one ? std::string() : " (" + e.value("critical_section", std::string()) + ")", number(day, 1), margin);
     view["excavation_card"] = true;
     view["excavation_value"] = critical["margin_min"].is_number() ? number(critical["margin_min"], 2) + " m" : "–";
-    view["excavation_note"] = fmt::format("smallest margin after excavation: {} m depth, day {}", number(depth, 1),
-                                          number(day, 1));
+    view["excavation_note"] =
+        fmt::format("smallest margin after excavation: {} m depth, day {}", number(depth, 1), number(day, 1));
   }
   json rows = json::array();
   std::vector<Series> thickness, margin;

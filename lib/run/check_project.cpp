@@ -101,6 +101,19 @@ std::vector<std::string> check_heat(const project::Project& p, Engine engine) {
       lines.push_back(fmt::format("pipe {}: {} at ({:.3f}, {:.3f}) m, {:.2f} deg{}", q.number, q.label, q.x, q.y,
                                   std::atan2(q.y, q.x) * 180.0 / std::numbers::pi, q.failed ? ", failed (off)" : ""));
   }
+  if (p.excavation) {
+    const auto& e = *p.excavation;
+    const auto radius = std::get<project::ShaftSection>(p.geometry).shaft.excavation_radius.value_or(0.0);
+    std::size_t taken = 0;
+    for (std::size_t i = 0; i < P.n_free; ++i) taken += P.position[i].norm() < radius;
+    std::string line = fmt::format("excavation: dug on day {:g} (depth {:g} m), {} particles taken out inside {:g} m; "
+                                   "air film {:g} W/(m2 K)",
+                                   e.day(), e.depth, taken, radius, e.heat_transfer);
+    if (e.lining)
+      line += fmt::format("; a {:g} m lining {:g} d later, {:g} kJ/kg of hydration heat", e.lining->thickness,
+                          e.lining->placed_after / 86400.0, e.lining->hydration.final() / 1e3);
+    lines.push_back(line);
+  }
   lines.push_back(fmt::format("particles: {} free, {} on boundaries", P.n_free, P.size() - P.n_free));
   lines.push_back(fmt::format("memory: at most about {:.0f} MB",
                               static_cast<double>(P.n_free) * freezing::bytes_per_particle / 1e6));

@@ -16,7 +16,7 @@ json excavation_overview(const std::vector<json>& summaries, const std::vector<s
   // Ranked by the smallest margin; sections without one by the thinnest wall.
   auto key = [&](std::size_t k) {
     const json& e = sections[k];
-    return e["margin_min"].is_number() ? std::make_pair(0, e["margin_min"].get<double>())
+    return e["margin_min"].is_number()       ? std::make_pair(0, e["margin_min"].get<double>())
            : e["thinnest_after"].is_number() ? std::make_pair(1, e["thinnest_after"].get<double>())
                                              : std::make_pair(2, 0.0);
   };

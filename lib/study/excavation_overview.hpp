@@ -19,7 +19,6 @@ void sink_at(nlohmann::json& doc, double depth, std::optional<double> day);
 // name), and the critical section: the smallest margin
 // (or, without a requirement, the thinnest wall after its day), its depth,
 // day and margin. summaries[k]: section k's summary, names[k] its name.
-nlohmann::json excavation_overview(const std::vector<nlohmann::json>& summaries,
-                                   const std::vector<std::string>& names);
+nlohmann::json excavation_overview(const std::vector<nlohmann::json>& summaries, const std::vector<std::string>& names);
 
 }  // namespace frostwall::study

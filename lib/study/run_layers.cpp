@@ -45,7 +45,8 @@ std::vector<json> layer_documents(const project::Project& p, const std::string& 
     json doc = base;
     doc.merge_patch(json::parse(layer.patch));
     const std::size_t k = docs.size();
-    sink_at(doc, layer.depth, p.excavation && !p.excavation->days.empty() ? std::optional(p.excavation->days[k]) : std::nullopt);
+    sink_at(doc, layer.depth,
+            p.excavation && !p.excavation->days.empty() ? std::optional(p.excavation->days[k]) : std::nullopt);
     doc["output"]["directory"] = (out / layer_folder(layer.name)).string();
     project::parse_project(doc.dump(), "layers: " + layer.name);  // every layer loads before any runs
     docs.push_back(std::move(doc));

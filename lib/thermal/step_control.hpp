@@ -38,9 +38,8 @@ class ActivityStepControl {
       std::vector<double> scales(model.laws().size(), scale);
       for (std::size_t m = model.shared_scale_laws(); m < scales.size(); ++m)
         scales[m] = enthalpy_scale(model.laws()[m]);
-      change = particles::max_over_particles(model.free_count(), [&](std::size_t i) {
-        return std::abs(H[i] - before_[i]) / scales[model.material(i)];
-      });
+      change = particles::max_over_particles(
+          model.free_count(), [&](std::size_t i) { return std::abs(H[i] - before_[i]) / scales[model.material(i)]; });
     }
     const double proposed = change > 0.0 ? 0.9 * dt * step_change_ / change : growth_ * step_;
     step_ = std::min(max_step_, std::clamp(proposed, 0.25 * step_, growth_ * step_));

@@ -220,7 +220,8 @@ void ThermalModel::restore_particles(const std::vector<std::uint32_t>& back, std
   for (const std::uint32_t i : back) removed_[i] = 0, material_[i] = m;
   for (const std::uint32_t i : back) {
     for (std::size_t e = pairs_.row_start[i]; e < pairs_.row_start[i + 1]; ++e)
-      if (const std::uint32_t j = pairs_.column[e]; j < pairs_.n_free && !removed_[j]) pairs_.weight[e] = built_weight_[e];
+      if (const std::uint32_t j = pairs_.column[e]; j < pairs_.n_free && !removed_[j])
+        pairs_.weight[e] = built_weight_[e];
     for (std::size_t s = incoming_start_[i]; s < incoming_start_[i + 1]; ++s)
       if (!removed_[incoming_row_[s]]) pairs_.weight[incoming_pair_[s]] = built_weight_[incoming_pair_[s]];
     set_state(i, laws_[m].enthalpy(temperature));

@@ -1,0 +1,67 @@
+// The shipped sinking shaft (projects/shaft_sinking.json: the shaft with
+// its plant, sand at 12 m over clay at 32 m, sunk from day 35 at 1 m a day,
+// lined three days behind), scaled, run as `frostwall run` runs it.
+// References: each layer is dug on day 35 + depth / rate (by hand) and
+// lined three days later; every layer's heat balance closes (the pipes,
+// the far field, the face, the ground taken out, the lining and its
+// hydration against the stored change, 1e-6); the shaft's critical section
+// is the layer with the smallest margin among the layers' own, on its day;
+// the report names it in its first lines and fills its sinking section.
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "cli.hpp"
+#include "report/report.hpp"
+#include "report_view_check.hpp"
+#include "temp_dir.hpp"
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+TEST_CASE("The shipped sinking shaft: each layer dug on its day, the critical section the smallest margin",
+          "[excavation][shipped]") {
+  frostwall::test::TempDir dir("shaft_sinking");
+  std::ifstream in(fs::path(FROSTWALL_SOURCE_DIR) / "projects" / "shaft_sinking.json");
+  json j = json::parse(in);
+  j.merge_patch({{"numerics", {{"spacing", 0.05}}},
+                 {"time", {{"end", 80}, {"unit", "d"}, {"snapshots", {40, 60, 80}}}},
+                 {"output", {{"directory", "out"}, {"vtk", true}, {"full_ring", false}, {"report", true}}}});
+  std::ofstream(dir.path / "project.json") << j.dump(2);
+  const auto run = frostwall::test::frostwall_cli(dir.path, "run project.json");
+  REQUIRE(run.exit_status == 0);
+  std::ifstream summary_in(dir.path / "out" / "summary.json");
+  const json s = json::parse(summary_in);
+
+  const json& e = s["excavation"];
+  double smallest = 1e300;
+  std::string critical;
+  for (const auto& layer : s["layers"]) {
+    const json& x = layer["excavation"];
+    const double depth = layer["layer"]["depth"];
+    CHECK(x["day"].get<double>() == Approx(35.0 + depth / 1.0));
+    CHECK(x["lining_day"].get<double>() == Approx(38.0 + depth / 1.0));
+    REQUIRE(x["margin_min"].is_number());
+    CHECK(x["margin_min_day"].get<double>() >= x["day"].get<double>());
+    if (x["margin_min"].get<double>() < smallest)
+      smallest = x["margin_min"], critical = layer["layer"]["name"].get<std::string>();
+    double total = 0.0;
+    for (const auto& [name, q] : layer["heat_balance"]["from_boundaries"].items()) total += q.get<double>();
+    const double stored = layer["heat_balance"]["stored_change"];
+    CHECK(std::abs(total - stored) <= 1e-6 * std::abs(stored));
+    CHECK(layer["heat_balance"]["from_boundaries"]["hydration"].get<double>() > 0.0);
+  }
+  CHECK(e["critical_section"] == critical);
+  CHECK(e["margin_min"].get<double>() == smallest);
+  CHECK(e["sections"].size() == 2);
+
+  std::ifstream html_in(dir.path / "out" / "report.html");
+  const std::string html((std::istreambuf_iterator<char>(html_in)), {});
+  CHECK(html.find("Sinking: the wall is weakest at") != std::string::npos);
+  CHECK(html.find("<h2>Sinking the shaft</h2>") != std::string::npos);
+  const json view = frostwall::report::report_view(dir.path / "out");
+  frostwall::test::check_section_filled(view, "has_excavation");
+  frostwall::test::check_section_filled(view, "excavation_card");
+}
