@@ -12,8 +12,8 @@ namespace frostwall::freezing {
 
 namespace {
 // The lining's material: no latent heat, one conductivity and heat
-// capacity; its "freezing point" is the ground's, so that its liquid
-// fraction tells a cold lining from a warm one as the ground's does.
+// capacity; its enthalpy counted from the ground's freezing point (the
+// ground's own datum), so the heat balance's entries read alike.
 thermal::PhaseChangeLaw lining_law(const project::Lining& l, double freezing_point) {
   project::Soil s;
   s.name = "lining";
@@ -65,6 +65,20 @@ void ExcavationRun::dig(double t) {
   std::vector<char> ground(model.free_count(), 0);
   for (std::size_t i = 0; i < ground.size(); ++i) ground[i] = !not_ground_[i];
   join_face(radius_, ground);
+  // Each particle taken out reads as the face particle nearest its
+  // direction when the wall is measured.
+  std::vector<std::uint32_t> face;
+  const auto& pairs = model.pairs();
+  for (std::uint32_t i = 0; i < model.free_count(); ++i)
+    for (std::size_t e = pairs.row_start[i]; e < pairs.row_start[i + 1]; ++e)
+      if (pairs.column[e] == node_ && pairs.weight[e] > 0.0) face.push_back(i);
+  for (const std::uint32_t i : taken_) {
+    const particles::Vec<2> on_face = P.position[i].normalized() * radius_;
+    std::uint32_t best = face.front();
+    for (const std::uint32_t j : face)
+      if ((P.position[j] - on_face).squaredNorm() < (P.position[best] - on_face).squaredNorm()) best = j;
+    nearest_face_.emplace_back(i, best);
+  }
   model.set_boundary_temperature(face_, e_.air_temperature);
   dug_ = true;
   after_step(t);
@@ -128,6 +142,15 @@ void ExcavationRun::after_step(double t) {
     if (model.removed(i)) model.set_enthalpy(i, shown);
 }
 
+void ExcavationRun::as_ground(std::vector<double>& liquid_fraction) const {
+  for (const auto& [i, face] : nearest_face_) liquid_fraction[i] = liquid_fraction[face];
+}
+
+void ExcavationRun::as_shown(std::vector<double>& liquid_fraction) const {
+  for (std::size_t i = 0; i < not_ground_.size(); ++i)
+    if (not_ground_[i]) liquid_fraction[i] = 1.0;
+}
+
 double ExcavationRun::step_limit(double t) const {
   if (!lined_ || !e_.lining) return std::numeric_limits<double>::infinity();
   const auto& q = e_.lining->hydration;
@@ -135,6 +158,21 @@ double ExcavationRun::step_limit(double t) const {
   const double release = q.released.empty() ? q.release_time
                                             : q.end_time() / std::max<std::size_t>(q.released.size(), 4);
   return std::max(0.2 * release, 60.0);
+}
+
+void ExcavationRun::add_heat(nlohmann::json& from_boundaries) const {
+  from_boundaries.update(
+      {{"excavated", -excavated_heat_}, {"lining_placed", lining_heat_}, {"hydration", hydration_heat_}});
+}
+
+nlohmann::json ExcavationRun::summary(const nlohmann::json& wall_after) const {
+  nlohmann::json entry = facts();
+  entry.update(wall_after);
+  nlohmann::json section = entry;
+  section.erase("series");
+  entry["sections"] = nlohmann::json::array({section});
+  entry["critical_depth"] = entry["depth"];
+  return entry;
 }
 
 nlohmann::json ExcavationRun::facts() const {

@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <limits>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -30,22 +31,26 @@ class ExcavationRun {
   // After each step: the lining's heat of hydration to t, and the ground
   // taken out shown at the face's temperature (it no longer counts).
   void after_step(double t);
+  // The liquid fraction the wall is measured on: each particle that is no
+  // longer ground (taken out, or the lining) reads as the face particle
+  // nearest its direction, so a frozen face reaches the excavation radius
+  // and a thawed one does not.
+  void as_ground(std::vector<double>& liquid_fraction) const;
+  // The liquid fraction the front curves are drawn on: what is no longer
+  // ground is never frozen, so the front runs along the face.
+  void as_shown(std::vector<double>& liquid_fraction) const;
   // The longest next step: a fifth of the hydration's release time while
   // the lining sets (none otherwise).
   double step_limit(double t) const;
 
-  bool dug() const { return dug_; }
   double day() const;          // the section's excavation day
   double face_radius() const;  // m: the ground's face (the excavation radius)
-  // Per particle: no longer ground (taken out, or the lining since).
-  const std::vector<char>& not_ground() const { return not_ground_; }
-  // Heat the excavation moved, J per metre: the ground taken out (leaving),
-  // the lining as placed and its hydration (entering).
-  double excavated_heat() const { return excavated_heat_; }
-  double lining_heat() const { return lining_heat_; }
-  double hydration_heat() const { return hydration_heat_; }
-  // The summary's facts of the section's excavation (depth, days, particles).
-  nlohmann::json facts() const;
+  // The summary's `excavation`: the section's facts (depth, days, particles)
+  // with the wall after the day (ShaftResults::excavation_entry), and the
+  // shaft's sections: this one, critical.
+  nlohmann::json summary(const nlohmann::json& wall_after) const;
+  // The heat balance's entries: excavated, lining_placed, hydration.
+  void add_heat(nlohmann::json& from_boundaries) const;
 
  private:
   void dig(double t);
@@ -54,6 +59,7 @@ class ExcavationRun {
   // face's pairs cut; the face's film then over that circle.
   void join_face(double a, const std::vector<char>& side);
   void stability_changed();
+  nlohmann::json facts() const;
 
   const project::Project& p_;
   const project::Excavation& e_;
@@ -65,8 +71,10 @@ class ExcavationRun {
   bool dug_ = false, lined_ = false;
   double lined_at_ = 0.0, released_ = 0.0;
   std::vector<std::uint32_t> taken_, lining_;
-  std::vector<char> not_ground_;
+  std::vector<char> not_ground_;                                       // per particle: taken out, or the lining since
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> nearest_face_;  // (taken out, face particle)
   std::size_t face_particles_ = 0;
+  // J per metre: the ground taken out, the lining as placed, its hydration.
   double excavated_heat_ = 0.0, lining_heat_ = 0.0, hydration_heat_ = 0.0;
 };
 

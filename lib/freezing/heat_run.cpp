@@ -178,7 +178,7 @@ thermal::TimeLoopObservers HeatRun::observers() {
 
 void HeatRun::at_event(double t) {
   excavation_->apply(t);
-  if (results_) results_->set_face(excavation_->face_radius());
+  if (results_) results_->set_face(*excavation_);
 }
 
 void HeatRun::after_step(const thermal::ThermalModel& m, double t) {
@@ -318,16 +318,7 @@ nlohmann::ordered_json HeatRun::summary(const thermal::TimeLoopResult& loop) con
       if (parts.contains(key)) summary[key] = parts[key];
     summary[keys::thinnest_angle_deg] = parts.value(keys::thinnest_angle_deg, nlohmann::json());
     if (brine_) summary[brine_->summary_key()] = brine_->finish(out_);
-    if (excavation_) {
-      auto entry = excavation_->facts();
-      entry.update(results_->excavation_entry(excavation_->day()));
-      // One section: the shaft's sections are this one, and it is critical.
-      nlohmann::json section = entry;
-      section.erase("series");
-      entry["sections"] = nlohmann::json::array({section});
-      entry["critical_depth"] = entry["depth"];
-      summary["excavation"] = entry;
-    }
+    if (excavation_) summary["excavation"] = excavation_->summary(results_->excavation_entry(excavation_->day()));
     const auto& w = built_.shaft->wedge;
     summary[keys::wedge] = {{"mirror_lines", w.mirror_count},
                             {"start_deg", w.start_angle * 180 / M_PI},
@@ -346,10 +337,7 @@ nlohmann::ordered_json HeatRun::summary(const thermal::TimeLoopResult& loop) con
   const auto& P = built_.particles();
   std::vector<std::string> warnings = p_.warnings;
   warnings.insert(warnings.end(), built_.warnings.begin(), built_.warnings.end());
-  if (excavation_)  // what the excavation moved in or out, beside the boundaries
-    boundary_heat.update({{"excavated", -excavation_->excavated_heat()},
-                          {"lining_placed", excavation_->lining_heat()},
-                          {"hydration", excavation_->hydration_heat()}});
+  if (excavation_) excavation_->add_heat(boundary_heat);  // what it moved in or out, beside the boundaries
   summary.update(nlohmann::ordered_json{
       {keys::heat_balance,
        {{"stored_change", model.stored_heat() - heat_before_}, {"from_boundaries", boundary_heat}, {"unit", "J/m"}}},

@@ -8,9 +8,10 @@
 
 namespace frostwall::freezing {
 
-void ShaftResults::set_face(double r) {
-  fan_gauge_->set_inner_limit(r);
-  planes_gauge_->set_inner_limit(r);
+void ShaftResults::set_face(const ExcavationRun& excavation) {
+  fan_gauge_->set_inner_limit(excavation.face_radius());
+  planes_gauge_->set_inner_limit(excavation.face_radius());
+  excavation_ = &excavation;
 }
 
 nlohmann::json ShaftResults::excavation_entry(double day) const {

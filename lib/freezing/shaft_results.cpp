@@ -96,8 +96,11 @@ ShaftResults::~ShaftResults() = default;
 
 ShaftResults::Reading ShaftResults::read(double t, const std::vector<double>& liquid_fraction,
                                          const std::vector<double>& temperature) const {
-  const auto fan = fan_gauge_->measure(liquid_fraction, temperature);
-  const auto planes = planes_gauge_->measure(liquid_fraction, temperature);
+  std::vector<double> ground;
+  if (excavation_) excavation_->as_ground(ground = liquid_fraction);
+  const auto& f = excavation_ ? ground : liquid_fraction;
+  const auto fan = fan_gauge_->measure(f, temperature);
+  const auto planes = planes_gauge_->measure(f, temperature);
   Reading r{t / project::seconds_per_day,
             planes.extents.OA(),
             planes.extents.OB(),
@@ -158,9 +161,11 @@ void ShaftResults::snapshot(double t, const thermal::ThermalModel& model, const 
     for (std::size_t k = 0; k < points.size(); ++k) limit[k] = 3.0 * P.spacing_of(source[k]);
     return std::make_unique<post::IsolineMesh>(points, limit);
   };
+  std::vector<double> shown = model.liquid_fraction();
+  if (excavation_) excavation_->as_shown(shown);
   auto values = [&](const std::vector<std::uint32_t>& source) {
     std::vector<double> v(source.size());
-    for (std::size_t k = 0; k < source.size(); ++k) v[k] = model.liquid_fraction()[source[k]];
+    for (std::size_t k = 0; k < source.size(); ++k) v[k] = shown[source[k]];
     return v;
   };
   const auto& wedge = model_.shaft->wedge;

@@ -18,6 +18,7 @@
 #include "post/wall_extent.hpp"
 #include "project/project.hpp"
 #include "freezing/design_check.hpp"
+#include "freezing/excavation_run.hpp"
 #include "freezing/model.hpp"
 #include "geometry/interface_planes.hpp"
 
@@ -38,9 +39,11 @@ class ShaftResults {
               const std::vector<double>& sensors);
   void snapshot(double t, const thermal::ThermalModel& model, const std::filesystem::path& out,
                 const std::string& stem);  // at each snapshot day
-  // From now on the ground begins at radius r (the excavation's face): the
-  // wall is measured from there outward.
-  void set_face(double r);
+  // From now on the ground begins at the excavation's face: the wall is
+  // measured from there outward, on the liquid fraction as the excavation
+  // reads it (ExcavationRun::as_ground), and the front curves drawn on it
+  // as shown (ExcavationRun::as_shown).
+  void set_face(const ExcavationRun& excavation);
   // The section's wall after its excavation day (readings of the regular
   // series from that day on): thickness, mean temperature, required
   // thickness and margin = thickness - required, with the thinnest wall and
@@ -78,6 +81,7 @@ class ShaftResults {
 
   const project::Project& project_;
   const Model& model_;
+  const ExcavationRun* excavation_ = nullptr;  // once dug
   InterfacePlanes planes_;
   post::FieldSampler sampler_;
   std::unique_ptr<post::WallGauge> fan_gauge_, planes_gauge_;

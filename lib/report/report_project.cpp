@@ -63,6 +63,18 @@ void add_layout(const RunRecord& run, const project::ShaftSection& section, json
     rows.push_back(row("failed pipes", fmt::format("{} (off; ground like the rest)", fmt::join(L.failed_pipes, ", "))));
   if (section.shaft.excavation_radius)
     rows.push_back(row("excavation radius", number(*section.shaft.excavation_radius, 2) + " m"));
+  if (const auto& e = run.project->excavation) {
+    const std::string when = e->rate
+                                 ? fmt::format("from day {} at {} m/d", number(e->start_day, 1), number(*e->rate, 2))
+                                 : std::string("on the days given");
+    std::string sinking = fmt::format("{}; air {} °C at first, film {} W/(m² K)", when,
+                                      number(e->air_temperature.points.front().second, 1), number(e->heat_transfer, 1));
+    if (e->lining)
+      sinking += fmt::format("; a {} m lining {} d behind, {} kJ/kg of hydration heat", number(e->lining->thickness, 2),
+                             number(e->lining->placed_after / 86400.0, 1),
+                             number(e->lining->hydration.final() / 1e3, 0));
+    rows.push_back(row("sinking", sinking));
+  }
   const WedgeSymmetry w = wedge_of(run.summary);
   const bool symmetric = run.project->numerics.use_symmetry && w.mirror_lines > 0;
   rows.push_back(row("simulated", symmetric ? fmt::format("a wedge of {}° between two of {} mirror lines, from {}°",
