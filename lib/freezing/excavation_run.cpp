@@ -179,7 +179,7 @@ nlohmann::json ExcavationRun::facts() const {
   nlohmann::json f = {{"depth", e_.depth},
                       {"day", day()},
                       {"face_radius", radius_},
-                      {"particles_taken_out", taken_.size() - lining_.size()},
+                      {"particles_taken_out", taken_.size()},
                       {"face_particles", face_particles_}};
   if (e_.lining) {
     f["lining_day"] = day() + e_.lining->placed_after / project::seconds_per_day;
