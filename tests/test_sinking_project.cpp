@@ -6,7 +6,9 @@
 // the far field, the face, the ground taken out, the lining and its
 // hydration against the stored change, 1e-6); the shaft's critical section
 // is the layer with the smallest margin among the layers' own, on its day;
-// the report names it in its first lines and fills its sinking section.
+// each layer's excavation.csv has a row per entry of its series; the
+// report names the critical section in its first lines and fills its
+// sinking section.
 #include <catch2/catch.hpp>
 
 #include <filesystem>
@@ -52,6 +54,11 @@ TEST_CASE("The shipped sinking shaft: each layer dug on its day, the critical se
     const double stored = layer["heat_balance"]["stored_change"];
     CHECK(std::abs(total - stored) <= 1e-6 * std::abs(stored));
     CHECK(layer["heat_balance"]["from_boundaries"]["hydration"].get<double>() > 0.0);
+    // excavation.csv: a header and one row per entry of the series.
+    std::ifstream csv(dir.path / "out" / layer["layer"]["directory"].get<std::string>() / "excavation.csv");
+    std::size_t rows = 0;
+    for (std::string line; std::getline(csv, line);) ++rows;
+    CHECK(rows == x["series"].size() + 1);
   }
   CHECK(e["critical_section"] == critical);
   CHECK(e["margin_min"].get<double>() == smallest);

@@ -4,7 +4,10 @@
 #include <cmath>
 #include <numbers>
 
+#include <fmt/format.h>
+
 #include "freezing/excavation_face.hpp"
+#include "io/atomic_file.hpp"
 #include "project/units.hpp"
 #include "thermal/super_time_stepping.hpp"
 
@@ -165,9 +168,16 @@ void ExcavationRun::add_heat(nlohmann::json& from_boundaries) const {
       {{"excavated", -excavated_heat_}, {"lining_placed", lining_heat_}, {"hydration", hydration_heat_}});
 }
 
-nlohmann::json ExcavationRun::summary(const nlohmann::json& wall_after) const {
+nlohmann::json ExcavationRun::summary(const nlohmann::json& wall_after, const std::filesystem::path& out) const {
   nlohmann::json entry = facts();
   entry.update(wall_after);
+  // The series as a table; an empty cell where a value is null.
+  std::string csv = "day,days_after,thickness_m,mean_temperature_C,required_thickness_m,margin_m\n";
+  auto cell = [](const nlohmann::json& v) { return v.is_number() ? fmt::format("{:.6g}", v.get<double>()) : ""; };
+  for (const auto& r : entry["series"])
+    csv += fmt::format("{},{},{},{},{},{}\n", cell(r["day"]), cell(r["days_after"]), cell(r["thickness"]),
+                       cell(r["mean_temperature"]), cell(r["required_thickness"]), cell(r["margin"]));
+  io::write_text_file(out / "excavation.csv", csv);
   nlohmann::json section = entry;
   section.erase("series");
   entry["sections"] = nlohmann::json::array({section});

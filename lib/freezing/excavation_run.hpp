@@ -9,6 +9,7 @@
 #pragma once
 
 #include <cstdint>
+#include <filesystem>
 #include <limits>
 #include <optional>
 #include <utility>
@@ -47,8 +48,9 @@ class ExcavationRun {
   double face_radius() const;  // m: the ground's face (the excavation radius)
   // The summary's `excavation`: the section's facts (depth, days, particles)
   // with the wall after the day (ShaftResults::excavation_entry), and the
-  // shaft's sections: this one, critical.
-  nlohmann::json summary(const nlohmann::json& wall_after) const;
+  // shaft's sections: this one, critical. Writes its series as
+  // <out>/excavation.csv.
+  nlohmann::json summary(const nlohmann::json& wall_after, const std::filesystem::path& out) const;
   // The heat balance's entries: excavated, lining_placed, hydration.
   void add_heat(nlohmann::json& from_boundaries) const;
 

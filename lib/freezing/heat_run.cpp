@@ -318,7 +318,8 @@ nlohmann::ordered_json HeatRun::summary(const thermal::TimeLoopResult& loop) con
       if (parts.contains(key)) summary[key] = parts[key];
     summary[keys::thinnest_angle_deg] = parts.value(keys::thinnest_angle_deg, nlohmann::json());
     if (brine_) summary[brine_->summary_key()] = brine_->finish(out_);
-    if (excavation_) summary["excavation"] = excavation_->summary(results_->excavation_entry(excavation_->day()));
+    if (excavation_)
+      summary[keys::excavation] = excavation_->summary(results_->excavation_entry(excavation_->day()), out_);
     const auto& w = built_.shaft->wedge;
     summary[keys::wedge] = {{"mirror_lines", w.mirror_count},
                             {"start_deg", w.start_angle * 180 / M_PI},

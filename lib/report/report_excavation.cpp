@@ -16,11 +16,11 @@ namespace {
 // The shaft's sections with their series: a layered shaft's from its
 // layers, an as-built shaft's from its overview, one section's itself.
 json sections_of(const json& summary) {
-  const json& e = summary["excavation"];
+  const json& e = summary[keys::excavation];
   if (summary.contains(keys::layers)) {
     json sections = json::array();
     for (const auto& layer : summary[keys::layers]) {
-      json s = layer.value("excavation", json::object());
+      json s = layer.value(keys::excavation, json::object());
       s["name"] = layer["layer"]["name"];
       sections.push_back(s);
     }
@@ -42,8 +42,8 @@ void add_excavation(const RunRecord& run, json& view) {
   view["has_excavation"] = false;
   view["excavation_card"] = false;
   view["excavation_line"] = false;
-  if (!run.summary.contains("excavation")) return;
-  const json& e = run.summary["excavation"];
+  if (!run.summary.contains(keys::excavation)) return;
+  const json& e = run.summary[keys::excavation];
   const json sections = sections_of(run.summary);
   view["has_excavation"] = true;
   // The critical section: the overview's, or the one section.

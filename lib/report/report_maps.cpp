@@ -170,7 +170,7 @@ void add_maps(const RunRecord& run, json& view) {
   for (std::size_t k = 0; k < snapshots.size(); ++k)
     overlays[k].arrows = flow_arrows(fields[k], symmetry, window, overlay.domain_radius);
   // Sinking: the lining's inner face once it is placed.
-  json e = run.summary.value("excavation", json::object());
+  json e = run.summary.value(keys::excavation, json::object());
   for (const auto& section : e.value("sections", json::array()))  // a layered shaft: the governing layer's
     if (section.value("name", std::string()) == run.summary.value(keys::governing_layer, std::string())) e = section;
   if (e.contains("lining_day"))

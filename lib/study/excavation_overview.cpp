@@ -1,5 +1,7 @@
 #include "study/excavation_overview.hpp"
 
+#include "summary/summary.hpp"
+
 namespace frostwall::study {
 
 using nlohmann::json;
@@ -21,7 +23,7 @@ json excavation_overview(const std::vector<json>& summaries, const std::vector<s
                                              : std::make_pair(2, 0.0);
   };
   for (std::size_t k = 0; k < summaries.size(); ++k) {
-    json entry = summaries[k].value("excavation", json::object());
+    json entry = summaries[k].value(summary::keys::excavation, json::object());
     entry.erase("sections");
     entry.erase("critical_depth");
     entry["name"] = names[k];

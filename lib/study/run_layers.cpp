@@ -113,7 +113,7 @@ StudyRun run_layers(const project::Project& p, const std::string& project_text, 
   if (p.excavation) {
     std::vector<std::string> names;
     for (const auto& layer : p.layers) names.push_back(layer.name);
-    summary["excavation"] = excavation_overview(summaries, names);
+    summary[keys::excavation] = excavation_overview(summaries, names);
   }
   write_joined_run(p, project_text, summary);
   return run;

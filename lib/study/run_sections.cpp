@@ -281,7 +281,7 @@ StudyRun run_sections(const project::Project& p, const std::string& project_text
     std::vector<std::string> names;
     for (std::size_t k = 0; k < entries.size(); ++k)
       summaries.push_back(run.variants[of_entry[k]].summary), names.push_back(section_name(entries[k]["depth"]));
-    summary["excavation"] = excavation_overview(summaries, names);
+    summary[keys::excavation] = excavation_overview(summaries, names);
   }
   json design = json::array();
   for (const auto& q : a.design) design.push_back({q.number, q.x, q.y, q.failed});

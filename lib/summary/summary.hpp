@@ -44,7 +44,7 @@ namespace frostwall::summary {
   X(groundwater) X(gaps) X(closure_day) X(verdict) X(error_estimate) X(status) X(coarse_closure_days)                  \
   X(sections) X(critical_depth) X(as_built) X(thinnest_wall) X(design_margin) X(intact) X(scenario_directory)          \
   X(layers) X(governing_layer) X(calibration) X(forecast) X(parameters) X(physics) X(soil) X(pores) X(damage)      \
-  X(balance) X(thaw_time) X(plant)
+  X(balance) X(thaw_time) X(plant) X(excavation)
 // clang-format on
 
 namespace keys {
