@@ -178,7 +178,9 @@ thermal::TimeLoopObservers HeatRun::observers() {
 
 void HeatRun::at_event(double t) {
   excavation_->apply(t);
-  if (results_) results_->set_face(*excavation_);
+  if (!results_) return;
+  results_->set_face(*excavation_);
+  results_->read_event(t, built_.model->liquid_fraction(), built_.model->temperature());
 }
 
 void HeatRun::after_step(const thermal::ThermalModel& m, double t) {

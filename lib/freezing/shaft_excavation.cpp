@@ -1,5 +1,6 @@
 // The shaft results' readings after the section's excavation
 // (ShaftResults::set_face, ShaftResults::excavation_entry).
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -19,8 +20,12 @@ nlohmann::json ShaftResults::excavation_entry(double day) const {
   const auto& design = project_.design;
   json series = json::array();
   std::optional<double> thinnest, thinnest_day, margin_min, margin_min_day;
-  for (const auto& r : series_) {
-    if (r.day < day - 1e-9) continue;
+  std::vector<Reading> after;
+  for (const auto* readings : {&series_, &event_readings_})
+    for (const auto& r : *readings)
+      if (r.day >= day - 1e-9) after.push_back(r);
+  std::stable_sort(after.begin(), after.end(), [](const Reading& a, const Reading& b) { return a.day < b.day; });
+  for (const auto& r : after) {
     const double thickness = design.isotherm ? r.isotherm_thickness.value_or(0.0) : r.min_thickness;
     const auto mean = design.isotherm ? r.isotherm_mean_temperature : r.mean_temperature_thinnest;
     std::optional<double> required = design.required_thickness;

@@ -44,10 +44,16 @@ class ShaftResults {
   // reads it (ExcavationRun::as_ground), and the front curves drawn on it
   // as shown (ExcavationRun::as_shown).
   void set_face(const ExcavationRun& excavation);
+  // A reading of the wall at t outside the regular series (the moment a
+  // section is dug or lined), for excavation_entry.
+  void read_event(double t, const std::vector<double>& liquid_fraction, const std::vector<double>& temperature) {
+    event_readings_.push_back(read(t, liquid_fraction, temperature));
+  }
   // The section's wall after its excavation day (readings of the regular
   // series from that day on): thickness, mean temperature, required
   // thickness and margin = thickness - required, with the thinnest wall and
-  // the smallest margin and their days (excavation.sections[k] of the summary).
+  // the smallest margin and their days (excavation.sections[k] of the
+  // summary); the readings at the excavation's events among them.
   nlohmann::json excavation_entry(double day) const;
   // Summary entries (wall, design, monitoring, interface) and the CSV files.
   nlohmann::json finish(const std::filesystem::path& out) const;
@@ -90,7 +96,7 @@ class ShaftResults {
   // Profile points inside a pipe disc (OA passes through its pipe): they
   // read the pipe's temperature, not the layers held beyond its wall.
   std::vector<char> in_pipe_OA_, in_pipe_OB_;
-  std::vector<Reading> series_, snapshots_;
+  std::vector<Reading> series_, snapshots_, event_readings_;
   std::vector<std::vector<double>> profiles_OA_, profiles_OB_;  // per snapshot
   std::vector<std::vector<std::pair<double, double>>> sensor_readings_;
   nlohmann::json interface_ = nlohmann::json::array();
