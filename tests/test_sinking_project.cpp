@@ -8,10 +8,14 @@
 // is the layer with the smallest margin among the layers' own, on its day;
 // each layer's excavation.csv has a row per entry of its series; the
 // report names the critical section in its first lines and fills its
-// sinking section.
+// sinking section. An as-built shaft's listed depths are each dug on the
+// day given for them, and its critical section is theirs with the
+// smallest margin.
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <filesystem>
+#include <fmt/core.h>
 #include <fstream>
 #include <nlohmann/json.hpp>
 
@@ -71,4 +75,45 @@ TEST_CASE("The shipped sinking shaft: each layer dug on its day, the critical se
   const json view = frostwall::report::report_view(dir.path / "out");
   frostwall::test::check_section_filled(view, "has_excavation");
   frostwall::test::check_section_filled(view, "excavation_card");
+}
+
+TEST_CASE("An as-built shaft sinks each listed depth on the day given for it", "[excavation][as_built]") {
+  // Eight pipes on 1.2 m, straight down: the survey's two sections, dug on
+  // their own days, each checked against a 0.2 m wall.
+  frostwall::test::TempDir dir("sinking_as_built");
+  std::string csv = "pipe,depth,x,y\n";
+  for (int k = 0; k < 8; ++k)
+    for (const int depth : {0, 30})
+      csv += fmt::format("{},{},{:.9f},{:.9f}\n", k + 1, depth, 1.2 * std::cos(k * M_PI / 4),
+                         1.2 * std::sin(k * M_PI / 4));
+  std::ofstream(dir.path / "survey.csv") << csv;
+  const json p = {
+      {"name", "sunk as built"},
+      {"layout", {{"pattern", "single"}, {"outer_ring", {{"radius", 1.2}, {"count", 8}}}}},
+      {"shaft", {{"excavation_radius", 0.7}}},
+      {"pipe", {{"diameter", 0.127}, {"temperature", -25.0}}},
+      {"soil", "sand"},
+      {"domain", {{"outer_radius", 3.0}, {"initial_temperature", 8.0}, {"far_field", {{"temperature", 8.0}}}}},
+      {"time", {{"end", 8}, {"unit", "d"}, {"snapshots", {8}}}},
+      {"numerics", {{"spacing", 0.04}}},
+      {"design", {{"required_thickness", 0.2}}},
+      {"survey", {{"file", "survey.csv"}}},
+      {"sections", {{"depths", {10, 20}}}},
+      {"excavation", {{"days", {5, 6.5}}, {"air_temperature", 15.0}, {"heat_transfer", 15.0}}},
+      {"output", {{"directory", "out"}, {"vtk", false}, {"report", true}}}};
+  std::ofstream(dir.path / "project.json") << p.dump(2);
+  REQUIRE(frostwall::test::frostwall_cli(dir.path, "run project.json").exit_status == 0);
+  std::ifstream summary_in(dir.path / "out" / "summary.json");
+  const json s = json::parse(summary_in);
+  const json& sections = s["excavation"]["sections"];
+  REQUIRE(sections.size() == 2);
+  double smallest = 1e300, critical_depth = 0.0;
+  for (const auto& section : sections) {
+    const double depth = section["depth"];
+    CHECK(section["day"].get<double>() == (depth == 10.0 ? 5.0 : 6.5));
+    CHECK(section["series"].front()["days_after"].get<double>() == 0.0);
+    if (section["margin_min"].get<double>() < smallest) smallest = section["margin_min"], critical_depth = depth;
+  }
+  CHECK(s["excavation"]["critical_depth"].get<double>() == critical_depth);
+  CHECK(s["excavation"]["margin_min"].get<double>() == smallest);
 }
