@@ -95,7 +95,7 @@ std::vector<FaceWeight> face_weights(const particles::PairWeights& pairs, const 
     }
     const double w = std::max(0.0, row / L);
     if (w <= 0.0) continue;
-    weights.push_back({to_node, w});
+    weights.push_back({static_cast<std::uint32_t>(i), to_node, w});
     drawn += P.volume[i] * w * std::log(r / a);
   }
   if (!(drawn > 0.0))

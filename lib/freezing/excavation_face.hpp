@@ -44,6 +44,7 @@ void add_face_pairs(particles::PairWeights& pairs, const particles::ParticleSet<
 // side, within `reach` local spacings of radius a), per pair entry to the
 // node: (pair index, w). `share`: the part of the circle in the section.
 struct FaceWeight {
+  std::uint32_t particle = 0;
   std::size_t pair = 0;
   double weight = 0.0;
 };

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 
 #include <fmt/format.h>
 
@@ -37,9 +38,8 @@ ExcavationRun::ExcavationRun(const project::Project& p, Model& m)
       m_(m),
       radius_(*std::get<project::ShaftSection>(p.geometry).shaft.excavation_radius),
       share_(m.shaft->wedge.angle / (2.0 * std::numbers::pi)),
-      face_(face_boundary(*m.scene)),
-      node_(face_particle(*m.scene)),
-      not_ground_(m.model->free_count(), 0) {}
+      face_boundary_(face_boundary(*m.scene)),
+      node_(face_particle(*m.scene)) {}
 
 double ExcavationRun::day() const { return e_.day(); }
 double ExcavationRun::face_radius() const { return radius_; }
@@ -58,31 +58,26 @@ void ExcavationRun::apply(double t) {
 void ExcavationRun::dig(double t) {
   auto& model = *m_.model;
   const auto& P = m_.particles();
+  std::vector<char> ground(model.free_count(), 1);
   for (std::uint32_t i = 0; i < model.free_count(); ++i)
     if (P.position[i].norm() < radius_) {
       taken_.push_back(i);
-      not_ground_[i] = 1;
+      ground[i] = 0;
       excavated_heat_ += model.volume()[i] * model.enthalpy()[i];
     }
   model.remove_particles(taken_);
-  std::vector<char> ground(model.free_count(), 0);
-  for (std::size_t i = 0; i < ground.size(); ++i) ground[i] = !not_ground_[i];
-  join_face(radius_, ground);
+  const auto face = join_face(radius_, ground);
   // Each particle taken out reads as the face particle nearest its
   // direction when the wall is measured.
-  std::vector<std::uint32_t> face;
-  const auto& pairs = model.pairs();
-  for (std::uint32_t i = 0; i < model.free_count(); ++i)
-    for (std::size_t e = pairs.row_start[i]; e < pairs.row_start[i + 1]; ++e)
-      if (pairs.column[e] == node_ && pairs.weight[e] > 0.0) face.push_back(i);
   for (const std::uint32_t i : taken_) {
     const particles::Vec<2> on_face = P.position[i].normalized() * radius_;
-    std::uint32_t best = face.front();
-    for (const std::uint32_t j : face)
-      if ((P.position[j] - on_face).squaredNorm() < (P.position[best] - on_face).squaredNorm()) best = j;
+    std::uint32_t best = face.front().particle;
+    for (const auto& j : face)
+      if ((P.position[j.particle] - on_face).squaredNorm() < (P.position[best] - on_face).squaredNorm())
+        best = j.particle;
     nearest_face_.emplace_back(i, best);
   }
-  model.set_boundary_temperature(face_, e_.air_temperature);
+  model.set_boundary_temperature(face_boundary_, e_.air_temperature);
   dug_ = true;
   after_step(t);
 }
@@ -104,20 +99,17 @@ void ExcavationRun::line(double t) {
   }
   join_face(inner, side);
   lined_ = true;
-  lined_at_ = t;
+  lined_at_ = now_ = t;
 }
 
-void ExcavationRun::join_face(double a, const std::vector<char>& side) {
+std::vector<FaceWeight> ExcavationRun::join_face(double a, const std::vector<char>& side) {
   auto& model = *m_.model;
-  const auto& pairs = model.pairs();
-  for (std::size_t i = 0; i < model.free_count(); ++i)
-    for (std::size_t e = pairs.row_start[i]; e < pairs.row_start[i + 1]; ++e)
-      if (pairs.column[e] == node_ && pairs.weight[e] != 0.0) model.set_pair_weight(e, 0.0);
-  const auto weights = face_weights(pairs, m_.particles(), node_, a, share_, side);
-  for (const auto& w : weights) model.set_pair_weight(w.pair, w.weight);
-  face_particles_ = weights.size();
-  model.set_film_perimeter(static_cast<std::size_t>(face_), 0, 2.0 * std::numbers::pi * a * share_);
+  for (const auto& w : face_) model.set_pair_weight(w.pair, 0.0);  // the face as it stood
+  face_ = face_weights(model.pairs(), m_.particles(), node_, a, share_, side);
+  for (const auto& w : face_) model.set_pair_weight(w.pair, w.weight);
+  model.set_film_perimeter(static_cast<std::size_t>(face_boundary_), 0, 2.0 * std::numbers::pi * a * share_);
   stability_changed();
+  return face_;
 }
 
 void ExcavationRun::stability_changed() {
@@ -126,6 +118,7 @@ void ExcavationRun::stability_changed() {
 }
 
 void ExcavationRun::after_step(double t) {
+  now_ = t;
   if (!dug_) return;
   auto& model = *m_.model;
   if (lined_) {
@@ -150,16 +143,16 @@ void ExcavationRun::as_ground(std::vector<double>& liquid_fraction) const {
 }
 
 void ExcavationRun::as_shown(std::vector<double>& liquid_fraction) const {
-  for (std::size_t i = 0; i < not_ground_.size(); ++i)
-    if (not_ground_[i]) liquid_fraction[i] = 1.0;
+  for (const std::uint32_t i : taken_) liquid_fraction[i] = 1.0;
 }
 
-double ExcavationRun::step_limit(double t) const {
-  if (!lined_ || !e_.lining) return std::numeric_limits<double>::infinity();
+double ExcavationRun::step_limit() const {
+  if (!lined_) return std::numeric_limits<double>::infinity();
   const auto& q = e_.lining->hydration;
-  if (t - lined_at_ >= q.end_time()) return std::numeric_limits<double>::infinity();
-  const double release = q.released.empty() ? q.release_time
-                                            : q.end_time() / std::max<std::size_t>(q.released.size(), 4);
+  if (now_ - lined_at_ >= q.end_time()) return std::numeric_limits<double>::infinity();
+  const double release = q.released.points.empty()
+                             ? q.release_time
+                             : q.end_time() / std::max<std::size_t>(q.released.points.size() - 1, 4);
   return std::max(0.2 * release, 60.0);
 }
 
@@ -180,9 +173,39 @@ nlohmann::json ExcavationRun::summary(const nlohmann::json& wall_after, const st
   io::write_text_file(out / "excavation.csv", csv);
   nlohmann::json section = entry;
   section.erase("series");
-  entry["sections"] = nlohmann::json::array({section});
-  entry["critical_depth"] = entry["depth"];
+  entry.update(excavation_overview({section}, {p_.name}));  // the shaft's one section, critical
   return entry;
+}
+
+nlohmann::json excavation_overview(const std::vector<nlohmann::json>& entries, const std::vector<std::string>& names) {
+  using nlohmann::json;
+  json sections = json::array();
+  std::optional<std::size_t> critical;
+  // Ranked by the smallest margin; sections without one by the thinnest wall.
+  auto key = [&](std::size_t k) {
+    const json& e = sections[k];
+    return e["margin_min"].is_number()       ? std::make_pair(0, e["margin_min"].get<double>())
+           : e["thinnest_after"].is_number() ? std::make_pair(1, e["thinnest_after"].get<double>())
+                                             : std::make_pair(2, 0.0);
+  };
+  for (std::size_t k = 0; k < entries.size(); ++k) {
+    json entry = entries[k];
+    for (const char* field : {"sections", "critical_depth", "critical_section", "critical_day"}) entry.erase(field);
+    entry["name"] = names[k];
+    sections.push_back(entry);
+    if (key(k).first < 2 && (!critical || key(k) < key(*critical))) critical = k;
+  }
+  json overview = {{"sections", sections}};
+  if (!critical) {
+    overview["critical_depth"] = nullptr;
+    return overview;
+  }
+  const json& c = sections[*critical];
+  overview["critical_depth"] = c["depth"];
+  overview["critical_section"] = c["name"];
+  overview["critical_day"] = c["margin_min"].is_number() ? c["margin_min_day"] : c["thinnest_after_day"];
+  overview["margin_min"] = c["margin_min"];
+  return overview;
 }
 
 nlohmann::json ExcavationRun::facts() const {
@@ -190,7 +213,7 @@ nlohmann::json ExcavationRun::facts() const {
                       {"day", day()},
                       {"face_radius", radius_},
                       {"particles_taken_out", taken_.size()},
-                      {"face_particles", face_particles_}};
+                      {"face_particles", face_.size()}};
   if (e_.lining) {
     f["lining_day"] = day() + e_.lining->placed_after / project::seconds_per_day;
     f["lining_inner_radius"] = radius_ - e_.lining->thickness;

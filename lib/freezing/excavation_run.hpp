@@ -12,11 +12,13 @@
 #include <filesystem>
 #include <limits>
 #include <optional>
+#include <string>
 #include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include "freezing/excavation_face.hpp"
 #include "freezing/model.hpp"
 #include "project/project.hpp"
 
@@ -42,14 +44,14 @@ class ExcavationRun {
   void as_shown(std::vector<double>& liquid_fraction) const;
   // The longest next step: a fifth of the hydration's release time while
   // the lining sets (none otherwise).
-  double step_limit(double t) const;
+  double step_limit() const;
 
   double day() const;          // the section's excavation day
   double face_radius() const;  // m: the ground's face (the excavation radius)
   // The summary's `excavation`: the section's facts (depth, days, particles)
   // with the wall after the day (ShaftResults::excavation_entry), and the
-  // shaft's sections: this one, critical. Writes its series as
-  // <out>/excavation.csv.
+  // shaft's sections (excavation_overview): this one, critical. Writes its
+  // series as <out>/excavation.csv.
   nlohmann::json summary(const nlohmann::json& wall_after, const std::filesystem::path& out) const;
   // The heat balance's entries: excavated, lining_placed, hydration.
   void add_heat(nlohmann::json& from_boundaries) const;
@@ -57,9 +59,10 @@ class ExcavationRun {
  private:
   void dig(double t);
   void line(double t);
-  // Joins the particles of `side` near radius a to the face, the rest of the
-  // face's pairs cut; the face's film then over that circle.
-  void join_face(double a, const std::vector<char>& side);
+  // Joins the particles of `side` near radius a to the face, the face's
+  // earlier pairs cut; the face's film then over that circle. Returns the
+  // face's particles and weights.
+  std::vector<FaceWeight> join_face(double a, const std::vector<char>& side);
   void stability_changed();
   nlohmann::json facts() const;
 
@@ -68,16 +71,21 @@ class ExcavationRun {
   Model& m_;
   double radius_ = 0.0;  // the excavation radius
   double share_ = 1.0;   // the part of the circle in the section
-  int face_ = -1;        // the face's boundary
+  int face_boundary_ = -1;
   std::uint32_t node_ = 0;
   bool dug_ = false, lined_ = false;
-  double lined_at_ = 0.0, released_ = 0.0;
-  std::vector<std::uint32_t> taken_, lining_;
-  std::vector<char> not_ground_;                                       // per particle: taken out, or the lining since
+  double now_ = 0.0, lined_at_ = 0.0, released_ = 0.0;
+  std::vector<std::uint32_t> taken_, lining_;  // taken out (the lining's among them); the lining
+  std::vector<FaceWeight> face_;               // the particles joined to the face now
   std::vector<std::pair<std::uint32_t, std::uint32_t>> nearest_face_;  // (taken out, face particle)
-  std::size_t face_particles_ = 0;
   // J per metre: the ground taken out, the lining as placed, its hydration.
   double excavated_heat_ = 0.0, lining_heat_ = 0.0, hydration_heat_ = 0.0;
 };
+
+// A shaft's sections (each one's `excavation` entry, its name beside it):
+// `sections` (the entries, with `name`), and the critical section, the
+// smallest margin (or, without a requirement, the thinnest wall after its
+// day): `critical_depth`, `critical_section`, `critical_day`, `margin_min`.
+nlohmann::json excavation_overview(const std::vector<nlohmann::json>& entries, const std::vector<std::string>& names);
 
 }  // namespace frostwall::freezing

@@ -169,7 +169,7 @@ thermal::TimeLoopObservers HeatRun::observers() {
   if (thermometers_ || excavation_)
     o.step_limit = [this] {
       double limit = thermometers_ ? thermometers_->step_limit() : std::numeric_limits<double>::infinity();
-      if (excavation_) limit = std::min(limit, excavation_->step_limit(t_before_));
+      if (excavation_) limit = std::min(limit, excavation_->step_limit());
       return limit;
     };
   o.snapshot = [this](const thermal::ThermalModel& m, double t, std::size_t) { at_output(m, t); };

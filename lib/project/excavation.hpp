@@ -6,7 +6,6 @@
 #pragma once
 
 #include <optional>
-#include <utility>
 #include <vector>
 
 #include "project/schedule.hpp"
@@ -15,14 +14,15 @@ namespace frostwall::project {
 
 // The heat the lining's cement gives off as it sets, J/kg released by a
 // time after placing: Q (1 - exp(-t / tau)), or a table [day, J/kg] read
-// linearly and held after its last point (0 before its first).
+// linearly from 0 at placing and held after its last point.
 struct HydrationHeat {
-  double total = 0.0;                               // J/kg (exponential form)
-  double release_time = 0.0;                        // s, tau (exponential form)
-  std::vector<std::pair<double, double>> released;  // (s since placing, J/kg), ascending (table form)
-  double at(double seconds_since_placing) const;    // J/kg released so far
-  double final() const;                             // J/kg once it has all been released
-  double end_time() const;                          // s by which (all but 1e-6 of) it is released
+  double total = 0.0;         // J/kg (exponential form)
+  double release_time = 0.0;  // s, tau (exponential form)
+  // Table form: (s since placing, J/kg), from (0, 0); empty: the exponential form.
+  TemperatureSchedule released;
+  double at(double seconds_since_placing) const;  // J/kg released so far
+  double final() const;                           // J/kg once it has all been released
+  double end_time() const;                        // s by which (all but 1e-6 of) it is released
 };
 
 struct Lining {

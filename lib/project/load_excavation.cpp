@@ -16,6 +16,8 @@ HydrationHeat read_hydration(const Node& n) {
   if (n.json().is_array()) {
     const auto size = n.array().value_or(0);
     if (size == 0) n.problem("must hold at least one [day, J/kg] point");
+    auto& points = q.released.points;
+    points.emplace_back(0.0, 0.0);  // nothing released at placing
     for (std::size_t k = 0; k < size; ++k) {
       const Node point = n[k];
       if (point.array().value_or(0) != 2) {
@@ -24,11 +26,9 @@ HydrationHeat read_hydration(const Node& n) {
       }
       const auto day = point[0].positive(), heat = point[1].non_negative();
       if (!day || !heat) continue;
-      if (!q.released.empty() && *day * seconds_per_day <= q.released.back().first)
-        point[0].problem("days must ascend");
-      else if (!q.released.empty() && *heat < q.released.back().second)
-        point[1].problem("the heat released so far must not fall");
-      else q.released.emplace_back(*day * seconds_per_day, *heat);
+      if (*day * seconds_per_day <= points.back().first) point[0].problem("days must ascend");
+      else if (*heat < points.back().second) point[1].problem("the heat released so far must not fall");
+      else points.emplace_back(*day * seconds_per_day, *heat);
     }
     return q;
   }

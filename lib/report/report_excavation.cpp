@@ -13,25 +13,13 @@ using nlohmann::json;
 
 namespace {
 
-// The shaft's sections with their series: a layered shaft's from its
-// layers, an as-built shaft's from its overview, one section's itself.
-json sections_of(const json& summary) {
-  const json& e = summary[keys::excavation];
-  if (summary.contains(keys::layers)) {
-    json sections = json::array();
-    for (const auto& layer : summary[keys::layers]) {
-      json s = layer.value(keys::excavation, json::object());
-      s["name"] = layer["layer"]["name"];
-      sections.push_back(s);
-    }
-    return sections;
-  }
-  if (e["sections"].size() == 1 && !e["sections"][0].contains("series")) {
-    json s = e;
-    s["name"] = "the section";
-    return json::array({s});
-  }
-  return e["sections"];
+// The shaft's sections with their series: a layered or as-built shaft's
+// overview holds them; one section's series is its own entry's.
+json sections_of(const json& e) {
+  if (!e.contains("series")) return e["sections"];
+  json s = e;
+  s["name"] = e["sections"][0]["name"];
+  return json::array({s});
 }
 
 std::string metres_or_dash(const json& v) { return v.is_number() ? number(v, 2) + " m" : std::string("–"); }
@@ -44,24 +32,18 @@ void add_excavation(const RunRecord& run, json& view) {
   view["excavation_line"] = false;
   if (!run.summary.contains(keys::excavation)) return;
   const json& e = run.summary[keys::excavation];
-  const json sections = sections_of(run.summary);
+  const json sections = sections_of(e);
   view["has_excavation"] = true;
-  // The critical section: the overview's, or the one section.
-  const bool one = sections.size() == 1;
-  const json& critical = one ? sections[0] : e;
-  const json depth = one ? sections[0]["depth"] : e["critical_depth"];
-  const json day =
-      one ? (sections[0]["margin_min"].is_number() ? sections[0]["margin_min_day"] : sections[0]["thinnest_after_day"])
-          : e["critical_day"];
+  const json &depth = e["critical_depth"], &day = e["critical_day"], &least = e["margin_min"];
   if (depth.is_number() && day.is_number()) {
-    const std::string margin = critical["margin_min"].is_number()
-                                   ? fmt::format("smallest margin {} m", number(critical["margin_min"], 2))
-                                   : std::string("no requirement to measure a margin against");
-    view["excavation_line"] = fmt::format(
-        "Sinking: the wall is weakest at {} m depth{} on day {}: {}.", number(depth, 1),
-        one ? std::string() : " (" + e.value("critical_section", std::string()) + ")", number(day, 1), margin);
+    const std::string margin = least.is_number() ? fmt::format("smallest margin {} m", number(least, 2))
+                                                 : std::string("no requirement to measure a margin against");
+    view["excavation_line"] =
+        fmt::format("Sinking: the wall is weakest at {} m depth{} on day {}: {}.", number(depth, 1),
+                    sections.size() == 1 ? std::string() : " (" + e.value("critical_section", std::string()) + ")",
+                    number(day, 1), margin);
     view["excavation_card"] = true;
-    view["excavation_value"] = critical["margin_min"].is_number() ? number(critical["margin_min"], 2) + " m" : "–";
+    view["excavation_value"] = least.is_number() ? number(least, 2) + " m" : "–";
     view["excavation_note"] =
         fmt::format("smallest margin after excavation: {} m depth, day {}", number(depth, 1), number(day, 1));
   }

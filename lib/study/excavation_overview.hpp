@@ -15,10 +15,8 @@ namespace frostwall::study {
 // gives the days section by section. No change without "excavation".
 void sink_at(nlohmann::json& doc, double depth, std::optional<double> day);
 
-// The shaft's `excavation`: `sections` (each section's entry with its
-// name), and the critical section: the smallest margin
-// (or, without a requirement, the thinnest wall after its day), its depth,
-// day and margin. summaries[k]: section k's summary, names[k] its name.
+// The shaft's `excavation` from its sections' summaries
+// (freezing::excavation_overview); summaries[k]: section k's, names[k] its name.
 nlohmann::json excavation_overview(const std::vector<nlohmann::json>& summaries, const std::vector<std::string>& names);
 
 }  // namespace frostwall::study

@@ -198,10 +198,8 @@ std::vector<double> ThermalModel::boundary_heat_rate() const {
 }
 
 double ThermalModel::stored_heat() const {
-  if (!removed_.empty())
-    return particles::sum_over_particles(pairs_.n_free,
-                                         [&](std::size_t i) { return removed_[i] ? 0.0 : volume_[i] * H_[i]; });
-  return particles::sum_over_particles(pairs_.n_free, [&](std::size_t i) { return volume_[i] * H_[i]; });
+  return particles::sum_over_particles(pairs_.n_free,
+                                       [&](std::size_t i) { return removed(i) ? 0.0 : volume_[i] * H_[i]; });
 }
 
 void ThermalModel::remove_particles(const std::vector<std::uint32_t>& taken) {
@@ -225,7 +223,6 @@ void ThermalModel::restore_particles(const std::vector<std::uint32_t>& back, std
     for (std::size_t s = incoming_start_[i]; s < incoming_start_[i + 1]; ++s)
       if (!removed_[incoming_row_[s]]) pairs_.weight[incoming_pair_[s]] = built_weight_[incoming_pair_[s]];
     set_state(i, laws_[m].enthalpy(temperature));
-    k_changed_[i] = 1;
   }
   all_changed_ = true;
 }
